@@ -1,0 +1,70 @@
+# PREE: progressive radiance estimation engine: RTL, C reference model, co-simulation.
+# The front door. `make run` and `make test` do everything on a fresh Debian bookworm machine.
+# Fragments in mk/ add the RTL, simulation and synthesis targets; each owns one area.
+
+.DELETE_ON_ERROR:
+.SUFFIXES:
+SHELL := /bin/bash
+
+BUILD   ?= build
+OUT     ?= out
+THREADS ?= 2
+
+# Compiler flags. -ffp-contract=off and no fast-math are part of the bit-exactness contract:
+# the fp32 model must round every operation exactly once, as the RTL does.
+CC      := gcc
+CXX     := g++
+FPFLAGS := -ffp-contract=off -fno-fast-math -fexcess-precision=standard
+WARN    := -Wall -Wextra -Wshadow -Wno-unused-parameter
+ifeq ($(WERROR),1)
+WARN    += -Werror
+endif
+OPT     ?= -O2
+SANFLAGS :=
+ifdef SANITIZER
+SANFLAGS := -fsanitize=$(SANITIZER) -fno-omit-frame-pointer
+OPT      := -O1
+endif
+CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
+CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
+LDLIBS   := -lembree3 -lOpenImageIO -lOpenImageIO_Util -lm
+LDFLAGS  := -fopenmp $(SANFLAGS)
+
+.PHONY: all deps build run test check bench clean help lint synth sim
+all: build
+
+help:
+	@echo "make run     install what is missing, build, render the default scene"
+	@echo "make test    the full regression (ends with 'N passed, N failed')"
+	@echo "make check   the quick regression for iteration"
+	@echo "make bench   speed, memory and run-time-against-error figures"
+
+# Install every Debian package the project needs (quiet when all are present).
+DEPS_STAMP := $(BUILD)/.deps-ok
+deps: $(DEPS_STAMP)
+$(DEPS_STAMP): scripts/install-deps.sh
+	@scripts/install-deps.sh
+	@mkdir -p $(@D) && touch $@
+
+# Each fragment owns one area and appends to TEST_PREREQS, LINT_TARGETS, SYNTH_TARGETS,
+# SIM_TARGETS; its regression checks live in tests/checks/*.sh.
+include mk/model.mk
+include $(sort $(filter-out mk/model.mk,$(wildcard mk/*.mk)))
+
+build: $(DEPS_STAMP) $(BUILD)/pree
+
+run: build
+	@scripts/make-run.sh $(BUILD)/pree $(OUT)
+
+test: $(DEPS_STAMP) $(TEST_PREREQS)
+	@scripts/run-tests.sh full
+
+check: $(DEPS_STAMP) $(TEST_PREREQS)
+	@scripts/run-tests.sh quick
+
+lint: $(DEPS_STAMP) $(LINT_TARGETS)
+synth: $(DEPS_STAMP) $(SYNTH_TARGETS)
+sim: $(DEPS_STAMP) $(SIM_TARGETS)
+
+clean:
+	rm -rf $(BUILD) $(OUT)

@@ -1,0 +1,12 @@
+/* cli.h: the subcommands of the `pree` program, one function each, dispatched by main.c.
+ * Each takes the arguments after its own name (argv[0] is the subcommand name) and returns
+ * the process exit status: 0 on success, 1 on a runtime failure, 2 on a usage error.
+ * Errors are printed as one line on stderr: "pree <cmd>: <what>: <why>". */
+#ifndef PREE_CLI_H
+#define PREE_CLI_H
+
+int pree_cmd_render(int argc, char **argv);
+int pree_cmd_compare(int argc, char **argv);
+int pree_cmd_cosim(int argc, char **argv);
+
+#endif
