@@ -1,0 +1,44 @@
+// pree_fp32_cmp: IEEE-754 binary32 comparator, combinational (latency 0).
+//
+// lt_o = a < b, le_o = a <= b, eq_o = a == b, with IEEE ordering: -0 == +0, subnormals ordered
+// by value, infinities at the ends. When either operand is a NaN (quiet or signalling) the pair
+// is unordered: unordered_o = 1 and lt_o, le_o, eq_o are all 0. No exceptions are signalled.
+// Method: binary32 magnitudes order like unsigned integers of bits [30:0], so the comparison is
+// one 31-bit magnitude compare plus sign logic.
+`default_nettype none
+
+module pree_fp32_cmp (
+  input  wire [31:0] a_i,
+  input  wire [31:0] b_i,
+  output wire        lt_o,
+  output wire        le_o,
+  output wire        eq_o,
+  output wire        unordered_o
+);
+
+  // LATENCY is part of every unit's interface; a combinational unit has nothing that reads it.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam LATENCY = 0;
+  /* verilator lint_on UNUSEDPARAM */
+
+  wire nan_a     = (a_i[30:23] == 8'hFF) && (a_i[22:0] != 23'd0);
+  wire nan_b     = (b_i[30:23] == 8'hFF) && (b_i[22:0] != 23'd0);
+  wire both_zero = (a_i[30:0] == 31'd0) && (b_i[30:0] == 31'd0);
+  wire mag_lt    = (a_i[30:0] < b_i[30:0]);
+  wire mag_eq    = (a_i[30:0] == b_i[30:0]);
+  wire sign_a    = a_i[31];
+  wire sign_b    = b_i[31];
+
+  // Ordered comparison of two non-NaN values.
+  wire same_sign = (sign_a == sign_b);
+  wire eq_num    = both_zero | (same_sign & mag_eq);
+  wire lt_num    = same_sign ? (sign_a ? (~mag_lt & ~mag_eq) : mag_lt)   // both negative: larger
+                             : (sign_a & ~both_zero);                    // magnitude is smaller
+  wire ordered   = ~(nan_a | nan_b);
+
+  assign unordered_o = ~ordered;
+  assign eq_o        = ordered & eq_num;
+  assign lt_o        = ordered & lt_num;
+  assign le_o        = ordered & (lt_num | eq_num);
+
+endmodule
