@@ -1,0 +1,212 @@
+/* image.c: RGB image buffers, smallppm's tone map, the ASCII PPM writer, and atomic file writes
+ * that choose the format by extension (PNG and EXR go through image_io.cpp). */
+#include "image.h"
+#include "image_io.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <math.h>
+#include <stdatomic.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+#include <unistd.h>
+
+/* Largest image accepted anywhere: 2^28 pixels (16384 x 16384). */
+#define PREE_IMAGE_MAX_PIXELS ((int64_t)1 << 28)
+
+static int set_err(char *err, size_t errlen, const char *fmt, const char *a, const char *b)
+{
+    if (err && errlen) snprintf(err, errlen, fmt, a, b);
+    return -1;
+}
+
+static int check_size(int w, int h, const char *what, char *err, size_t errlen)
+{
+    if (w < 1 || h < 1 || (int64_t)w * h > PREE_IMAGE_MAX_PIXELS) {
+        if (err && errlen)
+            snprintf(err, errlen, "%s: bad image size %dx%d (1..16384 each way, at most 2^28 pixels)",
+                     what, w, h);
+        return -1;
+    }
+    return 0;
+}
+
+int pree_image_alloc(pree_image_t *img, int w, int h, char *err, size_t errlen)
+{
+    img->width = img->height = 0;
+    img->rgb = NULL;
+    img->samples = PREE_SAMPLES_FLOAT;
+    if (check_size(w, h, "image", err, errlen)) return -1;
+    img->rgb = calloc((size_t)w * h * 3, sizeof(float));
+    if (!img->rgb) return set_err(err, errlen, "image: %s%s", "out of memory", "");
+    img->width = w;
+    img->height = h;
+    return 0;
+}
+
+void pree_image_free(pree_image_t *img)
+{
+    free(img->rgb);
+    img->rgb = NULL;
+    img->width = img->height = 0;
+}
+
+int pree_accum_alloc(pree_accum_t *acc, int w, int h, char *err, size_t errlen)
+{
+    acc->width = acc->height = 0;
+    acc->rgb = NULL;
+    if (check_size(w, h, "image", err, errlen)) return -1;
+    acc->rgb = calloc((size_t)w * h * 3, sizeof(double));
+    if (!acc->rgb) return set_err(err, errlen, "image: %s%s", "out of memory", "");
+    acc->width = w;
+    acc->height = h;
+    return 0;
+}
+
+void pree_accum_free(pree_accum_t *acc)
+{
+    free(acc->rgb);
+    acc->rgb = NULL;
+    acc->width = acc->height = 0;
+}
+
+int pree_tonemap8(double L)
+{
+    /* smallppm: int(pow(1-exp(-x),1/2.2)*255+.5); only the undefined cases are guarded. */
+    if (!(L >= 0.0)) return 0;
+    return (int)(pow(1.0 - exp(-L), 1.0 / 2.2) * 255.0 + 0.5);
+}
+
+/* The extension of path's last component (without the dot), or "" when it has none. */
+static const char *extension(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(slash ? slash + 1 : path, '.');
+    return dot ? dot + 1 : "";
+}
+
+/* A fresh temporary file beside `path`: "<dir>/.<name>.tmp-<pid>-<n>", created exclusively
+ * with mode 0666 less the umask. Returns the open descriptor and fills tmp, or -1. */
+static int make_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
+{
+    static atomic_uint counter;
+    const char *slash = strrchr(path, '/');
+    int dirlen = slash ? (int)(slash - path + 1) : 0;
+    const char *name = slash ? slash + 1 : path;
+    if (!*name) return set_err(err, errlen, "%s: %s", path, "not a file name");
+    for (int tries = 0; tries < 100; tries++) {
+        unsigned n = atomic_fetch_add(&counter, 1);
+        int len = snprintf(tmp, tmplen, "%.*s.%s.tmp-%ld-%u", dirlen, path, name, (long)getpid(), n);
+        if (len < 0 || (size_t)len >= tmplen) return set_err(err, errlen, "%s: %s", path, "path too long");
+        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        if (fd >= 0) return fd;
+        if (errno != EEXIST) {
+            if (err && errlen) snprintf(err, errlen, "%s: cannot create a temporary file beside it: %s",
+                                        path, strerror(errno));
+            return -1;
+        }
+    }
+    return set_err(err, errlen, "%s: %s", path, "cannot find a free temporary file name");
+}
+
+/* Write smallppm's ASCII P3 from 8-bit values to the open descriptor fd (which it closes). */
+static int write_ppm_fd(int fd, const char *path, int w, int h, const unsigned char *v,
+                        char *err, size_t errlen)
+{
+    /* At most "255 255 255 " = 12 bytes per pixel, plus the header. */
+    size_t n = (size_t)w * h, cap = n * 12 + 64, len = 0;
+    char *buf = malloc(cap);
+    if (!buf) { close(fd); return set_err(err, errlen, "%s: %s", path, "out of memory"); }
+    len = (size_t)snprintf(buf, cap, "P3\n%d %d\n255\n", w, h);
+    for (size_t i = 0; i < n * 3; i++) {
+        unsigned x = v[i];
+        if (x >= 100) buf[len++] = (char)('0' + x / 100);
+        if (x >= 10) buf[len++] = (char)('0' + x / 10 % 10);
+        buf[len++] = (char)('0' + x % 10);
+        buf[len++] = ' ';
+    }
+    for (size_t off = 0; off < len;) {
+        ssize_t k = write(fd, buf + off, len - off);
+        if (k < 0 && errno == EINTR) continue;
+        if (k <= 0) {
+            int e = k < 0 ? errno : EIO;
+            free(buf);
+            close(fd);
+            return set_err(err, errlen, "%s: write failed: %s", path, strerror(e));
+        }
+        off += (size_t)k;
+    }
+    free(buf);
+    if (close(fd)) return set_err(err, errlen, "%s: write failed: %s", path, strerror(errno));
+    return 0;
+}
+
+/* Write 8-bit (is_float = 0) or float (1) RGB pixels to path in format ext, atomically. */
+static int write_atomic(const char *path, const char *ext, int w, int h, int is_float,
+                        const void *pixels, char *err, size_t errlen)
+{
+    char tmp[4096];
+    int fd = make_temp(path, tmp, sizeof tmp, err, errlen);
+    if (fd < 0) return -1;
+    int rc;
+    if (!strcasecmp(ext, "ppm")) {
+        rc = write_ppm_fd(fd, path, w, h, pixels, err, errlen);
+    } else {
+        close(fd);   /* OpenImageIO opens the file by name and truncates it */
+        rc = pree_oiio_write(tmp, ext, w, h, is_float, pixels, err, errlen);
+        if (rc && err && errlen) {   /* name the destination, not the temporary */
+            size_t tl = strlen(tmp);
+            if (!strncmp(err, tmp, tl)) {
+                char why[1024];
+                snprintf(why, sizeof why, "%s", err + tl);
+                snprintf(err, errlen, "%s%s", path, why);
+            }
+        }
+    }
+    if (rc == 0 && rename(tmp, path) != 0) {
+        rc = set_err(err, errlen, "%s: cannot rename the finished temporary file over it: %s",
+                     path, strerror(errno));
+    }
+    if (rc) unlink(tmp);
+    return rc;
+}
+
+int pree_image_write(const char *path, int w, int h, const double *rgb, char *err, size_t errlen)
+{
+    const char *ext = extension(path);
+    int is_exr = !strcasecmp(ext, "exr");
+    if (!is_exr && strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
+        return set_err(err, errlen, "%s: unknown image extension '%s' (use .ppm, .png or .exr)", path, ext);
+    if (check_size(w, h, path, err, errlen)) return -1;
+    size_t n = (size_t)w * h * 3;
+    void *pix = malloc(n * (is_exr ? sizeof(float) : 1));
+    if (!pix) return set_err(err, errlen, "%s: %s", path, "out of memory");
+    if (is_exr) {
+        float *f = pix;
+        for (size_t i = 0; i < n; i++) f[i] = (float)rgb[i];
+    } else {
+        unsigned char *u = pix;
+        for (size_t i = 0; i < n; i++) u[i] = (unsigned char)pree_tonemap8(rgb[i]);
+    }
+    int rc = write_atomic(path, ext, w, h, is_exr, pix, err, errlen);
+    free(pix);
+    return rc;
+}
+
+int pree_image_write_u8(const char *path, int w, int h, const unsigned char *rgb,
+                        char *err, size_t errlen)
+{
+    const char *ext = extension(path);
+    if (strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
+        return set_err(err, errlen, "%s: unknown 8-bit image extension '%s' (use .png or .ppm)", path, ext);
+    if (check_size(w, h, path, err, errlen)) return -1;
+    return write_atomic(path, ext, w, h, 0, rgb, err, errlen);
+}
+
+int pree_image_read(const char *path, pree_image_t *img, char *err, size_t errlen)
+{
+    return pree_oiio_read(path, img, err, errlen);
+}

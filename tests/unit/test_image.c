@@ -1,0 +1,249 @@
+/* test_image.c: image buffers, smallppm's tone map, the exact PPM bytes, PNG/EXR round trips,
+ * and atomic writes that leave nothing behind when they fail. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "image.h"
+
+/* A fresh scratch directory per test, removed with its contents afterwards. */
+static int make_dir(void **state)
+{
+    char *dir = strdup("/tmp/pree-test-image-XXXXXX");
+    assert_non_null(mkdtemp(dir));
+    *state = dir;
+    return 0;
+}
+
+static int remove_dir(void **state)
+{
+    char *dir = *state, cmd[256];
+    snprintf(cmd, sizeof cmd, "rm -rf '%s'", dir);
+    int rc = system(cmd);
+    free(dir);
+    return rc;
+}
+
+/* Number of directory entries other than . and .. */
+static int count_entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int n = 0;
+    for (struct dirent *e; (e = readdir(d));)
+        if (strcmp(e->d_name, ".") && strcmp(e->d_name, "..")) n++;
+    closedir(d);
+    return n;
+}
+
+static char *slurp(const char *path, size_t *len)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    char *buf = malloc(1 << 16);
+    *len = fread(buf, 1, 1 << 16, f);
+    fclose(f);
+    return buf;
+}
+
+/* Values worked out by hand from int(pow(1-exp(-L), 1/2.2)*255 + .5). */
+static void test_tonemap_known_values(void **state)
+{
+    (void)state;
+    assert_int_equal(pree_tonemap8(0.0), 0);
+    assert_int_equal(pree_tonemap8(1e-6), 0);      /* 0.00189^... * 255 = 0.48 -> 0 */
+    assert_int_equal(pree_tonemap8(1e-3), 11);
+    assert_int_equal(pree_tonemap8(0.5), 167);
+    assert_int_equal(pree_tonemap8(1.0), 207);     /* 0.63212^(1/2.2) = 0.81182 -> 207.5 -> 207 */
+    assert_int_equal(pree_tonemap8(2.0), 239);
+    assert_int_equal(pree_tonemap8(100.0), 255);
+    assert_int_equal(pree_tonemap8(INFINITY), 255);
+    assert_int_equal(pree_tonemap8(-1.0), 0);      /* outside smallppm's domain: guarded */
+    assert_int_equal(pree_tonemap8(NAN), 0);
+    /* Monotone over a sweep, and always 0..255. */
+    int prev = 0;
+    for (double L = 0.0; L < 20.0; L += 1e-3) {
+        int v = pree_tonemap8(L);
+        assert_true(v >= prev && v <= 255);
+        prev = v;
+    }
+}
+
+/* smallppm's ASCII layout, byte for byte, for a 2x1 image. */
+static void test_ppm_exact_bytes(void **state)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/two.ppm", (char *)*state);
+    const double rgb[6] = {0.0, INFINITY, 1.0, 0.5, 2.0, 1e-3};
+    char err[512] = "";
+    assert_int_equal(pree_image_write(path, 2, 1, rgb, err, sizeof err), 0);
+    size_t len;
+    char *got = slurp(path, &len);
+    const char want[] = "P3\n2 1\n255\n0 255 207 167 239 11 ";
+    assert_int_equal(len, sizeof want - 1);
+    assert_memory_equal(got, want, len);
+    free(got);
+    assert_int_equal(count_entries(*state), 1);   /* the temporary file is gone */
+}
+
+static void test_ppm_u8_bytes(void **state)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/u8.ppm", (char *)*state);
+    const unsigned char rgb[6] = {0, 9, 10, 99, 100, 255};
+    char err[512] = "";
+    assert_int_equal(pree_image_write_u8(path, 1, 2, rgb, err, sizeof err), 0);
+    size_t len;
+    char *got = slurp(path, &len);
+    const char want[] = "P3\n1 2\n255\n0 9 10 99 100 255 ";
+    assert_int_equal(len, sizeof want - 1);
+    assert_memory_equal(got, want, len);
+    free(got);
+}
+
+/* A 13x7 gradient written as .ppm, .png and .exr reads back as tone-mapped bytes / floats. */
+static void test_round_trips(void **state)
+{
+    enum { W = 13, H = 7 };
+    double rgb[W * H * 3];
+    for (int i = 0; i < W * H * 3; i++) rgb[i] = 0.037 * i + (i % 3) * 0.5;   /* >= 0 */
+    const char *exts[] = {"ppm", "png", "PNG", "exr"};
+    for (int e = 0; e < 4; e++) {
+        char path[256], err[512] = "";
+        snprintf(path, sizeof path, "%s/rt.%s", (char *)*state, exts[e]);
+        assert_int_equal(pree_image_write(path, W, H, rgb, err, sizeof err), 0);
+        pree_image_t img = {0};
+        assert_int_equal(pree_image_read(path, &img, err, sizeof err), 0);
+        assert_int_equal(img.width, W);
+        assert_int_equal(img.height, H);
+        int is_exr = e == 3;
+        assert_int_equal(img.samples, is_exr ? PREE_SAMPLES_FLOAT : PREE_SAMPLES_U8);
+        for (int i = 0; i < W * H * 3; i++) {
+            float want = is_exr ? (float)rgb[i] : (float)pree_tonemap8(rgb[i]);
+            assert_true(img.rgb[i] == want);
+        }
+        pree_image_free(&img);
+        assert_null(img.rgb);
+    }
+    assert_int_equal(count_entries(*state), 4);   /* rt.ppm rt.png rt.PNG rt.exr, no temporaries */
+}
+
+/* Failing writes return -1, name the file, and leave no file and no temporary behind. */
+static void test_atomic_failures(void **state)
+{
+    const char *dir = *state;
+    const double rgb[3 * 12] = {0};
+    char path[256], err[512];
+
+    /* Directory missing: nothing can be created. */
+    snprintf(path, sizeof path, "%s/missing/x.ppm", dir);
+    err[0] = 0;
+    assert_int_equal(pree_image_write(path, 2, 2, rgb, err, sizeof err), -1);
+    assert_non_null(strstr(err, path));
+    assert_null(strchr(err, '\n'));
+    assert_int_equal(access(path, F_OK), -1);
+
+    /* The destination is a directory: every format writes its temporary, the rename fails,
+     * and the temporary is removed. */
+    const char *exts[] = {"ppm", "png", "exr"};
+    for (int e = 0; e < 3; e++) {
+        snprintf(path, sizeof path, "%s/blocked.%s", dir, exts[e]);
+        assert_int_equal(mkdir(path, 0755), 0);
+        err[0] = 0;
+        assert_int_equal(pree_image_write(path, 3, 4, rgb, err, sizeof err), -1);
+        assert_non_null(strstr(err, path));
+    }
+    assert_int_equal(count_entries(dir), 3);   /* only the three blocking directories */
+
+    /* Unknown extension, no extension, bad sizes: refused before anything is created. */
+    snprintf(path, sizeof path, "%s/x.tiff", dir);
+    assert_int_equal(pree_image_write(path, 2, 2, rgb, err, sizeof err), -1);
+    assert_non_null(strstr(err, "x.tiff"));
+    snprintf(path, sizeof path, "%s/noext", dir);
+    assert_int_equal(pree_image_write(path, 2, 2, rgb, err, sizeof err), -1);
+    snprintf(path, sizeof path, "%s/zero.png", dir);
+    assert_int_equal(pree_image_write(path, 0, 2, rgb, err, sizeof err), -1);
+    assert_int_equal(pree_image_write(path, 2, -1, rgb, err, sizeof err), -1);
+    assert_int_equal(pree_image_write(path, 100000, 100000, rgb, err, sizeof err), -1);
+    assert_int_equal(count_entries(dir), 3);
+}
+
+/* A failed write leaves an existing destination exactly as it was. */
+static void test_failed_write_keeps_old_file(void **state)
+{
+    char path[256], err[512];
+    snprintf(path, sizeof path, "%s/keep.ppm", (char *)*state);
+    const double one[3] = {1.0, 1.0, 1.0};
+    assert_int_equal(pree_image_write(path, 1, 1, one, err, sizeof err), 0);
+    assert_int_equal(pree_image_write(path, 0, 1, one, err, sizeof err), -1);
+    size_t len;
+    char *got = slurp(path, &len);
+    const char want[] = "P3\n1 1\n255\n207 207 207 ";
+    assert_int_equal(len, sizeof want - 1);
+    assert_memory_equal(got, want, len);
+    free(got);
+}
+
+static void test_read_errors(void **state)
+{
+    char path[256], err[512] = "";
+    pree_image_t img = {0};
+    snprintf(path, sizeof path, "%s/absent.png", (char *)*state);
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
+    assert_null(img.rgb);
+    assert_non_null(strstr(err, path));
+    assert_null(strchr(err, '\n'));
+
+    /* Not an image at all. */
+    snprintf(path, sizeof path, "%s/junk.png", (char *)*state);
+    FILE *f = fopen(path, "wb");
+    fputs("this is not a png\n", f);
+    fclose(f);
+    err[0] = 0;
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
+    assert_null(img.rgb);
+    assert_non_null(strstr(err, path));
+    assert_null(strchr(err, '\n'));
+}
+
+static void test_alloc(void **state)
+{
+    (void)state;
+    pree_image_t img;
+    char err[256];
+    assert_int_equal(pree_image_alloc(&img, 4, 3, err, sizeof err), 0);
+    for (int i = 0; i < 36; i++) assert_true(img.rgb[i] == 0.0f);
+    pree_image_free(&img);
+    assert_int_equal(pree_image_alloc(&img, 0, 3, err, sizeof err), -1);
+    assert_null(img.rgb);
+    pree_accum_t acc;
+    assert_int_equal(pree_accum_alloc(&acc, 2, 2, err, sizeof err), 0);
+    assert_true(acc.rgb[11] == 0.0);
+    pree_accum_free(&acc);
+    assert_int_equal(pree_accum_alloc(&acc, 70000, 70000, err, sizeof err), -1);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_tonemap_known_values),
+        cmocka_unit_test_setup_teardown(test_ppm_exact_bytes, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_ppm_u8_bytes, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_round_trips, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_atomic_failures, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_failed_write_keeps_old_file, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_read_errors, make_dir, remove_dir),
+        cmocka_unit_test(test_alloc),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
