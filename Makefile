@@ -14,7 +14,7 @@ THREADS ?= 2
 # the fp32 model must round every operation exactly once, as the RTL does.
 CC      := gcc
 CXX     := g++
-FPFLAGS := -ffp-contract=off -fno-fast-math -fexcess-precision=standard
+FPFLAGS := -ffp-contract=off -fno-fast-math
 WARN    := -Wall -Wextra -Wshadow -Wno-unused-parameter
 ifeq ($(WERROR),1)
 WARN    += -Werror
@@ -25,7 +25,7 @@ ifdef SANITIZER
 SANFLAGS := -fsanitize=$(SANITIZER) -fno-omit-frame-pointer
 OPT      := -O1
 endif
-CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
+CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
 CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
 LDLIBS   := -lembree3 -lOpenImageIO -lOpenImageIO_Util -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)

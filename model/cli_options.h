@@ -1,0 +1,22 @@
+/* cli_options.h: strict option parsing shared by the subcommands: every bad value is a
+ * one-line error "pree CMD: ..." and exit status 2. */
+#ifndef PREE_CLI_OPTIONS_H
+#define PREE_CLI_OPTIONS_H
+
+typedef struct {
+    int argc;
+    char **argv;
+    int i;              /* next argument */
+    const char *cmd;    /* subcommand name for messages */
+} cli_args_t;
+
+/* Print "pree CMD: message" and return 2. */
+int cli_error(cli_args_t *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+/* The value after option opt, or NULL (error printed) when missing. */
+const char *cli_value(cli_args_t *a, const char *opt);
+/* An integer value in [lo, hi]; 0, or 2 with the error printed. */
+int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long long *out);
+/* 0 when path ends in .png, .ppm or .exr; else 2 with the error printed. */
+int cli_image_ext(cli_args_t *a, const char *path);
+
+#endif

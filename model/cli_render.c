@@ -1,0 +1,131 @@
+/* cli_render.c: `pree render SCENE [options]`: parse and check the options, render, write
+ * the images and the statistics. Ctrl-C stops after the current photon block and writes
+ * the image of the photons done so far; the exit status is then 130. */
+#include <errno.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "cli.h"
+#include "cli_options.h"
+#include "image.h"
+#include "render.h"
+#include "stats_json.h"
+
+#define MAX_OUTPUTS 8
+
+static volatile sig_atomic_t interrupted;
+static void on_sigint(int sig) { (void)sig; interrupted = 1; }
+
+static void render_usage(FILE *f)
+{
+    fprintf(f,
+        "usage: pree render SCENE [options]\n"
+        "  --width W              image width in pixels (default 320)\n"
+        "  --height H             image height in pixels (default 240)\n"
+        "  --photons N            photons to emit, rounded down to whole 1000s (default 768000)\n"
+        "  --precision P          double (the reference) or fp32 (the PREE datapath's arithmetic)\n"
+        "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
+        "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
+        "  --no-skip              disable the skips (zero-weight hit points, empty cells, far candidates)\n"
+        "  --threads T            OpenMP threads (default: all cores); the image does not depend on T\n"
+        "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
+        "  --stats FILE.json      write the statistics\n"
+        "  --quiet                no progress on stderr\n");
+}
+
+int pree_cmd_render(int argc, char **argv)
+{
+    render_options_t opt = {320, 240, 768000, PRECISION_DOUBLE, GRID_CELLS, 0, 0, 1, &interrupted};
+    const char *scene_path = NULL, *stats_path = NULL;
+    const char *outs[MAX_OUTPUTS];
+    int nout = 0;
+    char err[1024];
+    cli_args_t a = {argc, argv, 1, "render"};
+    while (a.i < argc) {
+        const char *arg = argv[a.i++];
+        long long v;
+        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { render_usage(stdout); return 0; }
+        else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.width = (int)v; }
+        else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.height = (int)v; }
+        else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
+        else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; opt.threads = (int)v; }
+        else if (!strcmp(arg, "--precision")) {
+            const char *s = cli_value(&a, arg);
+            if (!s) return 2;
+            if (!strcmp(s, "double")) opt.precision = PRECISION_DOUBLE;
+            else if (!strcmp(s, "fp32")) opt.precision = PRECISION_FP32;
+            else return cli_error(&a, "--precision: '%s' is not double or fp32", s);
+        } else if (!strcmp(arg, "--grid")) {
+            const char *s = cli_value(&a, arg);
+            if (!s) return 2;
+            if (!strcmp(s, "cells")) opt.grid = GRID_CELLS;
+            else if (!strcmp(s, "smallppm")) opt.grid = GRID_SMALLPPM;
+            else if (!strcmp(s, "brute")) opt.grid = GRID_BRUTE;
+            else return cli_error(&a, "--grid: '%s' is not cells, smallppm or brute", s);
+        } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
+        else if (!strcmp(arg, "--quiet")) opt.progress = 0;
+        else if (!strcmp(arg, "--out")) {
+            const char *s = cli_value(&a, arg);
+            if (!s) return 2;
+            if (nout == MAX_OUTPUTS) return cli_error(&a, "--out: at most %d outputs", MAX_OUTPUTS);
+            if (cli_image_ext(&a, s)) return 2;
+            outs[nout++] = s;
+        } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
+        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree render --help')", arg);
+        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
+        else scene_path = arg;
+    }
+    if (!scene_path) return cli_error(&a, "no scene given (usage: pree render SCENE [options])");
+    if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
+        return cli_error(&a, "%dx%d is more than 64 Mpixels", opt.width, opt.height);
+    char default_out[600];
+    if (nout == 0) {
+        const char *base = strrchr(scene_path, '/');
+        base = base ? base + 1 : scene_path;
+        snprintf(default_out, sizeof default_out, "%s.png", base);
+        outs[nout++] = default_out;
+    }
+
+    scene_t scene;
+    if (scene_load(scene_path, &scene, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        return 1;
+    }
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    opt.progress = opt.progress && isatty(2) ? 1 : opt.progress;
+    render_result_t res;
+    int rc = render_run(&scene, &opt, &res, err, sizeof err);
+    if (rc < 0) {
+        fprintf(stderr, "pree render: %s: %s\n", scene_path, err);
+        render_result_free(&res);
+        scene_free(&scene);
+        return 1;
+    }
+    int status = rc == 1 ? 130 : 0;
+    if (rc == 1)
+        fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
+                (unsigned long long)res.stats.photons_emitted);
+    for (int k = 0; k < nout; k++) {
+        if (pree_image_write(outs[k], res.width, res.height, res.rgb, err, sizeof err)) {
+            fprintf(stderr, "pree render: %s\n", err);
+            status = 1;
+        }
+    }
+    if (stats_path && stats_json_write(stats_path, scene_path, &opt, &res.stats, rc == 1, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        status = 1;
+    }
+    if (opt.progress)
+        fprintf(stderr, "pree render: %llu hit points, %llu photons, %llu candidates, %llu accepted, %.3f s\n",
+                res.stats.hit_points, res.stats.photons_emitted, res.stats.upd.candidates,
+                res.stats.upd.accepted, res.stats.sec_total);
+    render_result_free(&res);
+    scene_free(&scene);
+    return status;
+}

@@ -1,0 +1,324 @@
+/* grid.c: the reference hash grid, the default exact-cell grid and the brute-force list,
+ * each stored per owning part as compressed bucket lists. */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "grid.h"
+
+#define CELL_BITS 21
+#define CELL_LIMIT ((int64_t)1 << CELL_BITS)
+#define EMPTY_KEY UINT64_MAX
+
+double grid_initial_radius(const hitpoints_t *h, int width, int height)
+{
+    vec3 lo = v3(1e20, 1e20, 1e20), hi = v3(-1e20, -1e20, -1e20);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px, lo.x), fmin(p->py, lo.y), fmin(p->pz, lo.z));
+        hi = v3(fmax(p->px, hi.x), fmax(p->py, hi.y), fmax(p->pz, hi.z));
+    }
+    vec3 size = v3_sub(hi, lo);
+    return ((size.x + size.y + size.z) / 3.0) / ((width + height) / 2.0) * 2.0;
+}
+
+double grid_safe_radius(double r0, double max_abs_coord)
+{
+    /* Binary32 rounding moves each coordinate of a hit point and a photon by at most
+     * |coord| * 2^-24, so their distance by at most 2*sqrt(3)*2^-24*|coord| < 2.1e-7*|coord|;
+     * the distance arithmetic adds a few ulps (relative 1e-6). Both margins are taken
+     * five-fold. */
+    return r0 * (1.0 + 5e-6) + 1e-6 * max_abs_coord;
+}
+
+/* x86-64 cvttsd2si: truncation toward zero; out of range or NaN gives INT_MIN. */
+static inline int32_t trunc_i32(double v)
+{
+    if (!(v > -2147483649.0 && v < 2147483648.0)) return INT32_MIN;
+    return (int32_t)v;
+}
+
+static inline uint32_t abs_u32(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
+
+/* The reference program's bucket of cell (ix, iy, iz): products wrap in 32 bits. */
+static inline size_t smallppm_bucket(uint32_t ix, uint32_t iy, uint32_t iz, size_t nb)
+{
+    uint32_t hsh = (ix * 73856093u) ^ (iy * 19349663u) ^ (iz * 83492791u);
+    return hsh % nb;
+}
+
+static inline uint64_t cell_key(int64_t ix, int64_t iy, int64_t iz)
+{
+    return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
+}
+
+static inline size_t key_slot(uint64_t key, size_t mask)
+{
+    return (size_t)((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+}
+
+static size_t find_slot(const uint64_t *keys, size_t mask, uint64_t key)
+{
+    size_t s = key_slot(key, mask);
+    while (keys[s] != key && keys[s] != EMPTY_KEY) s = (s + 1) & mask;
+    return s;
+}
+
+static int alloc_parts(grid_t *g, int num_parts, size_t buckets, char *err, size_t errlen)
+{
+    g->num_parts = num_parts;
+    g->num_buckets = buckets;
+    g->parts = calloc((size_t)num_parts, sizeof *g->parts);
+    if (!g->parts) goto oom;
+    for (int p = 0; p < num_parts; p++) {
+        g->parts[p].start = calloc(buckets + 1, sizeof(uint32_t));
+        if (!g->parts[p].start) goto oom;
+    }
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory for the hit-point grid");
+    return -1;
+}
+
+/* Turn per-bucket counts (in start[b+1]) into offsets and allocate the entries. */
+static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t errlen)
+{
+    for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
+    part->num_entries = part->start[buckets];
+    part->entries = malloc((part->num_entries + 1) * sizeof(uint32_t));
+    if (!part->entries) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    return 0;
+}
+
+/* Cell range of hit point i on one axis in the reference grid. */
+typedef struct { uint32_t lo[3], hi[3]; } cell_range_t;
+
+static cell_range_t smallppm_range(const grid_t *g, const hp_hot_t *p)
+{
+    cell_range_t r;
+    const double c[3] = {p->px, p->py, p->pz}, m[3] = {g->bmin.x, g->bmin.y, g->bmin.z};
+    for (int a = 0; a < 3; a++) {
+        r.lo[a] = abs_u32(trunc_i32(((c[a] - g->r0) - m[a]) * g->inv_cell));
+        r.hi[a] = abs_u32(trunc_i32(((c[a] + g->r0) - m[a]) * g->inv_cell));
+    }
+    return r;
+}
+
+static int build_smallppm(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+{
+    vec3 lo = v3(1e20, 1e20, 1e20);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px - g->r0, lo.x), fmin(p->py - g->r0, lo.y), fmin(p->pz - g->r0, lo.z));
+    }
+    g->bmin = lo;
+    g->inv_cell = 1.0 / (g->r0 * 2.0);
+    size_t nb = h->n ? h->n : 1;
+    if (alloc_parts(g, g->num_parts, nb, err, errlen)) return -1;
+    /* Count, then fill. The reference prepends while walking hit points newest first, cells
+     * z-outermost; filling each bucket from its end in that walk gives the same list order. */
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t k = h->n; k-- > 0;) {
+            grid_part_t *part = &g->parts[grid_owner(h, k, width, g->num_parts)];
+            cell_range_t r = smallppm_range(g, &h->hot[k]);
+            for (uint32_t iz = r.lo[2]; iz <= r.hi[2]; iz++)
+                for (uint32_t iy = r.lo[1]; iy <= r.hi[1]; iy++)
+                    for (uint32_t ix = r.lo[0]; ix <= r.hi[0]; ix++) {
+                        size_t b = smallppm_bucket(ix, iy, iz, nb);
+                        if (pass == 0) part->start[b + 1]++;
+                        else part->entries[--part->start[b + 1]] = (uint32_t)k;
+                    }
+        }
+        if (pass == 0) {
+            for (int p = 0; p < g->num_parts; p++) {
+                if (finish_counts(&g->parts[p], nb, err, errlen)) return -1;
+                /* Fill pointers start at each bucket's end: shift so start[b+1] = end of b. */
+            }
+        }
+    }
+    /* After filling from the ends, start[b+1] was decremented to bucket b's begin; restore. */
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+        for (size_t b = 0; b < nb; b++) part->start[b] = part->start[b + 1];
+        part->start[nb] = (uint32_t)part->num_entries;
+    }
+    return 0;
+}
+
+static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
+{
+    const double v[3] = {(x.x - g->bmin.x) * g->inv_cell, (x.y - g->bmin.y) * g->inv_cell,
+                         (x.z - g->bmin.z) * g->inv_cell};
+    for (int a = 0; a < 3; a++) {
+        if (!(v[a] >= 0.0) || v[a] >= (double)(g->cell_max[a] + 1)) return 0;
+        c[a] = (int64_t)v[a];
+    }
+    return 1;
+}
+
+static int build_cells(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+{
+    vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+    size_t used = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px, lo.x), fmin(p->py, lo.y), fmin(p->pz, lo.z));
+        hi = v3(fmax(p->px, hi.x), fmax(p->py, hi.y), fmax(p->pz, hi.z));
+        used++;
+    }
+    double rs = g->r_safe;
+    g->bmin = v3(lo.x - rs, lo.y - rs, lo.z - rs);
+    g->inv_cell = 1.0 / g->r0;
+    const double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+    for (int a = 0; a < 3; a++) {
+        double cells = used ? floor((ext[a] + 2 * rs) * g->inv_cell) : 0;
+        if (cells >= (double)(CELL_LIMIT - 1)) {
+            snprintf(err, errlen, "the scene spans more than %lld cells of the photon radius on one axis",
+                     (long long)(CELL_LIMIT - 1));
+            return -1;
+        }
+        g->cell_max[a] = (int64_t)cells + 1;   /* one spare cell absorbs rounding */
+    }
+    /* Table of distinct cells: size a power of two at least twice an upper bound. */
+    size_t bound = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        const vec3 w = h->weight[i];
+        if (w.x == 0 && w.y == 0 && w.z == 0) continue;
+        int64_t a[3], b[3];
+        const hp_hot_t *p = &h->hot[i];
+        cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+        cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+        bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
+    }
+    size_t size = 1024;
+    while (size < 2 * bound) size *= 2;
+    if (alloc_parts(g, g->num_parts, size, err, errlen)) return -1;
+    uint64_t *keys = malloc(size * sizeof *keys);
+    if (!keys) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    memset(keys, 0xFF, size * sizeof *keys);
+    for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = keys;
+    const size_t mask = size - 1;
+    g->zero_weight_skipped = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t i = 0; i < h->n; i++) {
+            const vec3 w = h->weight[i];
+            if (w.x == 0 && w.y == 0 && w.z == 0) {
+                if (pass == 0) g->zero_weight_skipped++;
+                continue;
+            }
+            grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
+            const hp_hot_t *p = &h->hot[i];
+            int64_t a[3], b[3];
+            cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+            cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+            for (int64_t iz = a[2]; iz <= b[2]; iz++)
+                for (int64_t iy = a[1]; iy <= b[1]; iy++)
+                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
+                        uint64_t key = cell_key(ix, iy, iz);
+                        size_t s = find_slot(keys, mask, key);
+                        if (pass == 0) { keys[s] = key; part->start[s + 1]++; }
+                        else part->entries[part->start[s]++] = (uint32_t)i;
+                    }
+        }
+        for (int p = 0; p < g->num_parts; p++) {
+            grid_part_t *part = &g->parts[p];
+            if (pass == 0) {
+                if (finish_counts(part, size, err, errlen)) return -1;
+            } else {
+                /* Filling advanced start[s] to the end of slot s: shift back. */
+                for (size_t s = size; s > 0; s--) part->start[s] = part->start[s - 1];
+                part->start[0] = 0;
+            }
+        }
+    }
+    return 0;
+}
+
+static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+{
+    if (alloc_parts(g, g->num_parts, 1, err, errlen)) return -1;
+    for (size_t i = 0; i < h->n; i++) g->parts[grid_owner(h, i, width, g->num_parts)].start[1]++;
+    for (int p = 0; p < g->num_parts; p++) {
+        if (finish_counts(&g->parts[p], 1, err, errlen)) return -1;
+        g->parts[p].num_entries = 0;
+    }
+    for (size_t i = 0; i < h->n; i++) {
+        grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
+        part->entries[part->num_entries++] = (uint32_t)i;
+    }
+    return 0;
+}
+
+int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
+               int num_parts, char *err, size_t errlen)
+{
+    memset(g, 0, sizeof *g);
+    g->kind = kind;
+    g->num_parts = num_parts;
+    g->r0 = r0;
+    double max_abs = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        max_abs = fmax(max_abs, fmax(fabs(p->px), fmax(fabs(p->py), fabs(p->pz))));
+    }
+    g->r_safe = grid_safe_radius(r0, max_abs + 4 * r0);
+    int rc;
+    switch (kind) {
+    case GRID_SMALLPPM: rc = build_smallppm(g, h, width, err, errlen); break;
+    case GRID_CELLS: rc = build_cells(g, h, width, err, errlen); break;
+    default: rc = build_brute(g, h, width, err, errlen); break;
+    }
+    if (rc) grid_free(g);
+    return rc;
+}
+
+void grid_free(grid_t *g)
+{
+    if (g->parts) {
+        if (g->kind == GRID_CELLS && g->num_parts > 0) free(g->parts[0].keys);
+        for (int p = 0; p < g->num_parts; p++) {
+            free(g->parts[p].start);
+            free(g->parts[p].entries);
+        }
+    }
+    free(g->parts);
+    memset(g, 0, sizeof *g);
+}
+
+const uint32_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count)
+{
+    const grid_part_t *part = &g->parts[p];
+    size_t b;
+    switch (g->kind) {
+    case GRID_SMALLPPM: {
+        uint32_t ix = abs_u32(trunc_i32((x.x - g->bmin.x) * g->inv_cell));
+        uint32_t iy = abs_u32(trunc_i32((x.y - g->bmin.y) * g->inv_cell));
+        uint32_t iz = abs_u32(trunc_i32((x.z - g->bmin.z) * g->inv_cell));
+        b = smallppm_bucket(ix, iy, iz, g->num_buckets);
+        break;
+    }
+    case GRID_CELLS: {
+        int64_t c[3];
+        if (!cell_coords(g, x, c)) { *count = 0; return NULL; }
+        uint64_t key = cell_key(c[0], c[1], c[2]);
+        b = find_slot(part->keys, g->num_buckets - 1, key);
+        if (part->keys[b] != key) { *count = 0; return NULL; }
+        break;
+    }
+    default:
+        b = 0;
+        break;
+    }
+    *count = part->start[b + 1] - part->start[b];
+    return *count ? part->entries + part->start[b] : NULL;
+}
+
+int grid_has_cell(const grid_t *g, vec3 x)
+{
+    if (g->kind != GRID_CELLS) return 1;
+    int64_t c[3];
+    if (!cell_coords(g, x, c)) return 0;
+    uint64_t key = cell_key(c[0], c[1], c[2]);
+    return g->parts[0].keys[find_slot(g->parts[0].keys, g->num_buckets - 1, key)] == key;
+}

@@ -1,0 +1,67 @@
+/* grid.h: spatial look-up of hit points for photons, split into parts that threads own.
+ *
+ * Three kinds:
+ *   GRID_SMALLPPM  the reference program's hash grid, exactly: cells of side 2*r0 hashed into
+ *                  as many buckets as there are hit points; buckets of different cells may
+ *                  coincide and a hit point may stand in one bucket twice. Nothing is skipped.
+ *   GRID_CELLS     the default: exact cells of side r0 (no shared buckets, a hit point at most
+ *                  once per cell), hit points of weight zero left out, and a hit point listed
+ *                  in every cell its safe radius touches (see grid_safe_radius).
+ *   GRID_BRUTE     every hit point is a candidate for every photon: the test oracle.
+ * Part p holds only the hit points that part owns (grid_owner), in the same relative order,
+ * so threads update disjoint hit points and each hit point sees photons in index order. */
+#ifndef PREE_GRID_H
+#define PREE_GRID_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "hitpoints.h"
+
+typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
+
+typedef struct {
+    uint32_t *start;     /* bucket b's entries are entries[start[b] .. start[b+1]) */
+    uint32_t *entries;   /* hit-point indices */
+    uint64_t *keys;      /* GRID_CELLS: packed cell key per bucket (open addressing) */
+    size_t num_entries;
+} grid_part_t;
+
+typedef struct {
+    grid_kind_t kind;
+    int num_parts;
+    grid_part_t *parts;
+    size_t num_buckets;      /* smallppm: number of hit points; cells: table size (power of 2) */
+    vec3 bmin;               /* cell origin */
+    double inv_cell;         /* 1 / cell side */
+    int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */
+    double r0;               /* initial radius */
+    double r_safe;           /* radius within which the fp32 datapath could ever accept */
+    size_t zero_weight_skipped;
+} grid_t;
+
+/* The reference program's initial radius: mean bbox side over mean image side, times 2. */
+double grid_initial_radius(const hitpoints_t *h, int width, int height);
+
+/* r0 enlarged by a margin that covers binary32 rounding of positions (magnitude up to
+ * max_abs_coord) and of the distance arithmetic, so that a candidate farther than it from
+ * a photon can never be accepted in either precision. */
+double grid_safe_radius(double r0, double max_abs_coord);
+
+/* Which part owns hit point i (bands of 8 image rows, dealt round-robin). */
+static inline int grid_owner(const hitpoints_t *h, size_t i, int width, int num_parts)
+{
+    return (int)((h->pixel[i] / width / 8) % num_parts);
+}
+
+int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
+               int num_parts, char *err, size_t errlen);
+void grid_free(grid_t *g);
+
+/* The candidate list of part p for a photon at x: *count entries, or NULL/0 when the
+ * photon's cell holds no hit point of that part. */
+const uint32_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count);
+
+/* Whether any hit point (of any part) could be near a photon at x. */
+int grid_has_cell(const grid_t *g, vec3 x);
+
+#endif

@@ -1,0 +1,23 @@
+/* halton.c: reverse-permuted radical inverse over the first 61 primes. */
+#include "halton.h"
+
+static const int halton_primes[HALTON_DIMENSIONS] = {
+    2,   3,   5,   7,   11,  13,  17,  19,  23,  29,  31,  37,  41,  43,  47,  53,
+    59,  61,  67,  71,  73,  79,  83,  89,  97,  101, 103, 107, 109, 113, 127, 131,
+    137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193, 197, 199, 211, 223,
+    227, 229, 233, 239, 241, 251, 257, 263, 269, 271, 277, 281, 283};
+
+double halton(int b, long long j)
+{
+    const int p = halton_primes[b];
+    const double f = 1.0 / (double)p;
+    double h = 0.0, fct = f;
+    while (j > 0) {
+        /* Reverse permutation: digit d maps to p - d, and 0 stays 0. */
+        int digit = (int)(j % p);
+        h += (double)(digit == 0 ? 0 : p - digit) * fct;
+        j /= p;
+        fct *= f;
+    }
+    return h;
+}

@@ -1,0 +1,86 @@
+/* photon_pass.c: photons from point lights through diffuse, mirror and glass bounces. */
+#include <stdlib.h>
+#include "halton.h"
+#include "optics.h"
+#include "photon_pass.h"
+
+static int record(photon_hits_t *out, vec3 x, vec3 n, vec3 flux, uint64_t i)
+{
+    if (out->n == out->cap) {
+        size_t cap = out->cap ? out->cap * 2 : 4096;
+        photon_hit_t *h = realloc(out->hits, cap * sizeof *h);
+        if (!h) return -1;
+        out->hits = h;
+        out->cap = cap;
+    }
+    photon_hit_t *h = &out->hits[out->n++];
+    h->x = x; h->n = n; h->flux = flux; h->photon = i;
+    return 0;
+}
+
+typedef struct {
+    const scene_t *scene;
+    const tracer_t *tr;
+    photon_hits_t *out;
+    uint64_t i;
+} photon_ctx_t;
+
+/* Follow one photon segment; depth counts segments (the first hit has depth 1). */
+static int photon_segment(photon_ctx_t *c, vec3 o, vec3 d, int depth, vec3 flux)
+{
+    hit_t h;
+    depth++;
+    c->out->segments++;
+    if (depth >= c->scene->max_depth || !tracer_intersect(c->tr, o, d, &h)) return 0;
+    const int d3 = depth * 3;
+    const material_t *m = &c->scene->materials[h.material];
+    vec3 nl = v3_dot(h.n, d) < 0 ? h.n : v3_scale(h.n, -1.0);
+    switch (m->kind) {
+    case MAT_DIFFUSE: {
+        if (record(c->out, h.x, h.n, flux, c->i)) return -1;
+        /* Russian roulette on the largest reflectance, then a cosine-weighted bounce. */
+        double p = v3_max_comp(m->colour);
+        if (!(halton(d3 + 1, (long long)c->i) < p)) return 0;
+        double s1 = 2.0 * PREE_PI * halton(d3 - 1, (long long)c->i);
+        double s2 = halton(d3, (long long)c->i), s2s = sqrt(s2);
+        vec3 w = nl;
+        vec3 u = v3_norm(v3_cross(fabs(w.x) > .1 ? v3(0, 1, 0) : v3(1, 0, 0), w));
+        vec3 v = v3_cross(w, u);
+        vec3 dir = v3_norm(v3_add(v3_add(v3_scale(v3_scale(u, cos(s1)), s2s), v3_scale(v3_scale(v, sin(s1)), s2s)),
+                                  v3_scale(w, sqrt(1 - s2))));
+        return photon_segment(c, h.x, dir, depth, v3_scale(v3_mul(m->colour, flux), 1.0 / p));
+    }
+    case MAT_MIRROR:
+        return photon_segment(c, h.x, optics_reflect(d, h.n), depth, v3_mul(m->colour, flux));
+    case MAT_GLASS: {
+        vec3 lr = optics_reflect(d, h.n);
+        refraction_t rf = optics_refract(d, h.n, nl, m->ior);
+        if (rf.total_internal) return photon_segment(c, h.x, lr, depth, flux);
+        /* One branch, chosen with probability Re; the flux passes on unchanged. */
+        if (halton(d3 - 1, (long long)c->i) < rf.Re) return photon_segment(c, h.x, lr, depth, flux);
+        return photon_segment(c, h.x, rf.refracted, depth, flux);
+    }
+    }
+    return 0;
+}
+
+int photon_trace(const scene_t *scene, const tracer_t *tr, uint64_t i, photon_hits_t *out)
+{
+    const int nl = scene->num_lights;
+    const point_light_t *light = &scene->lights[i % (uint64_t)nl];
+    vec3 flux = nl == 1 ? light->flux : v3_scale(light->flux, (double)nl);
+    /* Uniform direction on the sphere from Halton dimensions 0 and 1. */
+    double phi = 2. * PREE_PI * halton(0, (long long)i);
+    double theta = 2. * acos(sqrt(1. - halton(1, (long long)i)));
+    double st = sin(theta);
+    vec3 d = v3(cos(phi) * st, cos(theta), sin(phi) * st);
+    photon_ctx_t c = {scene, tr, out, i};
+    return photon_segment(&c, light->position, d, 0, flux);
+}
+
+void photon_hits_free(photon_hits_t *h)
+{
+    free(h->hits);
+    h->hits = NULL;
+    h->n = h->cap = 0;
+}

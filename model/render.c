@@ -1,0 +1,217 @@
+/* render.c: the render driver: phases in order, threads, timing, progress and interrupt.
+ *
+ * The photon pass runs in blocks: photons of a block are traced in parallel into ordered
+ * chunk buffers, then each thread updates the hit points it owns from all of the block's
+ * hits in photon order. So every hit point sees its photons in index order, and the result
+ * does not depend on the number of threads. */
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include "photon_pass.h"
+#include "radiance.h"
+#include "render.h"
+
+#define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
+#define TRACE_CHUNKS 64u
+
+static long peak_rss_kb(void)
+{
+    struct rusage ru;
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
+}
+
+/* Hit-point state before the first photon: radius r0, no photons, no flux. */
+static int init_state(hitpoints_t *h, precision_t prec, double r0)
+{
+    for (size_t i = 0; i < h->n; i++) {
+        h->hot[i].r2 = r0 * r0;
+        h->hot[i].count = 0;
+        h->flux[i] = v3(0, 0, 0);
+    }
+    if (prec != PRECISION_FP32) return 0;
+    h->fp32 = malloc((h->n ? h->n : 1) * sizeof *h->fp32);
+    if (!h->fp32) return -1;
+    const uint32_t r2 = preu_f32(r0 * r0);
+    for (size_t i = 0; i < h->n; i++) {
+        preu_hp_t *s = &h->fp32[i];
+        const hp_hot_t *p = &h->hot[i];
+        s->pos[0] = preu_f32(p->px); s->pos[1] = preu_f32(p->py); s->pos[2] = preu_f32(p->pz);
+        s->f[0] = preu_f32(h->weight[i].x); s->f[1] = preu_f32(h->weight[i].y); s->f[2] = preu_f32(h->weight[i].z);
+        s->tau[0] = s->tau[1] = s->tau[2] = 0;
+        s->r2 = r2;
+        s->n = 0;
+    }
+    return 0;
+}
+
+typedef struct {
+    photon_hits_t chunk[TRACE_CHUNKS];
+    unsigned long long no_cell;
+} block_buffers_t;
+
+/* Trace photons [first, first + count) into the ordered chunk buffers; drop hits that reach
+ * no hit point's cell when skipping. Returns 0 or -1 (out of memory). */
+static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
+                       uint64_t first, uint64_t count, block_buffers_t *bb)
+{
+    int failed = 0;
+    unsigned long long no_cell = 0;
+    const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : failed, no_cell)
+    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
+        photon_hits_t *out = &bb->chunk[c];
+        out->n = 0;
+        uint64_t lo = first + c * per, hi = lo + per;
+        if (hi > first + count) hi = first + count;
+        for (uint64_t i = lo; i < hi && !failed; i++) {
+            size_t before = out->n;
+            if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
+            if (!skip) continue;
+            size_t keep = before;
+            for (size_t k = before; k < out->n; k++) {
+                if (grid_has_cell(g, out->hits[k].x)) out->hits[keep++] = out->hits[k];
+                else no_cell++;
+            }
+            out->n = keep;
+        }
+    }
+    bb->no_cell += no_cell;
+    return failed ? -1 : 0;
+}
+
+static void progress(const render_options_t *opt, uint64_t done, uint64_t total, double t0)
+{
+    if (!opt->progress) return;
+    double el = omp_get_wtime() - t0;
+    fprintf(stderr, "\rpree: photons %llu/%llu (%3.0f%%) %.1fs", (unsigned long long)done,
+            (unsigned long long)total, 100.0 * (double)done / (double)total, el);
+    if (done == total) fputc('\n', stderr);
+    fflush(stderr);
+}
+
+int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+               char *err, size_t errlen)
+{
+    memset(res, 0, sizeof *res);
+    render_stats_t *st = &res->stats;
+    const double t_start = omp_get_wtime();
+    if (opt->threads > 0) omp_set_num_threads(opt->threads);
+    const int T = omp_get_max_threads();
+    st->threads = T;
+    const int skip = !opt->no_skip && opt->grid == GRID_CELLS;
+    const size_t npix = (size_t)opt->width * (size_t)opt->height;
+    int rc = -1;
+    grid_t grid;
+    memset(&grid, 0, sizeof grid);
+    block_buffers_t *bb = calloc(1, sizeof *bb);
+    res->rgb = calloc(npix * 3, sizeof *res->rgb);
+    tracer_t *tr = NULL;
+    if (!bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto done; }
+    res->width = opt->width;
+    res->height = opt->height;
+
+    /* Acceleration structure and eye pass. */
+    double t = omp_get_wtime();
+    tr = tracer_create(scene, err, errlen);
+    if (!tr) goto done;
+    st->sec_bvh = omp_get_wtime() - t;
+    t = omp_get_wtime();
+    eye_stats_t es;
+    if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, err, errlen)) goto done;
+    st->sec_eye = omp_get_wtime() - t;
+    st->hit_points = res->hp.n;
+    st->eye_rays = es.rays;
+    st->glass_splits = es.glass_splits;
+    for (size_t i = 0; i < res->hp.n; i++) {
+        vec3 w = res->hp.weight[i];
+        st->hit_points_zero_weight += (w.x == 0 && w.y == 0 && w.z == 0);
+    }
+
+    /* Initial radius, hit-point state, and the grid. */
+    t = omp_get_wtime();
+    st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    if (init_state(&res->hp, opt->precision, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+    grid_kind_t gk = opt->grid == GRID_CELLS && opt->no_skip ? GRID_CELLS : opt->grid;
+    if (res->hp.n && grid_build(&grid, gk, &res->hp, st->r0, opt->width, T, err, errlen)) goto done;
+    st->r_safe = grid.r_safe;
+    for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
+    st->sec_grid = omp_get_wtime() - t;
+
+    /* Photon pass: trace a block in parallel, then ordered updates per owned part. */
+    const uint64_t emitted_target = render_emitted(opt->photons);
+    uint64_t done_photons = 0;
+    update_stats_t *ust = calloc((size_t)T, sizeof *ust);
+    if (!ust) { snprintf(err, errlen, "out of memory"); goto done; }
+    const double t_photons = omp_get_wtime();
+    int interrupted = 0;
+    while (done_photons < emitted_target && res->hp.n) {
+        uint64_t count = emitted_target - done_photons;
+        if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
+        t = omp_get_wtime();
+        if (trace_block(scene, tr, &grid, skip, done_photons, count, bb)) {
+            snprintf(err, errlen, "out of memory in the photon pass");
+            free(ust);
+            goto done;
+        }
+        st->sec_trace += omp_get_wtime() - t;
+        t = omp_get_wtime();
+#pragma omp parallel num_threads(T)
+        {
+            const int p = omp_get_thread_num();
+            for (unsigned c = 0; c < TRACE_CHUNKS; c++)
+                update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p]);
+        }
+        st->sec_update += omp_get_wtime() - t;
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
+            st->photon_hits += bb->chunk[c].n;
+            st->photon_segments += bb->chunk[c].segments;
+            bb->chunk[c].segments = 0;
+        }
+        done_photons += count;
+        progress(opt, done_photons, emitted_target, t_photons);
+        if (opt->interrupt && *opt->interrupt && done_photons < emitted_target) {
+            /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
+            interrupted = 1;
+            if (opt->progress) fputc('\n', stderr);
+            break;
+        }
+    }
+    for (int p = 0; p < T; p++) {
+        st->upd.candidates += ust[p].candidates;
+        st->upd.skipped_radius += ust[p].skipped_radius;
+        st->upd.normal_passed += ust[p].normal_passed;
+        st->upd.accepted += ust[p].accepted;
+    }
+    free(ust);
+    st->photon_hits_no_cell = bb->no_cell;
+    st->photon_hits += bb->no_cell;
+    st->photons_emitted = res->hp.n ? done_photons : emitted_target;
+
+    /* Radiance evaluation. */
+    t = omp_get_wtime();
+    if (radiance_evaluate(&res->hp, opt->precision, st->photons_emitted, skip, res->rgb, npix, &st->radiance_skipped)) {
+        snprintf(err, errlen, "out of memory in radiance evaluation");
+        goto done;
+    }
+    st->sec_radiance = omp_get_wtime() - t;
+    rc = interrupted ? 1 : 0;
+done:
+    if (bb) {
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&bb->chunk[c]);
+        free(bb);
+    }
+    grid_free(&grid);
+    tracer_destroy(tr);
+    st->sec_total = omp_get_wtime() - t_start;
+    st->peak_rss_kb = peak_rss_kb();
+    return rc;
+}
+
+void render_result_free(render_result_t *res)
+{
+    free(res->rgb);
+    hitpoints_free(&res->hp);
+    memset(res, 0, sizeof *res);
+}

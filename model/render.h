@@ -1,0 +1,59 @@
+/* render.h: one progressive photon mapping render: eye pass, grid, photon pass with ordered
+ * updates, radiance evaluation. The output image is bit-identical for every thread count.
+ *
+ * render_run() returns 0 (complete), 1 (interrupted: the image holds the whole photon
+ * batches done so far) or -1 with a one-line message in err. */
+#ifndef PREE_RENDER_H
+#define PREE_RENDER_H
+
+#include <signal.h>
+#include <stddef.h>
+#include <stdint.h>
+#include "eye_pass.h"
+#include "grid.h"
+#include "hitpoints.h"
+#include "scene.h"
+#include "update.h"
+
+typedef struct {
+    int width, height;
+    uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
+    precision_t precision;
+    grid_kind_t grid;
+    int threads;             /* 0: OpenMP's default */
+    int no_skip;             /* 1: disable the skips (for proving them harmless) */
+    int progress;            /* 1: progress lines on stderr */
+    volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
+} render_options_t;
+
+typedef struct {
+    unsigned long long hit_points, hit_points_zero_weight, eye_rays, glass_splits;
+    unsigned long long photons_emitted, photon_segments, photon_hits, photon_hits_no_cell;
+    update_stats_t upd;
+    unsigned long long radiance_skipped;
+    double r0, r_safe;
+    size_t grid_entries;
+    double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_radiance, sec_total;
+    long peak_rss_kb;
+    int threads;
+} render_stats_t;
+
+typedef struct {
+    int width, height;
+    double *rgb;             /* linear radiance, 3 per pixel, top row first */
+    hitpoints_t hp;          /* final hit-point state */
+    render_stats_t stats;
+} render_result_t;
+
+int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+               char *err, size_t errlen);
+void render_result_free(render_result_t *res);
+
+/* The emitted photon count for a request (whole batches of 1000, at least one). */
+static inline uint64_t render_emitted(uint64_t requested)
+{
+    uint64_t b = requested / 1000;
+    return (b ? b : 1) * 1000;
+}
+
+#endif

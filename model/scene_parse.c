@@ -1,0 +1,331 @@
+/* scene_parse.c: the text scene format (docs/scene_format.md): one directive per line,
+ * '#' starts a comment. Every error names FILE:LINE and what was wrong. */
+#include <ctype.h>
+#include <errno.h>
+#include <limits.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scene.h"
+#include "mesh_load.h"
+
+#define MAX_TOKENS 64
+
+typedef struct {
+    const char *file;
+    int line;
+    char *err;
+    size_t errlen;
+} parse_ctx_t;
+
+static int fail(parse_ctx_t *pc, const char *fmt, ...)
+{
+    char msg[384];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    snprintf(pc->err, pc->errlen, "%s:%d: %s", pc->file, pc->line, msg);
+    return -1;
+}
+
+/* A number, or a sum "A+B" / "A-B" of two numbers evaluated in double (so that the
+ * reference program's "-1e5+81.6" keeps its exact rounding). Rejects NaN and infinity. */
+static int parse_number(parse_ctx_t *pc, const char *tok, double *out)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(tok, &end);
+    if (end == tok) return fail(pc, "expected a number, found '%s'", tok);
+    if (*end == '+' || *end == '-') {
+        const char *rest = end;
+        double w = strtod(rest, &end);
+        if (end == rest) return fail(pc, "malformed number '%s'", tok);
+        v = v + w;
+    }
+    if (*end != '\0') return fail(pc, "malformed number '%s'", tok);
+    if (!isfinite(v)) return fail(pc, "number '%s' is not finite", tok);
+    *out = v;
+    return 0;
+}
+
+static int parse_vec(parse_ctx_t *pc, char **tok, vec3 *out)
+{
+    double x, y, z;
+    if (parse_number(pc, tok[0], &x) || parse_number(pc, tok[1], &y) || parse_number(pc, tok[2], &z))
+        return -1;
+    *out = v3(x, y, z);
+    return 0;
+}
+
+static int need(parse_ctx_t *pc, int ntok, int n, const char *usage)
+{
+    if (ntok < n) return fail(pc, "too few values; expected: %s", usage);
+    return 0;
+}
+
+static void *grow(void *p, int count, size_t elem)
+{
+    return realloc(p, (size_t)(count + 1) * elem);
+}
+
+int scene_find_material(const scene_t *scene, const char *name)
+{
+    for (int i = 0; i < scene->num_materials; i++)
+        if (!strcmp(scene->materials[i].name, name)) return i;
+    return -1;
+}
+
+int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen)
+{
+    if (scene_find_material(scene, m->name) >= 0) {
+        snprintf(err, errlen, "material '%s' is defined twice", m->name);
+        return -1;
+    }
+    material_t *mats = grow(scene->materials, scene->num_materials, sizeof *mats);
+    if (!mats) { snprintf(err, errlen, "out of memory"); return -1; }
+    scene->materials = mats;
+    mats[scene->num_materials] = *m;
+    return scene->num_materials++;
+}
+
+static int material_ref(parse_ctx_t *pc, const scene_t *s, const char *name, int *out)
+{
+    int id = scene_find_material(s, name);
+    if (id < 0) return fail(pc, "unknown material '%s' (define it with 'material' first)", name);
+    *out = id;
+    return 0;
+}
+
+/* camera origin X Y Z dir X Y Z scale S near D [up X Y Z]
+ * camera position X Y Z lookat X Y Z up X Y Z fov DEGREES [near D] */
+static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    camera_t c = {0};
+    int have_origin = 0, have_dir = 0, have_scale = 0;
+    for (int i = 1; i < ntok;) {
+        const char *key = tok[i];
+        if ((!strcmp(key, "origin") || !strcmp(key, "position")) && i + 3 < ntok) {
+            if (parse_vec(pc, tok + i + 1, &c.origin)) return -1;
+            have_origin = 1; i += 4;
+        } else if (!strcmp(key, "dir") && i + 3 < ntok) {
+            if (parse_vec(pc, tok + i + 1, &c.dir)) return -1;
+            have_dir = 1; i += 4;
+        } else if (!strcmp(key, "lookat") && i + 3 < ntok) {
+            vec3 target;
+            if (parse_vec(pc, tok + i + 1, &target)) return -1;
+            c.dir = v3_sub(target, c.origin);
+            if (!have_origin) return fail(pc, "camera: give 'position' before 'lookat'");
+            have_dir = 1; i += 4;
+        } else if (!strcmp(key, "up") && i + 3 < ntok) {
+            if (parse_vec(pc, tok + i + 1, &c.up)) return -1;
+            c.has_up = 1; i += 4;
+        } else if (!strcmp(key, "scale") && i + 1 < ntok) {
+            if (parse_number(pc, tok[i + 1], &c.scale)) return -1;
+            have_scale = 1; i += 2;
+        } else if (!strcmp(key, "fov") && i + 1 < ntok) {
+            double deg;
+            if (parse_number(pc, tok[i + 1], &deg)) return -1;
+            if (!(deg > 0 && deg < 180)) return fail(pc, "camera: fov %g is not in (0, 180) degrees", deg);
+            c.scale = tan(deg * PREE_PI / 360.0);
+            have_scale = 1; i += 2;
+        } else if (!strcmp(key, "near") && i + 1 < ntok) {
+            if (parse_number(pc, tok[i + 1], &c.near)) return -1;
+            i += 2;
+        } else {
+            return fail(pc, "camera: unexpected '%s'", key);
+        }
+    }
+    if (!have_origin || !have_dir || !have_scale)
+        return fail(pc, "camera needs an origin (or position), a dir (or lookat) and a scale (or fov)");
+    if (v3_dot(c.dir, c.dir) == 0) return fail(pc, "camera: the view direction is zero");
+    if (c.has_up && v3_dot(v3_cross(c.dir, c.up), v3_cross(c.dir, c.up)) == 0)
+        return fail(pc, "camera: 'up' is parallel to the view direction");
+    if (!(c.scale > 0)) return fail(pc, "camera: scale must be positive");
+    if (c.near < 0) return fail(pc, "camera: near must not be negative");
+    s->camera = c;
+    return 1;
+}
+
+/* material NAME diffuse|mirror|glass R G B [ior N] */
+static int parse_material(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    if (need(pc, ntok, 6, "material NAME diffuse|mirror|glass R G B [ior N]")) return -1;
+    material_t m = {0};
+    if (strlen(tok[1]) >= sizeof m.name) return fail(pc, "material name '%s' is too long", tok[1]);
+    strcpy(m.name, tok[1]);
+    if (!strcmp(tok[2], "diffuse")) m.kind = MAT_DIFFUSE;
+    else if (!strcmp(tok[2], "mirror")) m.kind = MAT_MIRROR;
+    else if (!strcmp(tok[2], "glass")) m.kind = MAT_GLASS;
+    else return fail(pc, "material '%s': unknown kind '%s' (diffuse, mirror or glass)", m.name, tok[2]);
+    if (parse_vec(pc, tok + 3, &m.colour)) return -1;
+    if (m.colour.x < 0 || m.colour.y < 0 || m.colour.z < 0 || m.colour.x > 1 || m.colour.y > 1 || m.colour.z > 1)
+        return fail(pc, "material '%s': colour components must lie in [0, 1]", m.name);
+    m.ior = 1.5;
+    int i = 6;
+    if (i < ntok && !strcmp(tok[i], "ior")) {
+        if (i + 1 >= ntok) return fail(pc, "material '%s': 'ior' needs a value", m.name);
+        if (parse_number(pc, tok[i + 1], &m.ior)) return -1;
+        if (!(m.ior >= 1.0 && m.ior <= 10.0)) return fail(pc, "material '%s': ior %g is not in [1, 10]", m.name, m.ior);
+        i += 2;
+    }
+    if (i != ntok) return fail(pc, "material '%s': unexpected '%s'", m.name, tok[i]);
+    char e[256];
+    if (scene_add_material(s, &m, e, sizeof e) < 0) return fail(pc, "%s", e);
+    return 1;
+}
+
+/* sphere RADIUS X Y Z MATERIAL */
+static int parse_sphere(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    if (need(pc, ntok, 6, "sphere RADIUS X Y Z MATERIAL") ) return -1;
+    if (ntok > 6) return fail(pc, "sphere: unexpected '%s'", tok[6]);
+    sphere_t sp;
+    if (parse_number(pc, tok[1], &sp.radius) || parse_vec(pc, tok + 2, &sp.centre)) return -1;
+    if (!(sp.radius > 0)) return fail(pc, "sphere radius must be positive");
+    if (material_ref(pc, s, tok[5], &sp.material)) return -1;
+    sphere_t *arr = grow(s->spheres, s->num_spheres, sizeof *arr);
+    if (!arr) return fail(pc, "out of memory");
+    s->spheres = arr;
+    arr[s->num_spheres++] = sp;
+    return 1;
+}
+
+/* light point X Y Z intensity R G B   (flux = intensity * 4 pi)
+ * light point X Y Z flux R G B */
+static int parse_light(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    const char *usage = "light point X Y Z intensity|flux R G B";
+    if (need(pc, ntok, 9, usage)) return -1;
+    if (strcmp(tok[1], "point")) return fail(pc, "unknown light kind '%s' (point)", tok[1]);
+    if (ntok > 9) return fail(pc, "light: unexpected '%s'", tok[9]);
+    point_light_t l;
+    vec3 v;
+    if (parse_vec(pc, tok + 2, &l.position) || parse_vec(pc, tok + 6, &v)) return -1;
+    if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
+    if (!strcmp(tok[5], "intensity")) l.flux = v3_scale(v, PREE_PI * 4.0);
+    else if (!strcmp(tok[5], "flux")) l.flux = v;
+    else return fail(pc, "light: expected 'intensity' or 'flux', found '%s'", tok[5]);
+    point_light_t *arr = grow(s->lights, s->num_lights, sizeof *arr);
+    if (!arr) return fail(pc, "out of memory");
+    s->lights = arr;
+    arr[s->num_lights++] = l;
+    return 1;
+}
+
+/* triangle X Y Z X Y Z X Y Z MATERIAL: one inline triangle (collected into one mesh). */
+static int parse_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    if (need(pc, ntok, 11, "triangle X Y Z X Y Z X Y Z MATERIAL")) return -1;
+    if (ntok > 11) return fail(pc, "triangle: unexpected '%s'", tok[11]);
+    vec3 p[3];
+    int mat;
+    for (int k = 0; k < 3; k++)
+        if (parse_vec(pc, tok + 1 + 3 * k, &p[k])) return -1;
+    if (material_ref(pc, s, tok[10], &mat)) return -1;
+    vec3 n = v3_cross(v3_sub(p[1], p[0]), v3_sub(p[2], p[0]));
+    if (v3_dot(n, n) == 0) return fail(pc, "triangle is degenerate (zero area)");
+    char e[256];
+    if (mesh_append_triangle(s, p, mat, e, sizeof e)) return fail(pc, "%s", e);
+    return 1;
+}
+
+static int parse_depth(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    double d;
+    if (need(pc, ntok, 2, "depth N")) return -1;
+    if (parse_number(pc, tok[1], &d)) return -1;
+    if (d != floor(d) || d < 1 || d > 20)
+        return fail(pc, "depth %s is not an integer in 1..20 (the Halton dimensions end at 61)", tok[1]);
+    s->max_depth = (int)d;
+    return 1;
+}
+
+static int parse_mesh(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    char e[512];
+    if (need(pc, ntok, 2, "mesh FILE [options]")) return -1;
+    if (mesh_load_directive(s, pc->file, tok + 1, ntok - 1, e, sizeof e)) return fail(pc, "%s", e);
+    return 1;
+}
+
+typedef int (*directive_fn)(parse_ctx_t *, scene_t *, char **, int);
+static const struct { const char *name; directive_fn fn; } directives[] = {
+    {"camera", parse_camera},     {"material", parse_material}, {"sphere", parse_sphere},
+    {"light", parse_light},       {"triangle", parse_triangle}, {"mesh", parse_mesh},
+    {"depth", parse_depth},
+};
+
+static int tokenize(char *line, char **tok)
+{
+    int n = 0;
+    char *p = line;
+    while (*p) {
+        while (*p && isspace((unsigned char)*p)) p++;
+        if (!*p || *p == '#') break;
+        if (n == MAX_TOKENS) return -1;
+        tok[n++] = p;
+        while (*p && !isspace((unsigned char)*p)) p++;
+        if (*p) *p++ = '\0';
+    }
+    return n;
+}
+
+static int scene_validate(parse_ctx_t *pc, scene_t *s)
+{
+    if (s->camera.scale == 0) return fail(pc, "the scene has no camera");
+    if (s->num_lights == 0) return fail(pc, "the scene has no light");
+    if (s->num_spheres == 0 && s->num_meshes == 0) return fail(pc, "the scene has no geometry");
+    for (int i = 0; i < s->num_materials; i++) {
+        s->has_mirror |= s->materials[i].kind == MAT_MIRROR;
+        s->has_glass |= s->materials[i].kind == MAT_GLASS;
+        s->has_diffuse |= s->materials[i].kind == MAT_DIFFUSE;
+    }
+    return 0;
+}
+
+int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
+{
+    parse_ctx_t pc = {path, 0, err, errlen};
+    FILE *f = fopen(path, "r");
+    if (!f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
+    scene_t s;
+    memset(&s, 0, sizeof s);
+    snprintf(s.path, sizeof s.path, "%s", path);
+    s.max_depth = 20;
+    char line[4096];
+    char *tok[MAX_TOKENS];
+    int rc = 0;
+    while (fgets(line, sizeof line, f)) {
+        pc.line++;
+        size_t len = strlen(line);
+        if (len == sizeof line - 1 && line[len - 1] != '\n') { rc = fail(&pc, "line too long"); break; }
+        if (memchr(line, '\0', len) != NULL && strlen(line) != len) { rc = fail(&pc, "binary data"); break; }
+        int ntok = tokenize(line, tok);
+        if (ntok < 0) { rc = fail(&pc, "too many values on one line"); break; }
+        if (ntok == 0) continue;
+        size_t d;
+        for (d = 0; d < sizeof directives / sizeof directives[0]; d++)
+            if (!strcmp(tok[0], directives[d].name)) break;
+        if (d == sizeof directives / sizeof directives[0]) { rc = fail(&pc, "unknown directive '%s'", tok[0]); break; }
+        if (directives[d].fn(&pc, &s, tok, ntok) < 0) { rc = -1; break; }
+    }
+    if (rc == 0 && ferror(f)) { pc.line = 0; rc = fail(&pc, "read error"); }
+    fclose(f);
+    if (rc == 0) { pc.line++; rc = scene_validate(&pc, &s); }
+    if (rc) { scene_free(&s); return -1; }
+    *out = s;
+    return 0;
+}
+
+void scene_free(scene_t *s)
+{
+    for (int i = 0; i < s->num_meshes; i++) mesh_free(&s->meshes[i]);
+    free(s->meshes);
+    free(s->materials);
+    free(s->spheres);
+    free(s->lights);
+    memset(s, 0, sizeof *s);
+}

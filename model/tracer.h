@@ -1,0 +1,36 @@
+/* tracer.h: ray casting for the engine, every ray through Embree 3.
+ * Spheres are Embree user geometry whose callbacks intersect the double-precision ray
+ * (carried in an extended intersect context) exactly as the reference program does;
+ * triangles are Embree's native triangle geometry.
+ *
+ * tracer_create() returns NULL with a one-line message in err on failure. */
+#ifndef PREE_TRACER_H
+#define PREE_TRACER_H
+
+#include <stddef.h>
+#include "scene.h"
+
+/* Rays start this far along their direction from a surface (triangles), and a sphere hit
+ * closer than this is ignored, as in the reference program. */
+#define TRACER_EPSILON 1e-4
+
+typedef struct tracer tracer_t;
+
+typedef struct {
+    double t;
+    vec3 x;         /* hit position o + d * t */
+    vec3 n;         /* unit normal: outward for spheres; facing the ray for triangles */
+    int material;
+} hit_t;
+
+tracer_t *tracer_create(const scene_t *scene, char *err, size_t errlen);
+void tracer_destroy(tracer_t *tr);
+
+/* Closest hit along o + t d, t > epsilon; returns 1 and fills *hit, or 0 on a miss.
+ * d need not be unit length for spheres but must be for consistent epsilons. Thread-safe. */
+int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit);
+
+/* Seconds spent building the acceleration structure, and its triangle count. */
+double tracer_build_seconds(const tracer_t *tr);
+
+#endif

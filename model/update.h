@@ -1,0 +1,48 @@
+/* update.h: the progressive update of hit points by photon hits (Eq. 1-2 of paper 000 with
+ * M = 1, alpha = 0.7), for one owned part of the hit points, in photon order.
+ *
+ * Double mode: the reference program's test and arithmetic. fp32 mode: the host keeps the
+ * normal test in double; every candidate that passes it goes to the PREU model
+ * (model/preu_fp32.h), which does the distance test and the update in binary32. */
+#ifndef PREE_UPDATE_H
+#define PREE_UPDATE_H
+
+#include "grid.h"
+#include "hitpoints.h"
+#include "photon_pass.h"
+
+#define UPDATE_ALPHA 0.7
+#define UPDATE_NORMAL_COS 1e-3
+
+typedef struct {
+    unsigned long long candidates;      /* hit points examined (paper: hit-point update operations) */
+    unsigned long long skipped_radius;  /* candidates farther than the safe initial radius (GRID_CELLS) */
+    unsigned long long normal_passed;   /* candidates passing the normal test: sent to the PREE */
+    unsigned long long accepted;        /* updates applied */
+} update_stats_t;
+
+typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
+
+/* Apply hits[0..n) to the hit points of part p. */
+void update_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
+                 const photon_hit_t *hits, size_t n, update_stats_t *st);
+
+/* The reference program's double update of one hit point by flux F. */
+static inline void update_accept_double(hitpoints_t *h, size_t e, vec3 F)
+{
+    hp_hot_t *hp = &h->hot[e];
+    double g = (hp->count * UPDATE_ALPHA + UPDATE_ALPHA) / (hp->count * UPDATE_ALPHA + 1.0);
+    hp->r2 = hp->r2 * g;
+    hp->count++;
+    h->flux[e] = v3_scale(v3_add(h->flux[e], v3_scale(v3_mul(h->weight[e], F), 1. / PREE_PI)), g);
+}
+
+/* The photon at the PREE boundary: rounded once to binary32. */
+static inline preu_photon_t update_photon_fp32(const photon_hit_t *ph)
+{
+    preu_photon_t p = {{preu_f32(ph->x.x), preu_f32(ph->x.y), preu_f32(ph->x.z)},
+                       {preu_f32(ph->flux.x), preu_f32(ph->flux.y), preu_f32(ph->flux.z)}};
+    return p;
+}
+
+#endif
