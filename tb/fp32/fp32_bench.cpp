@@ -1,0 +1,207 @@
+// fp32_bench.cpp: Verilator bench for one binary32 unit, checked bit for bit against
+// model/fp32_ops.h (through fp32_gen.c).
+//
+// Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP> and the matching Verilated model.
+// Usage: fp32_bench_<unit> [random_count [seed]]  (defaults 200000, 1). Runs the directed list,
+// then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
+// density) and a scoreboard keyed on the handshake: an expected result is pushed when an
+// operation is accepted and popped when valid_o appears, which must be exactly LATENCY cycles
+// later. Operands driven while valid_i is low are random, so stale data cannot hide.
+// Prints the first 20 mismatches in hex with their inputs; exit status 1 on any mismatch.
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <memory>
+
+#include "verilated.h"
+#include "fp32_gen.h"
+
+#if defined(FP32_UNIT_ADD)
+#include "Vpree_fp32_add.h"
+typedef Vpree_fp32_add Dut;
+static const fp32_unit_t UNIT = FP32_ADD;
+static const int LATENCY = 2;
+#elif defined(FP32_UNIT_MUL)
+#include "Vpree_fp32_mul.h"
+typedef Vpree_fp32_mul Dut;
+static const fp32_unit_t UNIT = FP32_MUL;
+static const int LATENCY = 2;
+#elif defined(FP32_UNIT_SQR)
+#include "Vpree_fp32_sqr.h"
+typedef Vpree_fp32_sqr Dut;
+static const fp32_unit_t UNIT = FP32_SQR;
+static const int LATENCY = 2;
+#elif defined(FP32_UNIT_DIV)
+#include "Vpree_fp32_div.h"
+typedef Vpree_fp32_div Dut;
+static const fp32_unit_t UNIT = FP32_DIV;
+static const int LATENCY = 4;
+#elif defined(FP32_UNIT_CMP)
+#include "Vpree_fp32_cmp.h"
+typedef Vpree_fp32_cmp Dut;
+static const fp32_unit_t UNIT = FP32_CMP;
+static const int LATENCY = 0;
+#else
+#error "define FP32_UNIT_ADD, _MUL, _SQR, _DIV or _CMP"
+#endif
+
+namespace {
+
+const int MAX_REPORT = 20;
+
+struct Pending {
+    fp32_case_t c;
+    uint64_t issue_cycle;
+};
+
+// Counts and prints mismatches; only the first MAX_REPORT are printed.
+struct Scoreboard {
+    uint64_t checked = 0, errors = 0;
+
+    void fail(const fp32_case_t &c, uint32_t got, const char *why)
+    {
+        if (errors++ < MAX_REPORT)
+            std::printf("MISMATCH %s: a=%08" PRIx32 " b=%08" PRIx32 " sub=%" PRIu32
+                        " expected=%08" PRIx32 " got=%08" PRIx32 " (%s)\n",
+                        fp32_unit_name(UNIT), c.a, c.b, c.sub, c.y, got, why);
+    }
+
+    void check(const fp32_case_t &c, uint32_t got)
+    {
+        checked++;
+        if (got != c.y) fail(c, got, "value");
+    }
+};
+
+// The next case: the directed list first, then random ones.
+struct Source {
+    size_t directed, next = 0;
+    uint64_t total;
+    uint64_t rng;
+
+    Source(uint64_t random_count, uint64_t seed)
+        : directed(fp32_directed_count(UNIT)), total(directed + random_count),
+          rng(seed * 0x9E3779B97F4A7C15ULL + 1) {}
+
+    bool done() const { return next >= total; }
+
+    fp32_case_t take()
+    {
+        fp32_case_t c;
+        if (next < directed) fp32_directed(UNIT, next, &c);
+        else fp32_random(UNIT, &rng, &c);
+        next++;
+        return c;
+    }
+};
+
+#if !defined(FP32_UNIT_CMP)
+void drive(Dut &dut, const fp32_case_t &c)
+{
+    dut.a_i = c.a;
+#if !defined(FP32_UNIT_SQR)
+    dut.b_i = c.b;
+#endif
+#if defined(FP32_UNIT_ADD)
+    dut.sub_i = c.sub;
+#endif
+}
+
+// Clocked units: random valid gaps, handshake-keyed scoreboard, exact latency check.
+int run(Dut &dut, Source &src, Scoreboard &sb)
+{
+    std::deque<Pending> queue;
+    uint64_t cycle = 0;
+    uint32_t density = 16;   // valid_i probability in 1/16 steps, changed every burst
+
+    auto tick = [&]() {
+        dut.clk_i = 0; dut.eval();
+        dut.clk_i = 1; dut.eval();
+        cycle++;
+    };
+
+    dut.rst_ni = 0; dut.valid_i = 0; dut.clk_i = 0;
+    for (int i = 0; i < 3; i++) tick();
+    dut.rst_ni = 1;
+    tick();
+
+    while (!src.done() || !queue.empty()) {
+        if (cycle % 256 == 0) {
+            static const uint32_t densities[] = { 16, 16, 15, 12, 8, 4, 1 };
+            density = densities[fp32_rng_next(&src.rng) % 7];
+        }
+        bool issue = !src.done() && (fp32_rng_next(&src.rng) >> 60) < density;
+        if (issue) {
+            Pending p = { src.take(), cycle };
+            drive(dut, p.c);
+            queue.push_back(p);
+        } else {
+            fp32_case_t junk;
+            fp32_random(UNIT, &src.rng, &junk);   // operands with valid_i low must not matter
+            drive(dut, junk);
+        }
+        dut.valid_i = issue;
+        tick();
+
+        // After this edge, an operation issued LATENCY cycles ago must be on the output.
+        bool due = !queue.empty() && queue.front().issue_cycle + LATENCY == cycle;
+        if (dut.valid_o && !due) {
+            fp32_case_t none = {};
+            sb.fail(none, dut.y_o, "valid_o without an operation due");
+            return 1;
+        }
+        if (due && !dut.valid_o) {
+            sb.fail(queue.front().c, dut.y_o, "valid_o missing at LATENCY");
+            return 1;
+        }
+        if (due) {
+            sb.check(queue.front().c, dut.y_o);
+            queue.pop_front();
+        }
+    }
+    return 0;
+}
+#else
+// The comparator is combinational: drive, settle, compare the four flags.
+int run(Dut &dut, Source &src, Scoreboard &sb)
+{
+    while (!src.done()) {
+        fp32_case_t c = src.take();
+        dut.a_i = c.a; dut.b_i = c.b;
+        dut.eval();
+        uint32_t got = (uint32_t)(dut.unordered_o << 3 | dut.eq_o << 2 | dut.le_o << 1 | dut.lt_o);
+        sb.check(c, got);
+    }
+    return 0;
+}
+#endif
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    uint64_t count = argc > 1 ? std::strtoull(argv[1], nullptr, 0) : 200000;
+    uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 0) : 1;
+
+    // One context per simulation; the model is owned by a smart pointer so that it is
+    // finalised on every return path.
+    const std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
+    ctx->commandArgs(argc, argv);
+    const std::unique_ptr<Dut> dut{new Dut{ctx.get()}};
+
+    Source src(count, seed);
+    Scoreboard sb;
+    int protocol_error = run(*dut, src, sb);
+    dut->final();
+
+    std::printf("pree_fp32_%s: %zu directed + %" PRIu64 " random (seed %" PRIu64 "): "
+                "%" PRIu64 " checked, %" PRIu64 " mismatches%s\n",
+                fp32_unit_name(UNIT), src.directed, count, seed, sb.checked, sb.errors,
+                protocol_error ? ", handshake error" : "");
+    if (sb.errors || protocol_error || sb.checked != src.total) {
+        std::printf("FAIL: rerun with: %s %" PRIu64 " %" PRIu64 "\n", argv[0], count, seed);
+        return 1;
+    }
+    return 0;
+}
