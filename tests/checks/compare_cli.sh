@@ -1,0 +1,185 @@
+#!/usr/bin/env bash
+# level: quick
+# `pree compare` end to end: metrics of generated 8-bit (PPM) and float (PFM) image pairs against
+# an independent pure-Python computation (SSIM by direct 11x11 windows with central moments),
+# the text and JSON output, --diff images (exact heat-map bytes, linear EXR), and every error
+# path's exit status (1: bad image or mismatch, 2: usage) with no partial --diff file.
+# Usage: tests/checks/compare_cli.sh   (PREE=path/to/pree to test another build)
+set -u
+cd "$(dirname "$0")/../.."
+PREE=${PREE:-build/pree}
+REPRO="bash tests/checks/compare_cli.sh"
+tmp=$(mktemp -d /tmp/pree-compare-check-XXXXXX)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+[ -x "$PREE" ] || { echo "FAIL: $PREE not built (make build); reproduce: $REPRO"; exit 1; }
+
+# The independent reference: writes the test images and checks pree's figures against its own.
+cat >"$tmp/ref.py" <<'PY'
+import json, math, struct, sys
+
+def lcg(seed):
+    s = seed
+    while True:
+        s = (s * 6364136223846793005 + 1442695040888963407) % 2**64
+        yield (s >> 11) / 2.0**53
+
+def make_pair(w, h, seed, is_float):
+    r = lcg(seed)
+    a, b = [], []
+    for y in range(h):
+        for x in range(w):
+            for c in range(3):
+                base = 0.5 + 0.35 * math.sin(0.4 * x + c) * math.cos(0.3 * y) + 0.1 * next(r)
+                other = 0.7 * base + 0.1 + 0.15 * (next(r) - 0.5)
+                if is_float:   # values exactly representable in binary32
+                    a.append(struct.unpack('<f', struct.pack('<f', 3.0 * base))[0])
+                    b.append(struct.unpack('<f', struct.pack('<f', 3.0 * other))[0])
+                else:
+                    a.append(min(255, max(0, int(base * 255))))
+                    b.append(min(255, max(0, int(other * 255))))
+    return a, b
+
+def write_ppm(path, w, h, v):
+    with open(path, 'w') as f:
+        f.write('P3\n%d %d\n255\n' % (w, h) + ''.join('%d ' % x for x in v))
+
+def write_pfm(path, w, h, v):   # PFM stores the bottom row first
+    with open(path, 'wb') as f:
+        f.write(b'PF\n%d %d\n-1.0\n' % (w, h))
+        for y in reversed(range(h)):
+            f.write(struct.pack('<%df' % (3 * w), *v[3 * w * y:3 * w * (y + 1)]))
+
+def ssim(a, b, w, h, L):
+    g = [[math.exp(-((i - 5) ** 2 + (j - 5) ** 2) / 4.5) for j in range(11)] for i in range(11)]
+    tot = sum(map(sum, g))
+    g = [[v / tot for v in row] for row in g]
+    C1, C2 = (0.01 * L) ** 2, (0.03 * L) ** 2
+    res = 0.0
+    for c in range(3):
+        acc, cnt = 0.0, 0
+        for y in range(h - 10):
+            for x in range(w - 10):
+                idx = [(g[i][j], 3 * ((y + i) * w + x + j) + c) for i in range(11) for j in range(11)]
+                ma = sum(wt * a[k] for wt, k in idx)
+                mb = sum(wt * b[k] for wt, k in idx)
+                va = sum(wt * (a[k] - ma) ** 2 for wt, k in idx)
+                vb = sum(wt * (b[k] - mb) ** 2 for wt, k in idx)
+                cov = sum(wt * (a[k] - ma) * (b[k] - mb) for wt, k in idx)
+                acc += (2 * ma * mb + C1) * (2 * cov + C2) / ((ma * ma + mb * mb + C1) * (va + vb + C2))
+                cnt += 1
+        res += acc / cnt
+    return res / 3
+
+def metrics(a, b, w, h, L):
+    d2 = sum((x - y) ** 2 for x, y in zip(a, b))
+    mse = d2 / len(a)
+    return {'width': w, 'height': h, 'peak': L, 'ssim': ssim(a, b, w, h, L),
+            'snr_db': 10 * math.log10(sum(x * x for x in a) / d2),
+            'psnr_db': 10 * math.log10(L * L / mse), 'rmse': math.sqrt(mse),
+            'max_abs': max(abs(x - y) for x, y in zip(a, b))}
+
+def heat(a, b, w, h):   # the documented heat map
+    e = [max(abs(a[3 * p + c] - b[3 * p + c]) for c in range(3)) for p in range(w * h)]
+    m = max(e)
+    out = []
+    for v in e:
+        t = v / m if m > 0 else 0.0
+        out += [int(min(1.0, max(0.0, 3 * t - c)) * 255 + 0.5) for c in range(3)]
+    return out
+
+cmd, d = sys.argv[1], sys.argv[2]
+W, H = 29, 23
+if cmd == 'make':
+    a, b = make_pair(W, H, 1, False)
+    write_ppm(d + '/a.ppm', W, H, a); write_ppm(d + '/b.ppm', W, H, b)
+    write_ppm(d + '/small.ppm', 10, 23, a[:10 * 23 * 3])
+    fa, fb = make_pair(W, H, 2, True)
+    write_pfm(d + '/a.pfm', W, H, fa); write_pfm(d + '/b.pfm', W, H, fb)
+    write_pfm(d + '/absdiff.pfm', W, H, [abs(x - y) for x, y in zip(fa, fb)])
+    with open(d + '/heat.ppm', 'w') as f:
+        f.write('P3\n%d %d\n255\n' % (W, H) + ''.join('%d ' % x for x in heat(a, b, W, H)))
+elif cmd == 'check':   # check FILE.json KIND
+    got = json.load(open(sys.argv[3]))
+    if sys.argv[4] == 'u8':
+        a, b = make_pair(W, H, 1, False); L = 255.0
+    else:
+        a, b = make_pair(W, H, 2, True); L = max(a) - min(a)
+    want = metrics(a, b, W, H, L)
+    bad = 0
+    for k, v in want.items():
+        g = got.get(k)
+        ok = isinstance(g, (int, float)) and abs(g - v) <= 1e-12 * max(1.0, abs(v))
+        print('%-8s pree %-22r python %-22r %s' % (k, g, v, 'ok' if ok else 'MISMATCH'))
+        bad += not ok
+    sys.exit(1 if bad else 0)
+PY
+
+python3 "$tmp/ref.py" make "$tmp" || { echo "FAIL: image generation; reproduce: $REPRO"; exit 1; }
+
+# 1. 8-bit and float pairs: JSON figures against Python's, and text output carrying the same keys.
+for kind in u8 float; do
+  ext=ppm; [ $kind = float ] && ext=pfm
+  if "$PREE" compare "$tmp/a.$ext" "$tmp/b.$ext" --json >"$tmp/$kind.json" 2>"$tmp/err"; then
+    python3 "$tmp/ref.py" check "$tmp" "$tmp/$kind.json" $kind || fail "$kind metrics differ from the Python reference"
+  else
+    fail "$kind compare exited non-zero: $(cat "$tmp/err")"
+  fi
+done
+"$PREE" compare "$tmp/a.ppm" "$tmp/b.ppm" >"$tmp/text" || fail "text output exited non-zero"
+keys=$(cut -d' ' -f1 "$tmp/text" | tr '\n' ' ')
+[ "$keys" = "width height peak ssim snr_db psnr_db rmse max_abs " ] || fail "text keys are '$keys'"
+python3 - "$tmp/text" "$tmp/u8.json" <<'PY' || fail "text and JSON figures disagree"
+import json, sys
+text = dict(l.split() for l in open(sys.argv[1]))
+js = json.load(open(sys.argv[2]))
+assert all(abs(float(text[k]) - js[k]) <= 1e-9 * max(1, abs(js[k])) for k in text), (text, js)
+PY
+
+# 2. Identical images: SSIM 1, no difference, SNR and PSNR "inf" in text and JSON.
+"$PREE" compare "$tmp/a.ppm" "$tmp/a.ppm" >"$tmp/same" || fail "identical compare exited non-zero"
+grep -qx 'ssim 1' "$tmp/same" && grep -qx 'snr_db inf' "$tmp/same" && grep -qx 'psnr_db inf' "$tmp/same" \
+  && grep -qx 'rmse 0' "$tmp/same" && grep -qx 'max_abs 0' "$tmp/same" || fail "identical images: $(tr '\n' ' ' <"$tmp/same")"
+"$PREE" compare "$tmp/a.ppm" "$tmp/a.ppm" --json | python3 -c '
+import json, sys; j = json.load(sys.stdin); assert j["snr_db"] == "inf" and j["psnr_db"] == "inf" and j["ssim"] == 1, j' \
+  || fail "identical images: JSON"
+
+# 3. --diff: the heat map's exact bytes (.ppm), a readable PNG, and linear |a - b| as EXR.
+"$PREE" compare "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/d.ppm" >/dev/null || fail "--diff d.ppm exited non-zero"
+cmp -s "$tmp/d.ppm" "$tmp/heat.ppm" || fail "--diff heat map bytes differ from the Python heat map"
+"$PREE" compare "$tmp/a.ppm" "$tmp/b.ppm" --diff="$tmp/d.png" >/dev/null || fail "--diff=d.png exited non-zero"
+"$PREE" compare "$tmp/d.png" "$tmp/heat.ppm" >"$tmp/dpng" 2>&1 && grep -qx 'max_abs 0' "$tmp/dpng" \
+  || fail "--diff PNG is not the heat map: $(tr '\n' ' ' <"$tmp/dpng")"
+"$PREE" compare "$tmp/a.pfm" "$tmp/b.pfm" --diff "$tmp/d.exr" >/dev/null || fail "--diff d.exr exited non-zero"
+"$PREE" compare "$tmp/absdiff.pfm" "$tmp/d.exr" >"$tmp/dexr" 2>&1 && grep -qx 'max_abs 0' "$tmp/dexr" \
+  || fail "--diff EXR is not |a - b|: $(tr '\n' ' ' <"$tmp/dexr")"
+
+# 4. Errors: exit status, one line on stderr naming the problem, no --diff file left behind.
+expect() {   # expect STATUS PATTERN ARGS...: exit status and a one-line message matching PATTERN
+  local want=$1 pat=$2; shift 2
+  "$PREE" compare "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+  if [ $rc -ne "$want" ]; then fail "pree compare $*: exit $rc, want $want"; return; fi
+  [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "pree compare $*: stderr is not one line: $(cat "$tmp/err")"
+  grep -q -- "$pat" "$tmp/err" || fail "pree compare $*: message '$(cat "$tmp/err")' lacks '$pat'"
+  [ ! -s "$tmp/out" ] || fail "pree compare $*: printed figures on failure"
+}
+expect 1 'sizes differ' "$tmp/a.ppm" "$tmp/small.ppm"
+expect 1 'sample types differ' "$tmp/a.ppm" "$tmp/a.pfm"
+expect 1 "$tmp/missing.png" "$tmp/a.ppm" "$tmp/missing.png"
+expect 1 'at least 11x11' "$tmp/small.ppm" "$tmp/small.ppm"
+expect 1 "$tmp/nodir/d.png" "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/nodir/d.png"
+expect 1 'unknown 8-bit image extension' "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/d.tif"
+expect 1 'sizes differ' "$tmp/a.ppm" "$tmp/small.ppm" --diff "$tmp/never.png"
+[ ! -e "$tmp/never.png" ] && [ ! -e "$tmp/d.tif" ] || fail "a failed compare left a --diff file"
+ls -a "$tmp" | grep -q '\.tmp-' && fail "a temporary file was left behind"
+expect 2 'unknown option' "$tmp/a.ppm" "$tmp/b.ppm" --bogus
+expect 2 'needs two images' "$tmp/a.ppm"
+expect 2 'needs two images'
+expect 2 'too many images' "$tmp/a.ppm" "$tmp/b.ppm" "$tmp/b.ppm"
+expect 2 'needs an output file' "$tmp/a.ppm" "$tmp/b.ppm" --diff
+"$PREE" compare --help | grep -q '^usage: pree compare' || fail "--help"
+
+if [ $fails -ne 0 ]; then echo "$fails failure(s); reproduce: $REPRO"; exit 1; fi
+echo "compare_cli: all checks passed"
