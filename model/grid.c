@@ -53,9 +53,15 @@ static inline uint64_t cell_key(int64_t ix, int64_t iy, int64_t iz)
     return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
 }
 
+/* splitmix64's finaliser: every key bit reaches every slot bit. */
 static inline size_t key_slot(uint64_t key, size_t mask)
 {
-    return (size_t)((key * 0x9E3779B97F4A7C15ull) >> 20) & mask;
+    key ^= key >> 30;
+    key *= 0xBF58476D1CE4E5B9ull;
+    key ^= key >> 27;
+    key *= 0x94D049BB133111EBull;
+    key ^= key >> 31;
+    return (size_t)key & mask;
 }
 
 static size_t find_slot(const uint64_t *keys, size_t mask, uint64_t key)
@@ -86,7 +92,7 @@ static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t er
 {
     for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
     part->num_entries = part->start[buckets];
-    part->entries = malloc((part->num_entries + 1) * sizeof(uint32_t));
+    part->entries = malloc((part->num_entries + 1) * sizeof *part->entries);
     if (!part->entries) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
     return 0;
 }
@@ -127,7 +133,7 @@ static int build_smallppm(grid_t *g, const hitpoints_t *h, int width, char *err,
                     for (uint32_t ix = r.lo[0]; ix <= r.hi[0]; ix++) {
                         size_t b = smallppm_bucket(ix, iy, iz, nb);
                         if (pass == 0) part->start[b + 1]++;
-                        else part->entries[--part->start[b + 1]] = (uint32_t)k;
+                        else part->entries[--part->start[b + 1]].hp = (uint32_t)k;
                     }
         }
         if (pass == 0) {
@@ -157,7 +163,7 @@ static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
     return 1;
 }
 
-static int build_cells(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
 {
     vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
     size_t used = 0;
@@ -184,17 +190,41 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, char *err, si
     size_t bound = 0;
     for (size_t i = 0; i < h->n; i++) {
         const vec3 w = h->weight[i];
-        if (w.x == 0 && w.y == 0 && w.z == 0) continue;
+        if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) continue;
         int64_t a[3], b[3];
         const hp_hot_t *p = &h->hot[i];
         cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
         cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
         bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
     }
+    /* Count the distinct cells in a scratch table, then size the real one to twice that,
+     * so that look-ups probe a compact table. */
+    size_t scratch_size = 1024;
+    while (scratch_size < 2 * bound) scratch_size *= 2;
+    uint64_t *keys = malloc(scratch_size * sizeof *keys);
+    if (!keys) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    memset(keys, 0xFF, scratch_size * sizeof *keys);
+    size_t distinct = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        const vec3 w = h->weight[i];
+        if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) continue;
+        const hp_hot_t *p = &h->hot[i];
+        int64_t a[3], b[3];
+        cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+        cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+        for (int64_t iz = a[2]; iz <= b[2]; iz++)
+            for (int64_t iy = a[1]; iy <= b[1]; iy++)
+                for (int64_t ix = a[0]; ix <= b[0]; ix++) {
+                    uint64_t key = cell_key(ix, iy, iz);
+                    size_t s = find_slot(keys, scratch_size - 1, key);
+                    if (keys[s] == EMPTY_KEY) { keys[s] = key; distinct++; }
+                }
+    }
+    free(keys);
     size_t size = 1024;
-    while (size < 2 * bound) size *= 2;
+    while (size < 2 * distinct) size *= 2;
     if (alloc_parts(g, g->num_parts, size, err, errlen)) return -1;
-    uint64_t *keys = malloc(size * sizeof *keys);
+    keys = malloc(size * sizeof *keys);
     if (!keys) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
     memset(keys, 0xFF, size * sizeof *keys);
     for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = keys;
@@ -203,7 +233,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, char *err, si
     for (int pass = 0; pass < 2; pass++) {
         for (size_t i = 0; i < h->n; i++) {
             const vec3 w = h->weight[i];
-            if (w.x == 0 && w.y == 0 && w.z == 0) {
+            if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) {
                 if (pass == 0) g->zero_weight_skipped++;
                 continue;
             }
@@ -218,7 +248,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, char *err, si
                         uint64_t key = cell_key(ix, iy, iz);
                         size_t s = find_slot(keys, mask, key);
                         if (pass == 0) { keys[s] = key; part->start[s + 1]++; }
-                        else part->entries[part->start[s]++] = (uint32_t)i;
+                        else part->entries[part->start[s]++].hp = (uint32_t)i;
                     }
         }
         for (int p = 0; p < g->num_parts; p++) {
@@ -245,13 +275,28 @@ static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, si
     }
     for (size_t i = 0; i < h->n; i++) {
         grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
-        part->entries[part->num_entries++] = (uint32_t)i;
+        part->entries[part->num_entries++].hp = (uint32_t)i;
     }
     return 0;
 }
 
+/* Fill every entry's copy of its hit point's geometry. */
+static void fill_entries(grid_t *g, const hitpoints_t *h)
+{
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+        for (size_t k = 0; k < part->num_entries; k++) {
+            grid_entry_t *e = &part->entries[k];
+            const hp_hot_t *hp = &h->hot[e->hp];
+            e->px = hp->px; e->py = hp->py; e->pz = hp->pz;
+            e->nx = hp->nx; e->ny = hp->ny; e->nz = hp->nz;
+            e->pad = 0;
+        }
+    }
+}
+
 int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
-               int num_parts, char *err, size_t errlen)
+               int num_parts, int include_zero_weight, char *err, size_t errlen)
 {
     memset(g, 0, sizeof *g);
     g->kind = kind;
@@ -266,9 +311,10 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
     int rc;
     switch (kind) {
     case GRID_SMALLPPM: rc = build_smallppm(g, h, width, err, errlen); break;
-    case GRID_CELLS: rc = build_cells(g, h, width, err, errlen); break;
+    case GRID_CELLS: rc = build_cells(g, h, width, include_zero_weight, err, errlen); break;
     default: rc = build_brute(g, h, width, err, errlen); break;
     }
+    if (rc == 0) fill_entries(g, h);
     if (rc) grid_free(g);
     return rc;
 }
@@ -286,7 +332,7 @@ void grid_free(grid_t *g)
     memset(g, 0, sizeof *g);
 }
 
-const uint32_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count)
+const grid_entry_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count)
 {
     const grid_part_t *part = &g->parts[p];
     size_t b;

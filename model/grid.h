@@ -19,10 +19,19 @@
 
 typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 
+/* One candidate: a copy of the hit point's geometry, so that scanning a bucket reads memory
+ * in sequence; the changing radius stays in the hit points' compact r2 array. */
 typedef struct {
-    uint32_t *start;     /* bucket b's entries are entries[start[b] .. start[b+1]) */
-    uint32_t *entries;   /* hit-point indices */
-    uint64_t *keys;      /* GRID_CELLS: packed cell key per bucket (open addressing) */
+    double px, py, pz;   /* position */
+    double nx, ny, nz;   /* outward normal */
+    uint32_t hp;         /* hit-point index */
+    uint32_t pad;
+} grid_entry_t;
+
+typedef struct {
+    uint32_t *start;       /* bucket b's entries are entries[start[b] .. start[b+1]) */
+    grid_entry_t *entries;
+    uint64_t *keys;        /* GRID_CELLS: packed cell key per bucket (open addressing) */
     size_t num_entries;
 } grid_part_t;
 
@@ -53,13 +62,16 @@ static inline int grid_owner(const hitpoints_t *h, size_t i, int width, int num_
     return (int)((h->pixel[i] / width / 8) % num_parts);
 }
 
+/* Build the grid. include_zero_weight: list hit points of weight zero too (GRID_CELLS
+ * leaves them out otherwise; the other kinds always list them). */
 int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
-               int num_parts, char *err, size_t errlen);
+               int num_parts, int include_zero_weight, char *err, size_t errlen);
+
 void grid_free(grid_t *g);
 
 /* The candidate list of part p for a photon at x: *count entries, or NULL/0 when the
  * photon's cell holds no hit point of that part. */
-const uint32_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count);
+const grid_entry_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count);
 
 /* Whether any hit point (of any part) could be near a photon at x. */
 int grid_has_cell(const grid_t *g, vec3 x);

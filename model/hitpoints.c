@@ -16,7 +16,9 @@ static int reserve(hitpoints_t *h, size_t need)
     if (f) h->flux = f;
     int32_t *p = realloc(h->pixel, cap * sizeof *p);
     if (p) h->pixel = p;
-    if (!hot || !w || !f || !p) return -1;
+    double *r2 = realloc(h->r2, cap * sizeof *r2);
+    if (r2) h->r2 = r2;
+    if (!hot || !w || !f || !p || !r2) return -1;
     h->cap = cap;
     return 0;
 }
@@ -24,7 +26,8 @@ static int reserve(hitpoints_t *h, size_t need)
 int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel)
 {
     if (reserve(h, h->n + 1)) return -1;
-    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0.0, 0, 0};
+    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0, 0};
+    h->r2[h->n] = 0.0;
     h->hot[h->n] = hot;
     h->weight[h->n] = weight;
     h->flux[h->n] = v3(0, 0, 0);
@@ -40,6 +43,7 @@ int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src)
     memcpy(dst->weight + dst->n, src->weight, src->n * sizeof *src->weight);
     memcpy(dst->flux + dst->n, src->flux, src->n * sizeof *src->flux);
     memcpy(dst->pixel + dst->n, src->pixel, src->n * sizeof *src->pixel);
+    memcpy(dst->r2 + dst->n, src->r2, src->n * sizeof *src->r2);
     dst->n += src->n;
     return 0;
 }
@@ -51,5 +55,7 @@ void hitpoints_free(hitpoints_t *h)
     free(h->flux);
     free(h->pixel);
     free(h->fp32);
+    free(h->r2);
+    free(h->r2_f32);
     memset(h, 0, sizeof *h);
 }

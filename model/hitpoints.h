@@ -12,11 +12,10 @@
 #include "preu_fp32.h"
 #include "vec3.h"
 
-/* What the update loop reads for every candidate, kept together (one cache line). */
+/* Geometry of a hit point and its photon count (double mode). */
 typedef struct {
     double px, py, pz;   /* position */
     double nx, ny, nz;   /* outward surface normal */
-    double r2;           /* radius squared (double mode); initial radius squared (fp32 mode) */
     uint32_t count;      /* accepted photons (double mode) */
     uint32_t pad;
 } hp_hot_t;
@@ -26,6 +25,8 @@ typedef struct {
     hp_hot_t *hot;
     vec3 *weight;      /* BRDF colour times eye-path throughput */
     vec3 *flux;        /* accumulated flux tau (double mode) */
+    double *r2;        /* radius squared (double mode), compact for the distance test */
+    uint32_t *r2_f32;  /* fp32 mode: a compact copy of fp32[i].r2 for the distance test */
     int32_t *pixel;    /* pixel index y * width + x */
     preu_hp_t *fp32;   /* PREU state (fp32 mode only; NULL otherwise) */
 } hitpoints_t;

@@ -18,7 +18,7 @@ int radiance_evaluate(const hitpoints_t *h, precision_t prec, uint64_t emitted, 
         for (size_t i = h->n; i-- > 0;) {
             if (skip_zero && zero_weight(h, i)) { sk++; continue; }
             double *px = rgb + 3 * (size_t)h->pixel[i];
-            double k = 1.0 / (((PREE_PI * h->hot[i].r2) * batches) * 1000.0);
+            double k = 1.0 / (((PREE_PI * h->r2[i]) * batches) * 1000.0);
             px[0] = px[0] + h->flux[i].x * k;
             px[1] = px[1] + h->flux[i].y * k;
             px[2] = px[2] + h->flux[i].z * k;

@@ -26,13 +26,14 @@ static long peak_rss_kb(void)
 static int init_state(hitpoints_t *h, precision_t prec, double r0)
 {
     for (size_t i = 0; i < h->n; i++) {
-        h->hot[i].r2 = r0 * r0;
+        h->r2[i] = r0 * r0;
         h->hot[i].count = 0;
         h->flux[i] = v3(0, 0, 0);
     }
     if (prec != PRECISION_FP32) return 0;
     h->fp32 = malloc((h->n ? h->n : 1) * sizeof *h->fp32);
-    if (!h->fp32) return -1;
+    h->r2_f32 = malloc((h->n ? h->n : 1) * sizeof *h->r2_f32);
+    if (!h->fp32 || !h->r2_f32) return -1;
     const uint32_t r2 = preu_f32(r0 * r0);
     for (size_t i = 0; i < h->n; i++) {
         preu_hp_t *s = &h->fp32[i];
@@ -42,6 +43,7 @@ static int init_state(hitpoints_t *h, precision_t prec, double r0)
         s->tau[0] = s->tau[1] = s->tau[2] = 0;
         s->r2 = r2;
         s->n = 0;
+        h->r2_f32[i] = r2;
     }
     return 0;
 }
@@ -133,8 +135,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
     if (init_state(&res->hp, opt->precision, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-    grid_kind_t gk = opt->grid == GRID_CELLS && opt->no_skip ? GRID_CELLS : opt->grid;
-    if (res->hp.n && grid_build(&grid, gk, &res->hp, st->r0, opt->width, T, err, errlen)) goto done;
+    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, T, !skip, err, errlen)) goto done;
     st->r_safe = grid.r_safe;
     for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
     st->sec_grid = omp_get_wtime() - t;

@@ -1,33 +1,93 @@
-/* update.c: the candidate loop of the photon pass: grid look-up, tests, update. */
+/* update.c: the candidate loop of the photon pass: grid look-up, tests, update.
+ * Candidates are read from the grid's entry copies in sequence; only an accepted update
+ * touches the hit point's own state (and rewrites the radius copies). */
 #include "update.h"
 
-void update_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
+/* Double mode: the reference program's tests, normal first, then distance. */
+static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
+                        const grid_entry_t *cand, size_t count, update_stats_t *s)
+{
+    const double rs2 = g->r_safe * g->r_safe;
+    const double x = ph->x.x, y = ph->x.y, z = ph->x.z;
+    const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
+    for (size_t c = 0; c < count; c++) {
+        const grid_entry_t *e = &cand[c];
+        double vx = e->px - x, vy = e->py - y, vz = e->pz - z;
+        double v2 = vx * vx + vy * vy + vz * vz;
+        /* Radii only shrink: a candidate beyond the safe initial radius never accepts. */
+        if (skip_radius && v2 > rs2) { s->skipped_radius++; continue; }
+        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        s->normal_passed++;
+        if (v2 <= h->r2[e->hp]) {
+            update_accept_double(h, e->hp, ph->flux);
+            s->accepted++;
+        }
+    }
+}
+
+/* fp32 mode: the host's normal test in double, then the PREU datapath in binary32. The
+ * distance test reads the entry's position rounded to binary32 (= the PREU's stored
+ * position) and the compact copy of the PREU's r2, as preu_update_inline does. */
+static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
+                      const grid_entry_t *cand, size_t count, update_stats_t *s)
+{
+    const double rs2 = g->r_safe * g->r_safe;
+    const preu_photon_t ph32 = update_photon_fp32(ph);
+    const float fx = fp32_from_bits(ph32.pos[0]), fy = fp32_from_bits(ph32.pos[1]), fz = fp32_from_bits(ph32.pos[2]);
+    const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
+    for (size_t c = 0; c < count; c++) {
+        const grid_entry_t *e = &cand[c];
+        if (skip_radius) {
+            double vx = e->px - ph->x.x, vy = e->py - ph->x.y, vz = e->pz - ph->x.z;
+            if (vx * vx + vy * vy + vz * vz > rs2) { s->skipped_radius++; continue; }
+        }
+        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        s->normal_passed++;
+        float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
+        float d2 = (dx * dx + dy * dy) + dz * dz;
+        if (!(d2 <= fp32_from_bits(h->r2_f32[e->hp]))) continue;
+        preu_update_accepted(&h->fp32[e->hp], &ph32);
+        h->r2_f32[e->hp] = h->fp32[e->hp].r2;
+        s->accepted++;
+    }
+}
+
+/* Look-ups run this many photon hits ahead of the scan, with their first entries and
+ * radii prefetched: the loop is bound by memory latency, not arithmetic. */
+#define LOOKAHEAD 8
+
+typedef struct { const grid_entry_t *cand; size_t count; } lookup_t;
+
+static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const lookup_t *l)
+{
+    for (size_t c = 0; c < l->count && c < 4; c++) {
+        __builtin_prefetch(&l->cand[c]);
+        if (prec == PRECISION_DOUBLE) __builtin_prefetch(&h->r2[l->cand[c].hp]);
+    }
+}
+
+void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
                  const photon_hit_t *hits, size_t n, update_stats_t *st)
 {
     update_stats_t s = *st;
-    const double rs2 = g->r_safe * g->r_safe;
+    lookup_t ring[LOOKAHEAD];
+    for (size_t k = 0; k < n && k < LOOKAHEAD; k++) {
+        ring[k].cand = grid_lookup(g, p, hits[k].x, &ring[k].count);
+        if (ring[k].count) __builtin_prefetch(ring[k].cand);
+    }
     for (size_t k = 0; k < n; k++) {
-        const photon_hit_t *ph = &hits[k];
-        size_t count;
-        const uint32_t *cand = grid_lookup(g, p, ph->x, &count);
-        s.candidates += count;
-        preu_photon_t ph32;
-        if (prec == PRECISION_FP32 && count) ph32 = update_photon_fp32(ph);
-        for (size_t c = 0; c < count; c++) {
-            const uint32_t e = cand[c];
-            hp_hot_t *hp = &h->hot[e];
-            double vx = hp->px - ph->x.x, vy = hp->py - ph->x.y, vz = hp->pz - ph->x.z;
-            double v2 = vx * vx + vy * vy + vz * vz;
-            /* Radii only shrink: a candidate beyond the safe initial radius never accepts. */
-            if (skip_radius && v2 > rs2) { s.skipped_radius++; continue; }
-            if (!(hp->nx * ph->n.x + hp->ny * ph->n.y + hp->nz * ph->n.z > UPDATE_NORMAL_COS)) continue;
-            s.normal_passed++;
-            if (prec == PRECISION_DOUBLE) {
-                if (v2 <= hp->r2) { update_accept_double(h, e, ph->flux); s.accepted++; }
-            } else {
-                s.accepted += (unsigned long long)preu_update_inline(&h->fp32[e], &ph32);
-            }
+        lookup_t cur = ring[k % LOOKAHEAD];
+        if (k + LOOKAHEAD < n) {
+            lookup_t *next = &ring[k % LOOKAHEAD];
+            next->cand = grid_lookup(g, p, hits[k + LOOKAHEAD].x, &next->count);
+            prefetch_lookup(h, prec, next);
         }
+        const grid_entry_t *cand = cur.cand;
+        size_t count = cur.count;
+        s.candidates += count;
+        if (!count) continue;
+        if (prec == PRECISION_DOUBLE) scan_double(h, g, p, skip_radius, &hits[k], cand, count, &s);
+        else scan_fp32(h, g, p, skip_radius, &hits[k], cand, count, &s);
     }
     *st = s;
 }

@@ -24,7 +24,7 @@ typedef struct {
 typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
 
 /* Apply hits[0..n) to the hit points of part p. */
-void update_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
+void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
                  const photon_hit_t *hits, size_t n, update_stats_t *st);
 
 /* The reference program's double update of one hit point by flux F. */
@@ -32,7 +32,7 @@ static inline void update_accept_double(hitpoints_t *h, size_t e, vec3 F)
 {
     hp_hot_t *hp = &h->hot[e];
     double g = (hp->count * UPDATE_ALPHA + UPDATE_ALPHA) / (hp->count * UPDATE_ALPHA + 1.0);
-    hp->r2 = hp->r2 * g;
+    h->r2[e] = h->r2[e] * g;
     hp->count++;
     h->flux[e] = v3_scale(v3_add(h->flux[e], v3_scale(v3_mul(h->weight[e], F), 1. / PREE_PI)), g);
 }
