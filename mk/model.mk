@@ -5,6 +5,7 @@ MODEL_C   := $(filter-out model/main.c,$(wildcard model/*.c))
 MODEL_CXX := $(wildcard model/*.cpp)
 MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o) $(MODEL_CXX:%.cpp=$(BUILD)/%.o)
 LIBPREE   := $(BUILD)/libpree.a
+LDLIBS    += -lassimp -lz
 
 UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)

@@ -1,6 +1,7 @@
-/* photon_pass.c: photons from point lights through diffuse, mirror and glass bounces. */
+/* photon_pass.c: photons from point and area lights through diffuse, mirror and glass bounces. */
 #include <stdlib.h>
 #include "halton.h"
+#include "mesh_light.h"
 #include "optics.h"
 #include "photon_pass.h"
 
@@ -64,17 +65,29 @@ static int photon_segment(photon_ctx_t *c, vec3 o, vec3 d, int depth, vec3 flux)
     return 0;
 }
 
+/* Halton dimensions of the area-light position: above every bounce's (depth <= 19 uses at
+ * most dimension 58), so a photon's path numbers are the same as from a point light. */
+#define AREA_DIM_TRI 59
+#define AREA_DIM_POS 60
+
 int photon_trace(const scene_t *scene, const tracer_t *tr, uint64_t i, photon_hits_t *out)
 {
     const int nl = scene->num_lights;
-    const point_light_t *light = &scene->lights[i % (uint64_t)nl];
+    const light_t *light = &scene->lights[i % (uint64_t)nl];
     vec3 flux = nl == 1 ? light->flux : v3_scale(light->flux, (double)nl);
+    photon_ctx_t c = {scene, tr, out, i};
+    if (light->kind == LIGHT_AREA) {
+        /* Uniform over the area, cosine-weighted about the front normal. */
+        vec3 o, d;
+        mesh_light_sample(light, halton(AREA_DIM_TRI, (long long)i), halton(AREA_DIM_POS, (long long)i),
+                          halton(0, (long long)i), halton(1, (long long)i), &o, &d);
+        return photon_segment(&c, o, d, 0, flux);
+    }
     /* Uniform direction on the sphere from Halton dimensions 0 and 1. */
     double phi = 2. * PREE_PI * halton(0, (long long)i);
     double theta = 2. * acos(sqrt(1. - halton(1, (long long)i)));
     double st = sin(theta);
     vec3 d = v3(cos(phi) * st, cos(theta), sin(phi) * st);
-    photon_ctx_t c = {scene, tr, out, i};
     return photon_segment(&c, light->position, d, 0, flux);
 }
 

@@ -33,7 +33,23 @@ typedef struct {
     size_t num_vertices, num_triangles;
 } mesh_t;
 
-typedef struct { vec3 position; vec3 flux; } point_light_t;
+typedef enum { LIGHT_POINT = 0, LIGHT_AREA = 1 } light_kind_t;
+
+/* One emitting triangle of an area light: corner p0, edges e1 = p1 - p0 and e2 = p2 - p0,
+ * unit front normal n = normalize(e1 x e2) (counter-clockwise side), and the cumulative
+ * share of the light's area up to and including this triangle (the last one is exactly 1). */
+typedef struct { vec3 p0, e1, e2, n; double cdf; } light_tri_t;
+
+/* A point light (position, flux), or an area light: Lambertian emitting triangles with
+ * total flux 'flux' (radiance * pi * area), emitting from their front faces only. */
+typedef struct {
+    light_kind_t kind;
+    vec3 position;      /* point lights */
+    vec3 flux;
+    light_tri_t *tris;  /* area lights */
+    size_t num_tris;
+    double area;
+} light_t;
 
 typedef struct {
     vec3 origin, dir;   /* dir as written; normalised by the camera code */
@@ -49,7 +65,7 @@ typedef struct {
     material_t *materials; int num_materials;
     sphere_t *spheres;     int num_spheres;
     mesh_t *meshes;        int num_meshes;
-    point_light_t *lights; int num_lights;
+    light_t *lights;       int num_lights;
     int max_depth;         /* path length limit (default 20) */
     /* What the scene contains, so that the engine can skip what it does not need. */
     int has_mirror, has_glass, has_diffuse;

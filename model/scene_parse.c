@@ -10,6 +10,7 @@
 #include <string.h>
 #include "scene.h"
 #include "mesh_load.h"
+#include "mesh_light.h"
 
 #define MAX_TOKENS 64
 
@@ -193,22 +194,46 @@ static int parse_sphere(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     return 1;
 }
 
+/* light triangle X Y Z X Y Z X Y Z radiance|flux R G B: one emitting triangle (front face =
+ * counter-clockwise side); it is a light only, not geometry. */
+static int parse_light_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    if (need(pc, ntok, 15, "light triangle X Y Z X Y Z X Y Z radiance|flux R G B")) return -1;
+    if (ntok > 15) return fail(pc, "light: unexpected '%s'", tok[15]);
+    vec3 p[3], v;
+    for (int k = 0; k < 3; k++)
+        if (parse_vec(pc, tok + 2 + 3 * k, &p[k])) return -1;
+    if (parse_vec(pc, tok + 12, &v)) return -1;
+    if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
+    int is_flux;
+    if (!strcmp(tok[11], "radiance")) is_flux = 0;
+    else if (!strcmp(tok[11], "flux")) is_flux = 1;
+    else return fail(pc, "light: expected 'radiance' or 'flux', found '%s'", tok[11]);
+    char e[256];
+    if (mesh_light_add(s, p, 1, v, is_flux, e, sizeof e)) return fail(pc, "%s", e);
+    return 1;
+}
+
 /* light point X Y Z intensity R G B   (flux = intensity * 4 pi)
- * light point X Y Z flux R G B */
+ * light point X Y Z flux R G B
+ * light triangle X Y Z X Y Z X Y Z radiance|flux R G B   (area light, docs: "Lights") */
 static int parse_light(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
+    if (ntok >= 2 && !strcmp(tok[1], "triangle")) return parse_light_triangle(pc, s, tok, ntok);
     const char *usage = "light point X Y Z intensity|flux R G B";
     if (need(pc, ntok, 9, usage)) return -1;
-    if (strcmp(tok[1], "point")) return fail(pc, "unknown light kind '%s' (point)", tok[1]);
+    if (strcmp(tok[1], "point")) return fail(pc, "unknown light kind '%s' (point or triangle)", tok[1]);
     if (ntok > 9) return fail(pc, "light: unexpected '%s'", tok[9]);
-    point_light_t l;
+    light_t l;
+    memset(&l, 0, sizeof l);
+    l.kind = LIGHT_POINT;
     vec3 v;
     if (parse_vec(pc, tok + 2, &l.position) || parse_vec(pc, tok + 6, &v)) return -1;
     if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
     if (!strcmp(tok[5], "intensity")) l.flux = v3_scale(v, PREE_PI * 4.0);
     else if (!strcmp(tok[5], "flux")) l.flux = v;
     else return fail(pc, "light: expected 'intensity' or 'flux', found '%s'", tok[5]);
-    point_light_t *arr = grow(s->lights, s->num_lights, sizeof *arr);
+    light_t *arr = grow(s->lights, s->num_lights, sizeof *arr);
     if (!arr) return fail(pc, "out of memory");
     s->lights = arr;
     arr[s->num_lights++] = l;
@@ -326,6 +351,7 @@ void scene_free(scene_t *s)
     free(s->meshes);
     free(s->materials);
     free(s->spheres);
+    for (int i = 0; i < s->num_lights; i++) free(s->lights[i].tris);
     free(s->lights);
     memset(s, 0, sizeof *s);
 }
