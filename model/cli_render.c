@@ -98,7 +98,6 @@ int pree_cmd_render(int argc, char **argv)
     sa.sa_handler = on_sigint;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
-    opt.progress = opt.progress && isatty(2) ? 1 : opt.progress;
     render_result_t res;
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
     if (rc < 0) {

@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <unistd.h>
 #include "photon_pass.h"
 #include "radiance.h"
 #include "render.h"
@@ -83,14 +84,40 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
     return failed ? -1 : 0;
 }
 
-static void progress(const render_options_t *opt, uint64_t done, uint64_t total, double t0)
+static void progress(const render_options_t *opt, uint64_t done, uint64_t total, double t0, int *last_decile)
 {
     if (!opt->progress) return;
+    const int tty = isatty(2);
+    const int decile = (int)(10 * done / total);
+    if (!tty && decile == *last_decile) return;
+    *last_decile = decile;
     double el = omp_get_wtime() - t0;
-    fprintf(stderr, "\rpree: photons %llu/%llu (%3.0f%%) %.1fs", (unsigned long long)done,
-            (unsigned long long)total, 100.0 * (double)done / (double)total, el);
-    if (done == total) fputc('\n', stderr);
+    fprintf(stderr, "%spree: photons %llu/%llu (%3.0f%%) %.1fs%s", tty ? "\r" : "", (unsigned long long)done,
+            (unsigned long long)total, 100.0 * (double)done / (double)total, el, tty && done < total ? "" : "\n");
     fflush(stderr);
+}
+
+static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
+{
+    const unsigned char *p = data;
+    for (size_t i = 0; i < n; i++) { h ^= p[i]; h *= 0x100000001b3ull; }
+    return h;
+}
+
+/* Hashes of the image and of the final hit-point state, for determinism checks. */
+static void hash_results(render_result_t *res, precision_t prec)
+{
+    const uint64_t basis = 0xcbf29ce484222325ull;
+    const hitpoints_t *h = &res->hp;
+    res->stats.image_hash = fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
+    uint64_t s = basis;
+    if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
+    else {
+        s = fnv1a(s, h->r2, h->n * sizeof *h->r2);
+        s = fnv1a(s, h->flux, h->n * sizeof *h->flux);
+        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->hot[i].count, sizeof h->hot[i].count);
+    }
+    res->stats.state_hash = s;
 }
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
@@ -146,7 +173,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     update_stats_t *ust = calloc((size_t)T, sizeof *ust);
     if (!ust) { snprintf(err, errlen, "out of memory"); goto done; }
     const double t_photons = omp_get_wtime();
-    int interrupted = 0;
+    int interrupted = 0, last_decile = 0;
     while (done_photons < emitted_target && res->hp.n) {
         uint64_t count = emitted_target - done_photons;
         if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
@@ -171,7 +198,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
             bb->chunk[c].segments = 0;
         }
         done_photons += count;
-        progress(opt, done_photons, emitted_target, t_photons);
+        progress(opt, done_photons, emitted_target, t_photons, &last_decile);
         if (opt->interrupt && *opt->interrupt && done_photons < emitted_target) {
             /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
             interrupted = 1;
@@ -197,6 +224,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         goto done;
     }
     st->sec_radiance = omp_get_wtime() - t;
+    hash_results(res, opt->precision);
     rc = interrupted ? 1 : 0;
 done:
     if (bb) {

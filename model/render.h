@@ -22,7 +22,7 @@ typedef struct {
     grid_kind_t grid;
     int threads;             /* 0: OpenMP's default */
     int no_skip;             /* 1: disable the skips (for proving them harmless) */
-    int progress;            /* 1: progress lines on stderr */
+    int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
 } render_options_t;
 
@@ -36,6 +36,8 @@ typedef struct {
     double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_radiance, sec_total;
     long peak_rss_kb;
     int threads;
+    uint64_t image_hash;     /* FNV-1a over the pixels' double bits */
+    uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words) */
 } render_stats_t;
 
 typedef struct {

@@ -42,6 +42,8 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
     fprintf(f, "  \"hpuo_normal_passed\": %llu,\n  \"hpuo_accepted\": %llu,\n", st->upd.normal_passed, st->upd.accepted);
     fprintf(f, "  \"skip_radiance_zero_weight\": %llu,\n", st->radiance_skipped);
     fprintf(f, "  \"peak_rss_kib\": %ld,\n", st->peak_rss_kb);
+    fprintf(f, "  \"image_hash\": \"%016llx\",\n  \"state_hash\": \"%016llx\",\n",
+            (unsigned long long)st->image_hash, (unsigned long long)st->state_hash);
     fprintf(f, "  \"update_mcand_per_s\": %.3f,\n", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
     fprintf(f, "  \"seconds\": {\"bvh\": %.6f, \"eye\": %.6f, \"grid\": %.6f, \"trace\": %.6f, \"update\": %.6f, "
                "\"radiance\": %.6f, \"total\": %.6f}\n}\n",
