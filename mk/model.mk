@@ -29,7 +29,7 @@ $(BUILD)/pree: $(BUILD)/model/main.o $(LIBPREE)
 
 $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -Itests/unit -c $< -o $@.o
+	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
 	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
