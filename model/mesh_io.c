@@ -33,7 +33,17 @@ static int read_gz(const char *path, mesh_blob_t *out, char *err, size_t errlen)
             rc = -1;
             break;
         }
-        if (got == 0) break;
+        if (got == 0) {
+            int zerr;
+            const char *m = gzerror(f, &zerr);
+            if (zerr != Z_OK && zerr != Z_STREAM_END) {   /* e.g. a truncated gzip stream */
+                size_t pl = strlen(path);   /* zlib's message starts with "PATH: " */
+                if (m && !strncmp(m, path, pl) && m[pl] == ':') m += pl + 2;
+                snprintf(err, errlen, "%s: %s", path, m && *m ? m : "corrupt gzip data");
+                rc = -1;
+            }
+            break;
+        }
         n += (size_t)got;
     }
     gzclose(f);

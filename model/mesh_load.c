@@ -342,7 +342,13 @@ int mesh_load_directive(scene_t *scene, const char *scene_file, char **tok, int 
     snprintf(vpath, sizeof vpath, "%s", o.path);
     if (ends_with(vpath, ".gz")) vpath[strlen(vpath) - 3] = '\0';
     const int is_obj = ends_with(vpath, ".obj");
-    if (is_obj && mesh_obj_check(o.path, &blob, o.material < 0, NULL, err, errlen)) { mesh_blob_free(&blob); return -1; }
+    mesh_obj_counts_t counts;
+    if (is_obj && mesh_obj_check(o.path, &blob, o.material < 0, &counts, err, errlen)) { mesh_blob_free(&blob); return -1; }
+    if (is_obj && counts.faces == 0) {
+        snprintf(err, errlen, "%s: no faces (an empty mesh)", o.path);
+        mesh_blob_free(&blob);
+        return -1;
+    }
 
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                      aiProcess_SortByPType | aiProcess_ValidateDataStructure;

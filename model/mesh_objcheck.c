@@ -224,7 +224,8 @@ int mesh_obj_check(const char *path, const mesh_blob_t *obj, int need_mtl, mesh_
         } else if (!strcmp(k, "mtllib") && need_mtl) {
             for (int i = 1; i < L.ntok && rc == 0; i++) {
                 char mp[8192];
-                snprintf(mp, sizeof mp, "%s/%s", dir, L.tok[i]);
+                if (strchr(path, '/')) snprintf(mp, sizeof mp, "%s/%s", dir, L.tok[i]);
+                else snprintf(mp, sizeof mp, "%s", L.tok[i]);
                 mesh_blob_t m;
                 char e[512];
                 if (mesh_read_file(mp, &m, e, sizeof e)) { rc = fail(err, errlen, path, L.line, "material library: %s", e); break; }
