@@ -1,0 +1,99 @@
+# The IEEE-754 binary32 units (rtl/pree_fp32_*.v): Verilator benches, Icarus testbenches over
+# vector files, lint and Yosys synthesis. Documented in docs/fp32_units.md.
+#
+#   make sim-fp32          quick level: Verilator (directed + FP32_QUICK random per unit) and
+#                          Icarus (directed + FP32_IV_QUICK random per unit); part of `make sim`
+#   make sim-fp32-full     thorough level: FP32_FULL random per unit in Verilator (>= 10 million)
+#                          and FP32_IV_FULL per unit in Icarus
+#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp)
+#   make lint-fp32         verilator --lint-only -Wall on every unit
+#   make synth-fp32        yosys synth_xilinx per unit, latch and loop checks, resource table
+#                          in $(BUILD)/fp32/synth/resources.md
+
+FP32_UNITS    := add mul sqr div cmp
+FP32_DIR      := $(BUILD)/fp32
+FP32_RTL      := $(wildcard rtl/pree_fp32_*.v)
+FP32_QUICK    ?= 1000000
+FP32_FULL     ?= 10000000
+FP32_IV_QUICK ?= 20000
+FP32_IV_FULL  ?= 200000
+FP32_SEED     ?= 1
+FP32_CFLAGS   := -std=c11 -D_GNU_SOURCE -O2 $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel -Itb/fp32
+FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/fp32_ops.h
+
+FP32_VL_BIN := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/vl_$(u)/fp32_bench_$(u))
+FP32_IV_SIM := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/tb_fp32_$(u).vvp)
+
+TEST_PREREQS  += $(FP32_VL_BIN) $(FP32_IV_SIM) $(FP32_DIR)/fp32_vecgen
+LINT_TARGETS  += lint-fp32
+SYNTH_TARGETS += synth-fp32
+SIM_TARGETS   += sim-fp32
+
+.PHONY: sim-fp32 sim-fp32-full lint-fp32 synth-fp32
+
+# The case generator (shared by both simulators) and the Icarus vector writer: C11, with the
+# bit-exactness flags of the model, since the reference is host float arithmetic.
+$(FP32_DIR)/fp32_gen.o: tb/fp32/fp32_gen.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(FP32_CFLAGS) -c $< -o $@
+
+$(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
+	$(CC) $(FP32_CFLAGS) $< $(FP32_DIR)/fp32_gen.o -o $@ -lm
+
+# Per unit: Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation,
+# quick and full runs. --x-assign/--x-initial unique: no reliance on X or initial values.
+define FP32_UNIT_RULES
+$(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
+	@mkdir -p $$(@D)
+	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique \
+	  -Mdir $(FP32_DIR)/vl_$(1) --top-module pree_fp32_$(1) -y rtl rtl/pree_fp32_$(1).v \
+	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
+	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(1) | tr a-z A-Z) -I$(abspath tb/fp32) -I$(abspath model)" \
+	  -o fp32_bench_$(1) > $(FP32_DIR)/vl_$(1).build.log 2>&1 \
+	  || { tail -30 $(FP32_DIR)/vl_$(1).build.log; exit 1; }
+
+$(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	iverilog -g2005 -Wall $(if $(filter cmp,$(1)),,-DUNIT_$(shell echo $(1) | tr a-z A-Z)) \
+	  -o $$@ -y rtl $(if $(filter cmp,$(1)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
+	  rtl/pree_fp32_$(1).v
+
+.PHONY: sim-fp32-vl-$(1) sim-fp32-iv-$(1) sim-fp32-full-vl-$(1) sim-fp32-full-iv-$(1)
+sim-fp32-vl-$(1): $(FP32_DIR)/vl_$(1)/fp32_bench_$(1)
+	$$< $(FP32_QUICK) $(FP32_SEED)
+
+sim-fp32-full-vl-$(1): $(FP32_DIR)/vl_$(1)/fp32_bench_$(1)
+	$$< $(FP32_FULL) $(FP32_SEED)
+
+sim-fp32-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
+	$(FP32_DIR)/fp32_vecgen $(1) $(FP32_IV_QUICK) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_quick.txt
+	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_quick.txt +seed=$(FP32_SEED)
+
+sim-fp32-full-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
+	$(FP32_DIR)/fp32_vecgen $(1) $(FP32_IV_FULL) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_full.txt
+	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_full.txt +seed=$(FP32_SEED)
+endef
+$(foreach u,$(FP32_UNITS),$(eval $(call FP32_UNIT_RULES,$(u))))
+
+sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
+sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u))
+
+# Lint: every unit as a top, with the helpers it instantiates; warnings are errors.
+lint-fp32: | $(DEPS_STAMP)
+	@set -e; for u in $(FP32_UNITS); do \
+	  echo "verilator --lint-only -Wall -y rtl --top-module pree_fp32_$$u rtl/pree_fp32_$$u.v"; \
+	  verilator --lint-only -Wall -y rtl --top-module pree_fp32_$$u rtl/pree_fp32_$$u.v; \
+	done
+
+# Synthesis: one Yosys run per unit (scripts/fp32_synth.sh), then the resource/depth table.
+synth-fp32: | $(DEPS_STAMP)
+	@set -e; mkdir -p $(FP32_DIR)/synth; \
+	{ echo "| unit | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | LUT levels per stage | cells on longest path per stage |"; \
+	  echo "|---|---|---|---|---|---|---|---|"; } > $(FP32_DIR)/synth/resources.md.tmp; \
+	for u in $(FP32_UNITS); do \
+	  echo "scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; \
+	  scripts/fp32_synth.sh $$u $(FP32_DIR)/synth >/dev/null || { echo "synth-fp32: $$u failed; rerun: scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; exit 1; }; \
+	  cat $(FP32_DIR)/synth/$$u.row >> $(FP32_DIR)/synth/resources.md.tmp; \
+	done; \
+	mv $(FP32_DIR)/synth/resources.md.tmp $(FP32_DIR)/synth/resources.md; \
+	cat $(FP32_DIR)/synth/resources.md

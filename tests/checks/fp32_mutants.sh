@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# The fp32 benches can fail: each mutant below breaks one rule of the binary32 units (tie
+# rounding, signed zero, NaN priority, subnormal shift, latency, -0 == +0) in a copy of rtl/,
+# and the Verilator bench of the affected unit must then report mismatches and exit non-zero.
+# A mutant that passes its bench fails this check.
+set -u
+cd "$(dirname "$0")/../.."
+make --no-print-directory -s build/fp32/fp32_gen.o >/dev/null || { echo "FAILED: make build/fp32/fp32_gen.o"; exit 1; }
+work=build/fp32/mutants
+rm -rf "$work"; mkdir -p "$work"
+fail=0
+
+# unit @ file @ sed expression @ what it breaks
+mutants=(
+  "mul@pree_fp32_round.v@s/wire inc   = guard \& (rest | lsb);/wire inc   = guard;/@ties away from zero"
+  "add@pree_fp32_add.v@s/s1_zero_sign_q <= sign_l \& sign_s;/s1_zero_sign_q <= sign_l;/@x - x = -0 for negative x"
+  "div@pree_fp32_div.v@s/if (nan_a) /if (nan_a \&\& !nan_b) /@NaN priority a before b"
+  "div@pree_fp32_round.v@s/11'd1 - {exp_i\[9\], exp_i}/11'd2 - {exp_i[9], exp_i}/@subnormal shift off by one"
+  "sqr@pree_fp32_sqr.v@s/assign valid_o = valid_q\[LATENCY-1\];/assign valid_o = valid_q[0];/@latency 1 instead of 2"
+  "cmp@pree_fp32_cmp.v@s/wire eq_num    = both_zero | /wire eq_num    = /@-0 == +0"
+)
+
+i=0
+for m in "${mutants[@]}"; do
+  IFS='@' read -r unit file expr what <<<"$m"
+  i=$((i + 1)); dir=$work/m$i
+  mkdir -p "$dir/rtl"; cp rtl/pree_fp32_*.v "$dir/rtl/"
+  sed -i "$expr" "$dir/rtl/$file"
+  if cmp -s "rtl/$file" "$dir/rtl/$file"; then
+    echo "mutant $i ($what): the edit did not apply to rtl/$file"; fail=1; continue
+  fi
+  U=$(echo "$unit" | tr a-z A-Z)
+  build=(verilator --cc --exe --build -O0 -j 1 -Mdir "$dir/vl" --top-module "pree_fp32_$unit"
+         -y "$dir/rtl" "$dir/rtl/pree_fp32_$unit.v" "$PWD/tb/fp32/fp32_bench.cpp" "$PWD/build/fp32/fp32_gen.o"
+         -CFLAGS "-O0 -DFP32_UNIT_$U -I$PWD/tb/fp32 -I$PWD/model" -o bench)
+  if ! "${build[@]}" >"$dir/build.log" 2>&1; then
+    echo "mutant $i ($what): build failed, see $dir/build.log"; fail=1; continue
+  fi
+  if "$dir/vl/bench" 100000 1 >"$dir/run.log" 2>&1; then
+    echo "mutant $i ($what) in $unit: NOT detected; reproduce: ${build[*]} && $dir/vl/bench 100000 1"
+    fail=1
+  else
+    echo "mutant $i ($what) in $unit: detected: $(tail -2 "$dir/run.log" | head -1)"
+  fi
+done
+[ $fail -eq 0 ] || echo "FAILED: reproduce with: bash tests/checks/fp32_mutants.sh"
+exit $fail
