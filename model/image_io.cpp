@@ -19,11 +19,12 @@ using OIIO::TypeDesc;
 // Put "path: what: why" into err as one line (newlines in OIIO's messages become "; ").
 static int fail(char *err, size_t errlen, const char *path, const char *what, std::string why)
 {
+    if (why.empty()) why = OIIO::geterror();   // some readers report only globally
     if (err && errlen) {
         while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
         for (size_t i = 0; i < why.size(); i++)
             if (why[i] == '\n') why.replace(i, 1, "; ");
-        if (why.empty()) why = "unknown OpenImageIO error";
+        if (why.empty()) why = "truncated or malformed (OpenImageIO gave no reason)";
         std::snprintf(err, errlen, "%s: %s: %s", path, what, why.c_str());
     }
     return -1;
@@ -38,6 +39,9 @@ extern "C" int pree_oiio_write(const char *path, const char *format, int w, int 
         if (!out) return fail(err, errlen, path, "no image writer", OIIO::geterror());
         const TypeDesc type = is_float ? TypeDesc::FLOAT : TypeDesc::UINT8;
         ImageSpec spec(w, h, 3, type);
+        // No time stamp (OpenImageIO stamps EXR files with the time otherwise): identical pixels
+        // give identical files.
+        spec.attribute("DateTime", "");
         if (!out->open(path, spec))
             return fail(err, errlen, path, "cannot open for writing", out->geterror());
         if (!out->write_image(type, pixels)) {

@@ -138,6 +138,27 @@ static void test_round_trips(void **state)
     assert_int_equal(count_entries(*state), 4);   /* rt.ppm rt.png rt.PNG rt.exr, no temporaries */
 }
 
+/* The same pixels give the same file bytes: no time stamp in the EXR header. */
+static void test_files_reproducible(void **state)
+{
+    const double rgb[3 * 6] = {0.1, 0.2, 0.3, 1.0, 2.0, 3.0, 0.0, 0.5, 7.0, 0.25, 0.125, 1e-4, 9.0, 0.0, 1.0, 0.3, 0.3, 0.3};
+    const char *exts[] = {"png", "exr"};
+    for (int e = 0; e < 2; e++) {
+        char p1[256], p2[256], err[512] = "";
+        snprintf(p1, sizeof p1, "%s/one.%s", (char *)*state, exts[e]);
+        snprintf(p2, sizeof p2, "%s/two.%s", (char *)*state, exts[e]);
+        assert_int_equal(pree_image_write(p1, 3, 2, rgb, err, sizeof err), 0);
+        assert_int_equal(pree_image_write(p2, 3, 2, rgb, err, sizeof err), 0);
+        size_t n1, n2;
+        char *b1 = slurp(p1, &n1), *b2 = slurp(p2, &n2);
+        assert_int_equal(n1, n2);
+        assert_memory_equal(b1, b2, n1);
+        assert_null(memmem(b1, n1, "DateTime", 8));
+        free(b1);
+        free(b2);
+    }
+}
+
 /* Failing writes return -1, name the file, and leave no file and no temporary behind. */
 static void test_atomic_failures(void **state)
 {
@@ -214,6 +235,17 @@ static void test_read_errors(void **state)
     assert_null(img.rgb);
     assert_non_null(strstr(err, path));
     assert_null(strchr(err, '\n'));
+
+    /* A PPM whose pixels stop early. */
+    snprintf(path, sizeof path, "%s/short.ppm", (char *)*state);
+    f = fopen(path, "wb");
+    fputs("P3\n4 4\n255\n1 2 3 4 5 6 ", f);
+    fclose(f);
+    err[0] = 0;
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
+    assert_null(img.rgb);
+    assert_non_null(strstr(err, path));
+    assert_null(strchr(err, '\n'));
 }
 
 static void test_alloc(void **state)
@@ -240,6 +272,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_ppm_exact_bytes, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_ppm_u8_bytes, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_round_trips, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_files_reproducible, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_atomic_failures, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_failed_write_keeps_old_file, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_read_errors, make_dir, remove_dir),
