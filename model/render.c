@@ -127,7 +127,11 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     render_stats_t *st = &res->stats;
     const double t_start = omp_get_wtime();
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
-    const int T = omp_get_max_threads();
+    const int T = opt->sink ? 1 : omp_get_max_threads();
+    if (opt->sink && opt->precision != PRECISION_FP32) {
+        snprintf(err, errlen, "co-simulation needs --precision fp32");
+        return -1;
+    }
     st->threads = T;
     const int skip = !opt->no_skip && opt->grid == GRID_CELLS;
     const size_t npix = (size_t)opt->width * (size_t)opt->height;
@@ -164,6 +168,10 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     if (init_state(&res->hp, opt->precision, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
     if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, T, !skip, err, errlen)) goto done;
     st->r_safe = grid.r_safe;
+    if (opt->begin && opt->begin(opt->sink->user, &res->hp, render_emitted(opt->photons))) {
+        snprintf(err, errlen, "the co-simulation could not start");
+        goto done;
+    }
     for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
     st->sec_grid = omp_get_wtime() - t;
 
@@ -189,7 +197,12 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         {
             const int p = omp_get_thread_num();
             for (unsigned c = 0; c < TRACE_CHUNKS; c++)
-                update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p]);
+                update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p], opt->sink);
+        }
+        if (opt->sink && opt->sink->failed) {
+            snprintf(err, errlen, "the co-simulation stopped");
+            free(ust);
+            goto done;
         }
         st->sec_update += omp_get_wtime() - t;
         for (unsigned c = 0; c < TRACE_CHUNKS; c++) {

@@ -24,6 +24,11 @@ typedef struct {
     int no_skip;             /* 1: disable the skips (for proving them harmless) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
+    /* Co-simulation: with a sink (fp32 precision only), the update runs on one thread and
+     * every photon hit's PREE operations are handed to sink->fn in photon order; begin
+     * (if set) sees the hit points with their initial PREU state first. */
+    update_sink_t *sink;
+    int (*begin)(void *user, const hitpoints_t *hp, uint64_t photons_to_emit);
 } render_options_t;
 
 typedef struct {

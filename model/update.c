@@ -1,6 +1,7 @@
 /* update.c: the candidate loop of the photon pass: grid look-up, tests, update.
  * Candidates are read from the grid's entry copies in sequence; only an accepted update
  * touches the hit point's own state (and rewrites the radius copies). */
+#include <stdlib.h>
 #include "update.h"
 
 /* Double mode: the reference program's tests, normal first, then distance. */
@@ -29,8 +30,15 @@ static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const
  * distance test reads the entry's position rounded to binary32 (= the PREU's stored
  * position) and the compact copy of the PREU's r2, as preu_update_inline does. */
 static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
-                      const grid_entry_t *cand, size_t count, update_stats_t *s)
+                      const grid_entry_t *cand, size_t count, update_stats_t *s, update_sink_t *sink)
 {
+    size_t streamed = 0;
+    if (sink && sink->cap < count) {
+        uint32_t *b = realloc(sink->buf, count * sizeof *b);
+        if (!b) { sink->failed = 1; return; }
+        sink->buf = b;
+        sink->cap = count;
+    }
     const double rs2 = g->r_safe * g->r_safe;
     const preu_photon_t ph32 = update_photon_fp32(ph);
     const float fx = fp32_from_bits(ph32.pos[0]), fy = fp32_from_bits(ph32.pos[1]), fz = fp32_from_bits(ph32.pos[2]);
@@ -43,6 +51,7 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
         }
         if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
+        if (sink) sink->buf[streamed++] = e->hp;
         float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (!(d2 <= fp32_from_bits(h->r2_f32[e->hp]))) continue;
@@ -50,6 +59,7 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
         h->r2_f32[e->hp] = h->fp32[e->hp].r2;
         s->accepted++;
     }
+    if (sink && !sink->failed && sink->fn(sink->user, ph, &ph32, sink->buf, streamed)) sink->failed = 1;
 }
 
 /* Look-ups run this many photon hits ahead of the scan, with their first entries and
@@ -67,7 +77,7 @@ static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const
 }
 
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
-                 const photon_hit_t *hits, size_t n, update_stats_t *st)
+                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_sink_t *sink)
 {
     update_stats_t s = *st;
     lookup_t ring[LOOKAHEAD];
@@ -85,9 +95,8 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
         const grid_entry_t *cand = cur.cand;
         size_t count = cur.count;
         s.candidates += count;
-        if (!count) continue;
-        if (prec == PRECISION_DOUBLE) scan_double(h, g, p, skip_radius, &hits[k], cand, count, &s);
-        else scan_fp32(h, g, p, skip_radius, &hits[k], cand, count, &s);
+        if (prec == PRECISION_DOUBLE) { if (count) scan_double(h, g, p, skip_radius, &hits[k], cand, count, &s); }
+        else scan_fp32(h, g, p, skip_radius, &hits[k], cand, count, &s, sink);
     }
     *st = s;
 }

@@ -23,9 +23,21 @@ typedef struct {
 
 typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
 
-/* Apply hits[0..n) to the hit points of part p. */
+/* Where the PREE operations go besides the model: for every photon hit, in photon order,
+ * the hit points that pass the host's tests (the candidates streamed to the PREUs), given
+ * after the model has applied them. Used by the co-simulation host; fn returns 0 or -1 to
+ * stop. */
+typedef struct {
+    int (*fn)(void *user, const photon_hit_t *hit, const preu_photon_t *ph32, const uint32_t *hps, size_t n);
+    void *user;
+    uint32_t *buf;      /* scratch, grown as needed */
+    size_t cap;
+    int failed;
+} update_sink_t;
+
+/* Apply hits[0..n) to the hit points of part p; sink may be NULL. */
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
-                 const photon_hit_t *hits, size_t n, update_stats_t *st);
+                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_sink_t *sink);
 
 /* The reference program's double update of one hit point by flux F. */
 static inline void update_accept_double(hitpoints_t *h, size_t e, vec3 F)
