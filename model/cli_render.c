@@ -37,7 +37,8 @@ static void render_usage(FILE *f)
 
 int pree_cmd_render(int argc, char **argv)
 {
-    render_options_t opt = {320, 240, 768000, PRECISION_DOUBLE, GRID_CELLS, 0, 0, 1, &interrupted};
+    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
+                            .grid = GRID_CELLS, .progress = 1, .interrupt = &interrupted};
     const char *scene_path = NULL, *stats_path = NULL;
     const char *outs[MAX_OUTPUTS];
     int nout = 0;
