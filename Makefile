@@ -51,6 +51,11 @@ $(DEPS_STAMP): scripts/install-deps.sh
 include mk/model.mk
 include $(sort $(filter-out mk/model.mk,$(wildcard mk/*.mk)))
 
+# The pree program: the engine, plus whatever fragments add (PREE_EXTRA_OBJS: the
+# co-simulation host and the Verilated RTL; PREE_EXTRA_LIBS: their libraries).
+$(BUILD)/pree: $(BUILD)/model/main.o $(LIBPREE) $(PREE_EXTRA_OBJS)
+	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(PREE_EXTRA_LIBS)
+
 build: $(DEPS_STAMP) $(BUILD)/pree
 
 run: build

@@ -24,8 +24,6 @@ $(LIBPREE): $(MODEL_OBJ)
 	@mkdir -p $(@D)
 	rm -f $@ && ar rcs $@ $^
 
-$(BUILD)/pree: $(BUILD)/model/main.o $(LIBPREE)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
 $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	@mkdir -p $(@D)
