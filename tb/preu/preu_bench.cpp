@@ -1,0 +1,193 @@
+// preu_bench.cpp: Verilator bench for rtl/pree_preu.v in both modes, scoreboarded bit for bit
+// against model/preu_fp32.c (expected values computed by tb/preu/preu_vec.c).
+//
+// Usage: preu_bench [count [seed]]   (defaults 200000, 1)
+// The sequence (preu_seq_gen) starts with directed cases, then alternates update and radiance
+// phases of random length with back-to-back and gapped valid_i. The bench behaves as a top
+// would: it switches mode_i only in a cycle where busy_o = 0, answers lreq_o by driving the
+// operation's pixel sum on l_i in the next cycle, and drives random junk on every input that
+// is not meant to be read (so stale data cannot hide). Scoreboard keyed on the handshake:
+// an expected result is pushed when valid_i is high and popped at valid_o, which must come
+// exactly 10 (update) or 12 (radiance) cycles later with the same tag; lreq_o must come in
+// the operation's S10 with its tag. Update results are compared whether accepted or not.
+// Prints the first 20 mismatches with their inputs in hex; exit status 1 on any failure.
+#include <cinttypes>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <memory>
+#include <vector>
+
+#include "verilated.h"
+#include "Vpree_preu.h"
+#include "preu_vec.h"
+
+namespace {
+
+const int MAX_REPORT = 20;
+
+struct Pending {
+    uint32_t index;
+    uint64_t due;      // cycle in which the result must appear
+};
+
+uint64_t errors = 0;
+
+void report(const preu_vec_t &v, uint32_t idx, const char *what, uint64_t cycle)
+{
+    if (errors++ >= MAX_REPORT) return;
+    std::printf("MISMATCH op %u (%s mode) cycle %" PRIu64 ": %s\n", idx,
+                v.mode ? "radiance" : "update", cycle, what);
+    std::printf("  hp pos %08x %08x %08x f %08x %08x %08x tau %08x %08x %08x r2 %08x n %08x\n",
+                v.hp.pos[0], v.hp.pos[1], v.hp.pos[2], v.hp.f[0], v.hp.f[1], v.hp.f[2],
+                v.hp.tau[0], v.hp.tau[1], v.hp.tau[2], v.hp.r2, v.hp.n);
+    std::printf("  ph pos %08x %08x %08x phi %08x %08x %08x ne %08x l %08x %08x %08x\n",
+                v.ph.pos[0], v.ph.pos[1], v.ph.pos[2], v.ph.phi[0], v.ph.phi[1], v.ph.phi[2],
+                v.ne, v.l[0], v.l[1], v.l[2]);
+    std::printf("  expected accept %d tau %08x %08x %08x r2 %08x n %08x l %08x %08x %08x\n",
+                v.accept, v.tau[0], v.tau[1], v.tau[2], v.r2, v.n, v.lo[0], v.lo[1], v.lo[2]);
+}
+
+void put96(VlWide<3> &port, const uint32_t *w) { port[0] = w[0]; port[1] = w[1]; port[2] = w[2]; }
+
+bool eq96(const VlWide<3> &port, const uint32_t *w)
+{
+    return port[0] == w[0] && port[1] == w[1] && port[2] == w[2];
+}
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    int count = argc > 1 ? std::atoi(argv[1]) : 200000;
+    uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 0) : 1;
+    if (count < 1) { std::fprintf(stderr, "preu_bench: count must be >= 1\n"); return 2; }
+
+    // The context holds simulation time and the command-line plusargs for the model.
+    const std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
+    ctx->commandArgs(argc, argv);
+    const std::unique_ptr<Vpree_preu> dut{new Vpree_preu{ctx.get()}};
+
+    std::vector<preu_vec_t> seq(count);
+    preu_seq_gen(seq.data(), count, seed);
+
+    // Reset: two cycles with rst_ni low, inputs idle.
+    dut->clk_i = 0; dut->rst_ni = 0; dut->valid_i = 0; dut->mode_i = 0;
+    dut->eval();
+    for (int i = 0; i < 2; i++) { dut->clk_i = 1; dut->eval(); dut->clk_i = 0; dut->eval(); }
+    dut->rst_ni = 1;
+    dut->eval();
+
+    std::deque<Pending> results, lreqs;
+    uint32_t junk_state = 12345;
+    auto junk = [&junk_state]() { junk_state = junk_state * 1664525u + 1013904223u; return junk_state; };
+    int next = 0, gap_left = seq[0].gap, mode = 0;
+    bool l_due = false;            // lreq_o was high last cycle: drive that op's L now
+    uint32_t l_index = 0, ne_cur = 0;
+    uint64_t cycle = 0, issued = 0, checked = 0, accepted = 0, switches = 0, idle = 0;
+    const uint64_t max_cycles = (uint64_t)count * 40 + 1000;
+
+    while ((next < count || !results.empty()) && cycle < max_cycles) {
+        // Inputs for this cycle: junk first, then whatever is meant to be read.
+        uint32_t j[3];
+        for (auto *w : {&dut->hp_pos_i, &dut->hp_f_i, &dut->hp_tau_i, &dut->ph_pos_i, &dut->ph_phi_i,
+                        &dut->l_i}) {
+            j[0] = junk(); j[1] = junk(); j[2] = junk();
+            put96(*w, j);
+        }
+        dut->hp_r2_i = junk(); dut->hp_n_i = junk(); dut->tag_i = junk();
+        dut->valid_i = 0;
+        dut->mode_i = mode;
+        if (l_due) put96(dut->l_i, seq[l_index].l);
+        dut->eval();
+
+        bool offer = next < count && gap_left == 0;
+        if (offer && seq[next].mode != mode) {
+            if (dut->busy_o) offer = false;   // wait for the pipeline to drain
+            else { mode = seq[next].mode; dut->mode_i = mode; switches++; }
+        }
+        // NE is held for a whole radiance phase; junk in update mode, where nothing reads it.
+        if (offer && mode == 1) ne_cur = seq[next].ne;
+        dut->ne_i = mode ? ne_cur : junk();
+        if (offer) {
+            const preu_vec_t &v = seq[next];
+            dut->valid_i = 1;
+            dut->tag_i = (uint32_t)next;
+            put96(dut->hp_pos_i, v.hp.pos); put96(dut->hp_f_i, v.hp.f);
+            put96(dut->hp_tau_i, v.hp.tau);
+            dut->hp_r2_i = v.hp.r2; dut->hp_n_i = v.hp.n;
+            put96(dut->ph_pos_i, v.ph.pos); put96(dut->ph_phi_i, v.ph.phi);
+            results.push_back({(uint32_t)next, cycle + (mode ? 12u : 10u)});
+            if (mode) lreqs.push_back({(uint32_t)next, cycle + 9u});
+            issued++;
+            next++;
+            if (next < count) gap_left = seq[next].gap;
+        } else {
+            if (next < count && gap_left > 0) gap_left--;
+            idle++;
+        }
+        dut->eval();
+
+        // Outputs of this cycle.
+        l_due = false;
+        if (dut->lreq_o) {
+            if (lreqs.empty() || lreqs.front().due != cycle || dut->lreq_tag_o != lreqs.front().index) {
+                uint32_t idx = lreqs.empty() ? 0 : lreqs.front().index;
+                report(seq[idx], idx, "lreq_o at the wrong cycle or with the wrong tag", cycle);
+            } else {
+                l_due = true;
+                l_index = lreqs.front().index;
+                lreqs.pop_front();
+            }
+        } else if (!lreqs.empty() && lreqs.front().due == cycle) {
+            report(seq[lreqs.front().index], lreqs.front().index, "lreq_o missing", cycle);
+            lreqs.pop_front();
+        }
+        if (dut->valid_o) {
+            if (results.empty()) {
+                report(seq[0], 0, "valid_o with nothing in flight", cycle);
+            } else {
+                Pending p = results.front();
+                results.pop_front();
+                const preu_vec_t &v = seq[p.index];
+                char msg[200];
+                if (p.due != cycle || dut->tag_o != p.index) {
+                    std::snprintf(msg, sizeof msg, "result at cycle %" PRIu64 " tag %u, expected cycle %" PRIu64 " tag %u",
+                                  cycle, dut->tag_o, p.due, p.index);
+                    report(v, p.index, msg, cycle);
+                } else if (v.mode == 0) {
+                    if (dut->accept_o != v.accept || !eq96(dut->tau_o, v.tau) || dut->r2_o != v.r2 ||
+                        dut->n_o != v.n) {
+                        std::snprintf(msg, sizeof msg, "got accept %d tau %08x %08x %08x r2 %08x n %08x",
+                                      dut->accept_o, dut->tau_o[0], dut->tau_o[1], dut->tau_o[2], dut->r2_o,
+                                      dut->n_o);
+                        report(v, p.index, msg, cycle);
+                    }
+                    accepted += v.accept;
+                } else {
+                    if (dut->accept_o || !eq96(dut->l_o, v.lo)) {
+                        std::snprintf(msg, sizeof msg, "got accept %d l %08x %08x %08x", dut->accept_o,
+                                      dut->l_o[0], dut->l_o[1], dut->l_o[2]);
+                        report(v, p.index, msg, cycle);
+                    }
+                }
+                checked++;
+            }
+        } else if (!results.empty() && results.front().due == cycle) {
+            report(seq[results.front().index], results.front().index, "valid_o missing", cycle);
+            results.pop_front();
+        }
+
+        dut->clk_i = 1; dut->eval();
+        dut->clk_i = 0; dut->eval();
+        cycle++;
+    }
+    dut->final();
+
+    bool ok = errors == 0 && checked == (uint64_t)count && results.empty();
+    std::printf("preu_bench: seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "
+                "(%" PRIu64 " update accepted), %" PRIu64 " mode switches, %" PRIu64 " cycles, %" PRIu64
+                " idle, %" PRIu64 " mismatches: %s\n",
+                seed, issued, checked, accepted, switches, cycle, idle, errors, ok ? "PASS" : "FAIL");
+    return ok ? 0 : 1;
+}

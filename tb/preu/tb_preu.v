@@ -1,0 +1,156 @@
+// tb_preu: self-checking Icarus Verilog testbench for pree_preu over a vector file.
+//
+// The vector file (tb/preu/preu_vecgen.c, layout in tb/preu/preu_vec.c: preu_vec_words) holds
+// NOps operations of PREU_VEC_WORDS = 32 hex words each: mode, gap, inputs, expected outputs,
+// computed by model/preu_fp32.c. The bench plays them in order as a top would: it leaves `gap`
+// idle cycles before each, switches mode_i only when the pipeline is empty, answers lreq_o with
+// the operation's pixel sum on l_i in the next cycle, and drives junk on unread inputs. Every
+// result is checked against its vector by tag, with its latency (10 update, 12 radiance);
+// the first 20 mismatches are printed; any failure ends in $fatal (run as `vvp -N`).
+`timescale 1ns / 1ps
+`default_nettype none
+
+module tb_preu;
+  parameter NOps    = 100;
+  parameter VecFile = "preu_vec.hex";
+  localparam W = 32;
+
+  reg [31:0] vec [0:NOps*W-1];
+  initial $readmemh(VecFile, vec);
+
+  reg clk = 1'b0;
+  always #5 clk = ~clk;
+  reg rst_n = 1'b0;
+
+  reg         mode, valid;
+  reg  [31:0] tag, hp_r2, hp_n, ne;
+  reg  [95:0] hp_pos, hp_f, hp_tau, ph_pos, ph_phi, l_in;
+  wire        lreq, valid_out, accept, busy;
+  wire [31:0] lreq_tag, tag_out, r2_out, n_out;
+  wire [95:0] tau_out, l_out;
+
+  pree_preu #(.TagW(32)) dut (
+    .clk_i(clk), .rst_ni(rst_n), .mode_i(mode), .valid_i(valid), .tag_i(tag),
+    .hp_pos_i(hp_pos), .hp_f_i(hp_f), .hp_tau_i(hp_tau), .hp_r2_i(hp_r2), .hp_n_i(hp_n),
+    .ph_pos_i(ph_pos), .ph_phi_i(ph_phi), .ne_i(ne), .lreq_o(lreq), .lreq_tag_o(lreq_tag),
+    .l_i(l_in), .valid_o(valid_out), .tag_o(tag_out), .accept_o(accept), .tau_o(tau_out),
+    .r2_o(r2_out), .n_o(n_out), .l_o(l_out), .busy_o(busy));
+
+  function [95:0] w96;
+    input integer base;
+    begin
+      w96 = {vec[base+2], vec[base+1], vec[base]};
+    end
+  endfunction
+
+  // Issue-cycle bookkeeping for the latency check.
+  reg [63:0] issue_cycle [0:NOps-1];
+  reg [63:0] cycle = 0;
+  integer next = 0, gap_left = 0, checked = 0, errors = 0, accepted = 0, switches = 0;
+  integer expect_next = 0, b;
+  reg     can_switch;
+
+  task fail;
+    input [8*64-1:0] what;
+    input integer idx;
+    begin
+      errors = errors + 1;
+      if (errors <= 20) begin
+        b = idx * W;
+        $display("MISMATCH op %0d (mode %0d) cycle %0d: %0s", idx, vec[b], cycle, what);
+        $display("  got  accept %0d tau %h r2 %h n %h l %h tag %0d", accept, tau_out, r2_out, n_out,
+                 l_out, tag_out);
+        $display("  want accept %0d tau %h r2 %h n %h l %h", vec[b+23], w96(b+24), vec[b+27],
+                 vec[b+28], w96(b+29));
+        $display("  in   hp pos %h f %h tau %h r2 %h n %h", w96(b+2), w96(b+5), w96(b+8), vec[b+11],
+                 vec[b+12]);
+        $display("       ph pos %h phi %h ne %h l %h", w96(b+13), w96(b+16), vec[b+19], w96(b+20));
+      end
+    end
+  endtask
+
+  // Drive junk on every input nobody reads.
+  task junk;
+    begin
+      valid  <= 1'b0;
+      tag    <= $random;
+      hp_pos <= {$random, $random, $random};
+      hp_f   <= {$random, $random, $random};
+      hp_tau <= {$random, $random, $random};
+      hp_r2  <= $random;
+      hp_n   <= $random;
+      ph_pos <= {$random, $random, $random};
+      ph_phi <= {$random, $random, $random};
+    end
+  endtask
+
+  initial begin
+    mode = 1'b0; valid = 1'b0; ne = 32'd0; l_in = 96'd0; tag = 32'd0;
+    hp_pos = 0; hp_f = 0; hp_tau = 0; hp_r2 = 0; hp_n = 0; ph_pos = 0; ph_phi = 0;
+    can_switch = 1'b0;
+    repeat (2) @(posedge clk);
+    rst_n <= 1'b1;
+  end
+
+  // At each rising edge: check the outputs of the cycle that ends, then drive the next cycle's
+  // inputs (nonblocking, so the DUT samples the old ones at this edge).
+  always @(posedge clk) if (rst_n) begin
+    // ---- check
+    if (valid_out) begin
+      b = expect_next * W;
+      if (expect_next >= NOps) fail("valid_o with nothing in flight", 0);
+      else begin
+        if (tag_out != expect_next)
+          fail("result out of order (tag)", expect_next);
+        else if (cycle != issue_cycle[expect_next] + (vec[b] ? 12 : 10))
+          fail("wrong latency", expect_next);
+        else if (vec[b] == 0 && (accept !== vec[b+23][0] || tau_out !== w96(b+24) ||
+                                 r2_out !== vec[b+27] || n_out !== vec[b+28]))
+          fail("update result", expect_next);
+        else if (vec[b] == 1 && (accept !== 1'b0 || l_out !== w96(b+29)))
+          fail("radiance result", expect_next);
+        accepted = accepted + (vec[b] == 0 && accept);
+        checked = checked + 1;
+        expect_next = expect_next + 1;
+      end
+    end
+    // ---- next cycle's inputs
+    l_in <= lreq ? w96(lreq_tag * W + 20) : {$random, $random, $random};
+    junk;
+    // The pipeline is empty in the next cycle if it is empty now and nothing enters now.
+    can_switch = !busy && !valid;
+    if (next < NOps) begin
+      b = next * W;
+      if (gap_left > 0) begin
+        gap_left = gap_left - 1;
+      end else if (vec[b] != mode && !can_switch) begin
+        // wait for the drain
+      end else begin
+        if (vec[b] != mode) switches = switches + 1;
+        mode   <= vec[b][0];
+        valid  <= 1'b1;
+        tag    <= next;
+        hp_pos <= w96(b + 2);
+        hp_f   <= w96(b + 5);
+        hp_tau <= w96(b + 8);
+        hp_r2  <= vec[b + 11];
+        hp_n   <= vec[b + 12];
+        ph_pos <= w96(b + 13);
+        ph_phi <= w96(b + 16);
+        if (vec[b][0]) ne <= vec[b + 19];
+        issue_cycle[next] = cycle + 1;
+        next = next + 1;
+        if (next < NOps) gap_left = vec[next * W + 1];
+      end
+    end
+    cycle = cycle + 1;
+    if (checked == NOps || cycle > NOps * 40 + 1000) begin
+      $display("tb_preu: %0d operations checked (%0d update accepted), %0d mode switches, %0d cycles, %0d mismatches: %0s",
+               checked, accepted, switches, cycle, errors, (errors == 0 && checked == NOps) ? "PASS" : "FAIL");
+      if (errors != 0 || checked != NOps) $fatal(1, "tb_preu: FAIL");
+      $finish;
+    end
+  end
+
+  initial gap_left = 0;
+endmodule

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# preu_quick.sh: PREU lint (verilator -Wall, four configurations), Yosys structural checks (no
+# latch, no combinational loop) and a short Verilator run against the C model (20,000 operations).
+# level: quick
+set -u
+cd "$(dirname "$0")/../.."
+for cmd in "make -s lint-preu" "make -s yosys-check-preu" "make -s sim-preu-vl PREU_N=20000 PREU_SEED=7"; do
+  if ! out=$($cmd 2>&1); then
+    echo "$out" | tail -20
+    echo "preu_quick: FAIL; reproduce with: $cmd"
+    exit 1
+  fi
+  echo "$out" | tail -3
+done
+echo "preu_quick: ok"
