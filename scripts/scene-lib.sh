@@ -1,0 +1,15 @@
+# scene-lib.sh: sourced by the scene checks and scripts/bench-scenes.sh (run from the repository
+# root). build_scene_stats builds build/scene-stats from scripts/scene-stats.c against
+# build/libpree.a with the Makefile's flags (make builds the library and pree first).
+build_scene_stats() {
+  make -s build/pree >/dev/null || return 1
+  local flags cflags ldflags ldlibs
+  flags=$(make -pn build/pree 2>/dev/null)
+  cflags=$(sed -n 's/^CFLAGS := //p' <<<"$flags" | sed 's/-MMD -MP//')
+  ldflags=$(sed -n 's/^LDFLAGS := //p' <<<"$flags")
+  ldlibs=$(sed -n 's/^LDLIBS := //p' <<<"$flags")
+  if [ ! build/scene-stats -nt scripts/scene-stats.c ] || [ ! build/scene-stats -nt build/libpree.a ]; then
+    gcc $cflags -c scripts/scene-stats.c -o build/scene-stats.o &&
+      g++ $ldflags build/scene-stats.o build/libpree.a -o build/scene-stats $ldlibs || return 1
+  fi
+}
