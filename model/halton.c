@@ -1,4 +1,5 @@
 /* halton.c: reverse-permuted radical inverse over the first 61 primes. */
+#include <stdint.h>
 #include "halton.h"
 
 static const int halton_primes[HALTON_DIMENSIONS] = {
@@ -12,6 +13,17 @@ double halton(int b, long long j)
     const int p = halton_primes[b];
     const double f = 1.0 / (double)p;
     double h = 0.0, fct = f;
+    if (j >= 0 && j <= 0xFFFFFFFFll) {
+        /* The same digits with 32-bit division, several times faster than 64-bit. */
+        uint32_t k = (uint32_t)j, up = (uint32_t)p;
+        while (k > 0) {
+            uint32_t digit = k % up;
+            h += (double)(digit == 0 ? 0 : up - digit) * fct;
+            k /= up;
+            fct *= f;
+        }
+        return h;
+    }
     while (j > 0) {
         /* Reverse permutation: digit d maps to p - d, and 0 stays 0. */
         int digit = (int)(j % p);
