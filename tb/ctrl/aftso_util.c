@@ -4,6 +4,7 @@
  *   --np-file FILE   N^P values, one per line (blank lines and '#' comments skipped)
  *   --early-ready B  the RTL's EarlyReady parameter (default 1)
  *   --geo MEAN       synthetic geometric N^P on {0,1,...} with this mean (default 32)
+ *   --write-np FILE  also write the N^P values used, one per line (to replay them elsewhere)
  * The photons arrive back to back (input valid every cycle) and nothing stalls downstream.
  * Utilization = hit-point operations / (N PREUs x cycles), the cycles counted from the first
  * accepted photon to the last dispatched operation. Prints one line of key=value figures.
@@ -47,16 +48,17 @@ int main(int argc, char **argv)
   long photons = 1000000;
   double mean = 32.0;
   uint64_t seed = 1;
-  const char *file = NULL;
+  const char *file = NULL, *write_np = NULL;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--preu") && i + 1 < argc) preu = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--buf") && i + 1 < argc) depth = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--early-ready") && i + 1 < argc) early = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--np-file") && i + 1 < argc) file = argv[++i];
+    else if (!strcmp(argv[i], "--write-np") && i + 1 < argc) write_np = argv[++i];
     else if (!strcmp(argv[i], "--geo") && i + 1 < argc) mean = atof(argv[++i]);
     else if (!strcmp(argv[i], "--photons") && i + 1 < argc) photons = atol(argv[++i]);
     else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 0);
-    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S]\n", argv[0]); return 2; }
+    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S] [--write-np FILE]\n", argv[0]); return 2; }
   }
   if (preu < 1 || preu > AFTSO_MAX_PREU || depth < 1 || depth > AFTSO_MAX_BUF || photons < 0) {
     fprintf(stderr, "aftso_util: --preu 1..%d, --buf 1..%d\n", AFTSO_MAX_PREU, AFTSO_MAX_BUF);
@@ -71,6 +73,12 @@ int main(int argc, char **argv)
     np = malloc((nphot ? nphot : 1) * sizeof *np);
     if (!np) return 1;
     for (size_t i = 0; i < nphot; i++) np[i] = ctrl_rng_geometric(&seed, mean);
+  }
+  if (write_np) {
+    FILE *f = fopen(write_np, "w");
+    if (!f) { fprintf(stderr, "aftso_util: %s: %s\n", write_np, strerror(errno)); free(np); return 1; }
+    for (size_t i = 0; i < nphot; i++) fprintf(f, "%u\n", np[i]);
+    if (fclose(f)) { fprintf(stderr, "aftso_util: %s: write failed\n", write_np); free(np); return 1; }
   }
 
   aftso_model m;

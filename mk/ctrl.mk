@@ -1,0 +1,131 @@
+# The two PREE controllers: AFTSO-HpUOC (rtl/pree_aftso_hpuoc.v, hit-point update dispatch) and
+# ADISO-REC (rtl/pree_adiso_rec.v, leaping addresses). C models, Verilator benches against them,
+# Icarus benches over their vectors, lint, Yosys synthesis, utilization. docs/controllers.md.
+#
+#   make ctrl-sim        Verilator + Icarus benches, NumPreu 4/8/16 (part of `make sim`)
+#   make ctrl-sim-full   longer random runs and more seeds (a few minutes)
+#   make ctrl-lint       verilator --lint-only -Wall, every configuration (part of `make lint`)
+#   make ctrl-synth      synth_xilinx resource lines in build/ctrl/synth.txt (part of `make synth`)
+#   make ctrl-util       PREU utilization table in build/ctrl/util.txt; NP_FILE=f adds a
+#                        measured N^P distribution (one value per line) through model and RTL
+
+CTRL_DIR      := $(BUILD)/ctrl
+CTRL_PREUS    := 4 8 16
+CTRL_EARLY    := 0 1
+CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl
+CTRL_HDR      := $(wildcard tb/ctrl/*.h)
+AFTSO_RTL     := rtl/pree_aftso_hpuoc.v
+ADISO_RTL     := rtl/pree_adiso_rec.v
+# Verilator: -O3 and the default output split favour simulation speed (OPT_FAST in the manual);
+# X values are randomised so that a missing reset shows up as a mismatch.
+CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique
+
+# AFTSO configurations in the regression: EarlyReady = 1 (the default) for every NumPreu, the
+# paper's back-pressure (EarlyReady = 0) for NumPreu = 4; ctrl-sim-full builds all six.
+CTRL_AFTSO_CFGS    := p4_e0 p4_e1 p8_e1 p16_e1
+CTRL_AFTSO_CFGS_ALL := $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),p$(p)_e$(e)))
+CTRL_AFTSO_BENCHES := $(foreach c,$(CTRL_AFTSO_CFGS),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
+CTRL_AFTSO_BENCHES_ALL := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
+CTRL_ADISO_BENCHES := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/adiso_p$(p)/adiso_bench)
+CTRL_AFTSO_VVP     := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/icarus/aftso_$(c).vvp)
+CTRL_ADISO_VVP     := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/icarus/adiso_p$(p).vvp)
+CTRL_VECS          := $(CTRL_AFTSO_VVP:.vvp=.ncyc) $(CTRL_ADISO_VVP:.vvp=.ncyc)
+CTRL_TOOLS         := $(CTRL_DIR)/aftso_util $(CTRL_DIR)/aftso_vecgen $(CTRL_DIR)/adiso_vecgen
+CTRL_ALL           := $(CTRL_AFTSO_BENCHES) $(CTRL_ADISO_BENCHES) $(CTRL_AFTSO_VVP) $(CTRL_ADISO_VVP) \
+                      $(CTRL_VECS) $(CTRL_TOOLS)
+
+TEST_PREREQS  += $(CTRL_ALL)
+SIM_TARGETS   += ctrl-sim
+LINT_TARGETS  += ctrl-lint
+SYNTH_TARGETS += ctrl-synth
+
+.PHONY: ctrl-build ctrl-sim ctrl-sim-verilator ctrl-sim-icarus ctrl-sim-full ctrl-lint ctrl-synth ctrl-util
+ctrl-build: $(CTRL_ALL) $(CTRL_AFTSO_BENCHES_ALL)
+
+# Host C: the models and the tools around them.
+$(CTRL_DIR)/%.o: tb/ctrl/%.c $(CTRL_HDR)
+	@mkdir -p $(@D)
+	$(CC) $(CTRL_CFLAGS) -c $< -o $@
+
+$(CTRL_DIR)/aftso_util: $(CTRL_DIR)/aftso_util.o $(CTRL_DIR)/aftso_model.o
+	$(CC) $^ -o $@ -lm
+$(CTRL_DIR)/aftso_vecgen: $(CTRL_DIR)/aftso_vecgen.o $(CTRL_DIR)/aftso_model.o
+	$(CC) $^ -o $@ -lm
+$(CTRL_DIR)/adiso_vecgen: $(CTRL_DIR)/adiso_vecgen.o $(CTRL_DIR)/adiso_model.o
+	$(CC) $^ -o $@ -lm
+
+# Verilator benches, one binary per configuration (the parameters are compile-time).
+define CTRL_AFTSO_RULE
+$(CTRL_DIR)/aftso_p$(1)_e$(2)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_DIR)/aftso_model.o $(CTRL_HDR)
+	$(CTRL_VERILATE) -GNumPreu=$(1) -GEarlyReady=$(2) \
+	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DEARLY_READY=$(2) -I$(abspath tb/ctrl)" \
+	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
+	  $(abspath $(CTRL_DIR)/aftso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
+endef
+define CTRL_ADISO_RULE
+$(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(CTRL_DIR)/adiso_model.o $(CTRL_HDR)
+	$(CTRL_VERILATE) -GNumPreu=$(1) -GPipeDepth=12 \
+	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DPIPE_DEPTH=12 -I$(abspath tb/ctrl)" \
+	  --Mdir $$(@D) -o adiso_bench $(ADISO_RTL) $(abspath tb/ctrl/adiso_bench.cpp) \
+	  $(abspath $(CTRL_DIR)/adiso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
+endef
+# Icarus benches and the C models' vectors for them (the .ncyc file holds the cycle count).
+define CTRL_AFTSO_ICARUS_RULE
+$(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).vvp: tb/ctrl/aftso_tb.v $(AFTSO_RTL)
+	@mkdir -p $$(@D)
+	iverilog -g2005 -Wall -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$^
+$(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).ncyc: $(CTRL_DIR)/aftso_vecgen
+	@mkdir -p $$(@D)
+	$$< --preu $(1) --early-ready $(2) --seed $(1)$(2)7 --cycles 3000 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
+endef
+define CTRL_ADISO_ICARUS_RULE
+$(CTRL_DIR)/icarus/adiso_p$(1).vvp: tb/ctrl/adiso_tb.v $(ADISO_RTL)
+	@mkdir -p $$(@D)
+	iverilog -g2005 -Wall -P adiso_tb.NumPreu=$(1) -P adiso_tb.PipeDepth=12 -o $$@ $$^
+$(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
+	@mkdir -p $$(@D)
+	$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
+endef
+$(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_RULE,$(p),$(e)))))
+$(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),$(e)))))
+$(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_RULE,$(p))))
+$(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_ICARUS_RULE,$(p))))
+
+# Simulation: every bench once (quick), then longer runs (full).
+ctrl-sim: ctrl-sim-verilator ctrl-sim-icarus
+ctrl-sim-verilator: $(CTRL_AFTSO_BENCHES) $(CTRL_ADISO_BENCHES)
+	@set -e; for b in $(CTRL_AFTSO_BENCHES) $(CTRL_ADISO_BENCHES); do $$b | tail -1; done
+ctrl-sim-icarus: $(CTRL_AFTSO_VVP) $(CTRL_ADISO_VVP) $(CTRL_VECS)
+	@set -e; for v in $(CTRL_AFTSO_VVP) $(CTRL_ADISO_VVP); do \
+	  vvp -N $$v +stim=$${v%.vvp}.stim +exp=$${v%.vvp}.exp +ncyc=$$(cat $${v%.vvp}.ncyc) | tail -1; done
+ctrl-sim-full: $(CTRL_AFTSO_BENCHES_ALL) $(CTRL_ADISO_BENCHES)
+	@set -e; for s in 11 12 13; do \
+	  for b in $(CTRL_AFTSO_BENCHES_ALL); do $$b --seed $$s --scale 10 | tail -1; done; \
+	  for b in $(CTRL_ADISO_BENCHES); do $$b --seed $$s --nmax 4096 --random 60 | tail -1; done; done
+
+# Lint: both modules, every configuration the project builds, no waivers.
+ctrl-lint:
+	@set -e; for p in $(CTRL_PREUS); do \
+	  for e in $(CTRL_EARLY); do verilator --lint-only -Wall -GNumPreu=$$p -GEarlyReady=$$e $(AFTSO_RTL); done; \
+	  verilator --lint-only -Wall -GNumPreu=$$p $(ADISO_RTL); done
+	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS)"
+
+# Synthesis: one resource line per configuration; fails on a latch or a loop.
+ctrl-synth:
+	@mkdir -p $(CTRL_DIR)
+	@set -e; { for p in $(CTRL_PREUS); do tb/ctrl/synth_ctrl.sh pree_aftso_hpuoc NumPreu=$$p; done; \
+	  for p in $(CTRL_PREUS); do tb/ctrl/synth_ctrl.sh pree_adiso_rec NumPreu=$$p; done; } >$(CTRL_DIR)/synth.txt.tmp
+	@mv $(CTRL_DIR)/synth.txt.tmp $(CTRL_DIR)/synth.txt && cat $(CTRL_DIR)/synth.txt
+
+# Utilization: geometric N^P with mean 32 (cornell3: 78 M candidates / 2.45 M photon hits),
+# 1 M photons back to back, for both EarlyReady settings; then the RTL on 20 k of them.
+CTRL_UTIL_PHOTONS ?= 1000000
+ctrl-util: $(CTRL_DIR)/aftso_util $(CTRL_AFTSO_BENCHES_ALL)
+	@set -e; { for e in $(CTRL_EARLY); do for p in $(CTRL_PREUS); do \
+	    $(CTRL_DIR)/aftso_util --preu $$p --early-ready $$e --geo 32 --photons $(CTRL_UTIL_PHOTONS); done; done; \
+	  $(CTRL_DIR)/aftso_util --geo 32 --photons 20000 --seed 5 --write-np $(CTRL_DIR)/np_geo32.txt >/dev/null; \
+	  for p in $(CTRL_PREUS); do $(CTRL_DIR)/aftso_p$${p}_e1/aftso_bench --np-file $(CTRL_DIR)/np_geo32.txt; done; \
+	  if [ -n "$(NP_FILE)" ]; then for p in $(CTRL_PREUS); do \
+	    $(CTRL_DIR)/aftso_util --preu $$p --np-file $(NP_FILE); \
+	    $(CTRL_DIR)/aftso_p$${p}_e1/aftso_bench --np-file $(NP_FILE); done; fi; } >$(CTRL_DIR)/util.txt.tmp
+	@mv $(CTRL_DIR)/util.txt.tmp $(CTRL_DIR)/util.txt && cat $(CTRL_DIR)/util.txt
