@@ -1,0 +1,51 @@
+#!/usr/bin/env bash
+# Run time against error: cornell3 rendered with 768,000 x 2^k photons (k = 0..6) in both
+# precisions, each compared with a long double-precision reference render (128x the photons).
+# Prints a table (photons, precision, seconds, RMSE on linear radiance, SSIM of the 8-bit
+# images) and draws out/bench/convergence.png with gnuplot.
+# Usage: bench-convergence.sh PREE OUTDIR [--quick]   (--quick: 96x72, for testing the script)
+set -euo pipefail
+pree=$1; out=$2; quick=${3:-}
+mkdir -p "$out"
+scene=scenes/cornell3
+if [ "$quick" = --quick ]; then W=96; H=72; base=69000; steps=3; refmul=16
+else W=320; H=240; base=768000; steps=6; refmul=128; fi
+ref="$out/conv-ref-${W}x${H}"
+if [ ! -f "$ref.exr" ]; then
+  echo "bench-convergence: reference render, $((base * refmul)) photons (once; kept in $out)" >&2
+  "$pree" render $scene --width $W --height $H --photons $((base * refmul)) --precision double \
+      --out "$ref.exr" --out "$ref.png" --stats "$ref.json"
+fi
+tab="$out/convergence.txt"
+printf '%-12s %-9s %9s %12s %10s %10s\n' photons precision seconds rmse_linear ssim_8bit psnr_8bit | tee "$tab"
+for prec in double fp32; do
+  for k in $(seq 0 $steps); do
+    n=$((base << k)); f="$out/conv-$prec-$n"
+    "$pree" render $scene --width $W --height $H --photons $n --precision $prec --out "$f.exr" --out "$f.png" \
+        --stats "$f.json" --quiet
+    sec=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["seconds"]["total"])' "$f.json")
+    rmse=$("$pree" compare "$ref.exr" "$f.exr" | awk '$1=="rmse"{print $2}')
+    read -r ssim psnr <<<"$("$pree" compare "$ref.png" "$f.png" | awk '$1=="ssim"{s=$2} $1=="psnr_db"{p=$2} END{print s, p}')"
+    printf '%-12s %-9s %9.3f %12.6g %10.6f %10.3f\n' $n $prec $sec $rmse $ssim $psnr | tee -a "$tab"
+  done
+done
+awk 'NR>1 && $2=="double"{print $3, $4, $5}' "$tab" > "$out/conv-double.dat"
+awk 'NR>1 && $2=="fp32"{print $3, $4, $5}' "$tab" > "$out/conv-fp32.dat"
+gnuplot <<GP
+set terminal pngcairo size 1000,420 font ",10"
+set output "$out/convergence.png"
+set multiplot layout 1,2 title "cornell3 ${W}x${H}: error against a $((base * refmul))-photon reference, photons doubling from $base"
+set logscale xy
+set xlabel "seconds (render total)"
+set ylabel "RMSE, linear radiance"
+set grid
+plot "$out/conv-double.dat" using 1:2 with linespoints title "double", \
+     "$out/conv-fp32.dat" using 1:2 with linespoints title "fp32"
+unset logscale y
+set logscale x
+set ylabel "SSIM, 8-bit images"
+plot "$out/conv-double.dat" using 1:3 with linespoints title "double", \
+     "$out/conv-fp32.dat" using 1:3 with linespoints title "fp32"
+unset multiplot
+GP
+echo "plot: $out/convergence.png"
