@@ -4,6 +4,8 @@
  *   --np-file FILE   N^P values, one per line (blank lines and '#' comments skipped)
  *   --early-ready B  the RTL's EarlyReady parameter (default 1)
  *   --geo MEAN       synthetic geometric N^P on {0,1,...} with this mean (default 32)
+ *   --trace          print every cycle: buffer (id:rem), accuHP, lanes (id:ref_addr), input
+ *                    (photon k gets id k and p_addr 100 * k, for readable examples)
  *   --write-np FILE  also write the N^P values used, one per line (to replay them elsewhere)
  * The photons arrive back to back (input valid every cycle) and nothing stalls downstream.
  * Utilization = hit-point operations / (N PREUs x cycles), the cycles counted from the first
@@ -42,6 +44,23 @@ static uint32_t *read_np_file(const char *path, size_t *count)
   return v;
 }
 
+/* One line of the --trace output. */
+static void print_cycle(uint64_t cycle, const aftso_model *m, const aftso_out *out, const aftso_in *in)
+{
+  uint64_t accu = 0;
+  printf("cycle %3llu | buffer", (unsigned long long)cycle);
+  for (int i = 0; i < m->buf_depth; i++) {
+    if (i < m->count) printf(" P%u:%u", m->buf[i].id, m->buf[i].rem);
+    else printf(" -");
+  }
+  printf(" | accuHP");
+  for (int i = 0; i < m->count; i++) { accu += m->buf[i].rem; printf(" %llu", (unsigned long long)accu); }
+  printf(" | lanes");
+  for (int l = 0; l < out->nvalid; l++) printf(" P%u:%u%s", out->id[l], out->ref_addr[l], out->last[l] ? "*" : "");
+  if (in->valid) printf(" | in P%u N=%u %s", in->id, in->n, out->ready ? "taken" : "held");
+  printf("\n");
+}
+
 int main(int argc, char **argv)
 {
   int preu = 4, depth = 4, early = 1;
@@ -49,16 +68,18 @@ int main(int argc, char **argv)
   double mean = 32.0;
   uint64_t seed = 1;
   const char *file = NULL, *write_np = NULL;
+  int trace = 0;
   for (int i = 1; i < argc; i++) {
     if (!strcmp(argv[i], "--preu") && i + 1 < argc) preu = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--buf") && i + 1 < argc) depth = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--early-ready") && i + 1 < argc) early = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--np-file") && i + 1 < argc) file = argv[++i];
+    else if (!strcmp(argv[i], "--trace")) trace = 1;
     else if (!strcmp(argv[i], "--write-np") && i + 1 < argc) write_np = argv[++i];
     else if (!strcmp(argv[i], "--geo") && i + 1 < argc) mean = atof(argv[++i]);
     else if (!strcmp(argv[i], "--photons") && i + 1 < argc) photons = atol(argv[++i]);
     else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 0);
-    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S] [--write-np FILE]\n", argv[0]); return 2; }
+    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S] [--trace] [--write-np FILE]\n", argv[0]); return 2; }
   }
   if (preu < 1 || preu > AFTSO_MAX_PREU || depth < 1 || depth > AFTSO_MAX_BUF || photons < 0) {
     fprintf(stderr, "aftso_util: --preu 1..%d, --buf 1..%d\n", AFTSO_MAX_PREU, AFTSO_MAX_BUF);
@@ -94,8 +115,9 @@ int main(int argc, char **argv)
     aftso_eval(&m, 0, &out);
     in.valid = next < nphot;
     in.n = in.valid ? np[next] : 0;
-    in.p_addr = 0;
+    in.p_addr = 100u * (uint32_t)next;
     in.id = (uint32_t)next;
+    if (trace) print_cycle(cycles, &m, &out, &in);
     if (in.valid && out.ready) next++;
     if (!out.ready) busy_cycles++;
     ops += (uint64_t)out.nvalid;
