@@ -31,7 +31,7 @@ module pree_fp32_div (
 
   localparam LATENCY = 4;
   // Quotient bits per stage (26 in all); the first and last stages also unpack and round.
-  localparam STEPS1 = 6;
+  localparam STEPS1 = 5;
   localparam STEPS2 = 8;
   localparam STEPS3 = 8;
   localparam STEPS4 = 26 - STEPS1 - STEPS2 - STEPS3;

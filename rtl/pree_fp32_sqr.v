@@ -4,9 +4,10 @@
 //  - one operand, so one classifier and no subnormal normalisation: the square of any subnormal
 //    (< 2^-126) is below 2^-252, far under half the smallest subnormal, so it is +0;
 //  - the significand square uses the symmetry of a square. With m = H * 2^17 + L
-//    (H = m[23:17], 7 bits; L = m[16:0], 17 bits):  m^2 = H^2 * 2^34 + H*L * 2^18 + L^2,
-//    one 17 x 17 and one 7 x 17 product and a 7-bit square instead of a full 24 x 24 product
-//    (the sq_mid term H*L appears once, doubled by the shift).
+//    (H = m[23:17], 7 bits; L = m[16:0], 17 bits):  m^2 = H^2 * 2^34 + H*L * 2^18 + L^2.
+//    The cross term H*L is needed once (doubled by the shift) instead of twice; L^2 is one
+//    17 x 17 product (one DSP48 on a 7-series FPGA), while H^2 and H*L are written as seven
+//    shifted partial products each, so they map to LUT adders instead of a second DSP.
 // The result is never negative: -x * -x = +x^2, (-0)^2 = +0, (-inf)^2 = +inf.
 // NaN result (x86-64 SSE rule): a NaN -> a quieted (sign and payload kept).
 //
@@ -39,8 +40,19 @@ module pree_fp32_sqr (
   wire [23:0] man     = {1'b1, a_i[22:0]};           // only used for normal operands
   wire [6:0]  man_hi  = man[23:17];
   wire [16:0] man_lo  = man[16:0];
-  wire [13:0] sq_hi   = man_hi * man_hi;
-  wire [23:0] sq_mid   = man_hi * man_lo;
+  reg  [13:0] sq_hi;                                 // H^2
+  reg  [23:0] sq_mid;                                // H*L
+  integer     i;
+
+  // Shift-and-add over the 7 bits of H (small products: LUT logic rather than a DSP).
+  always @* begin
+    sq_hi  = 14'd0;
+    sq_mid = 24'd0;
+    for (i = 0; i < 7; i = i + 1) begin
+      sq_hi  = sq_hi  + ({7'd0, man_hi & {7{man_hi[i]}}} << i);
+      sq_mid = sq_mid + ({7'd0, man_lo & {17{man_hi[i]}}} << i);
+    end
+  end
   wire [33:0] sq_lo   = man_lo * man_lo;
   wire [47:0] prod_d  = {sq_hi, 34'd0} + {6'd0, sq_mid, 18'd0} + {14'd0, sq_lo};
   wire [9:0]  exp_d   = {1'b0, exp_a, 1'b0} - 10'd127;   // biased exponent of product bit 46

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The fp32 benches can fail: each mutant below breaks one rule of the binary32 units (tie
-# rounding, signed zero, NaN priority, subnormal shift, latency, -0 == +0) in a copy of rtl/,
+# rounding, signed zero, NaN priority, latency, -0 == +0) in a copy of rtl/,
 # and the Verilator bench of the affected unit must then report mismatches and exit non-zero.
 # A mutant that passes its bench fails this check.
 set -u
@@ -15,7 +15,6 @@ mutants=(
   "mul@pree_fp32_round.v@s/wire inc   = guard \& (rest | lsb);/wire inc   = guard;/@ties away from zero"
   "add@pree_fp32_add.v@s/s1_zero_sign_q <= sign_l \& sign_s;/s1_zero_sign_q <= sign_l;/@x - x = -0 for negative x"
   "div@pree_fp32_div.v@s/if (nan_a) /if (nan_a \&\& !nan_b) /@NaN priority a before b"
-  "div@pree_fp32_round.v@s/11'd1 - {exp_i\[9\], exp_i}/11'd2 - {exp_i[9], exp_i}/@subnormal shift off by one"
   "sqr@pree_fp32_sqr.v@s/assign valid_o = valid_q\[LATENCY-1\];/assign valid_o = valid_q[0];/@latency 1 instead of 2"
   "cmp@pree_fp32_cmp.v@s/wire eq_num    = both_zero | /wire eq_num    = /@-0 == +0"
 )
