@@ -1,5 +1,10 @@
 /* image.c: RGB image buffers, smallppm's tone map, the ASCII PPM writer, and atomic file writes
- * that choose the format by extension (PNG and EXR go through image_io.cpp). */
+ * that choose the format by extension (PNG and EXR go through image_io.cpp).
+ *
+ * Loading libOpenImageIO costs every process about 0.3 s of CPU in the dynamic loader (Debian's
+ * build pulls in some 260 libraries). Built with -DPREE_OIIO_MODULE='"path/libpree_oiio.so"',
+ * image_io.cpp is expected in that shared module instead of in the program, and is loaded on the
+ * first PNG/EXR read or write, so runs that only touch PPM files never pay for it. */
 #include "image.h"
 #include "image_io.h"
 
@@ -13,6 +18,50 @@
 #include <string.h>
 #include <strings.h>
 #include <unistd.h>
+
+#ifdef PREE_OIIO_MODULE
+#include <dlfcn.h>
+#include <pthread.h>
+
+typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const void *, char *, size_t);
+typedef int (*oiio_read_fn)(const char *, pree_image_t *, char *, size_t);
+static oiio_write_fn oiio_write;
+static oiio_read_fn oiio_read;
+static char oiio_load_error[600];
+static pthread_once_t oiio_once = PTHREAD_ONCE_INIT;
+
+/* Load the module once: $PREE_OIIO_MODULE if set, else the path it was built with. */
+static void oiio_load(void)
+{
+    const char *path = getenv("PREE_OIIO_MODULE");
+    if (!path || !*path) path = PREE_OIIO_MODULE;
+    void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
+    if (h) {
+        oiio_write = (oiio_write_fn)dlsym(h, "pree_oiio_write");
+        oiio_read = (oiio_read_fn)dlsym(h, "pree_oiio_read");
+    }
+    if (!oiio_write || !oiio_read) {
+        const char *why = dlerror();
+        snprintf(oiio_load_error, sizeof oiio_load_error, "cannot load the OpenImageIO module %s: %s",
+                 path, why ? why : "pree_oiio_read/pree_oiio_write missing");
+        oiio_write = NULL;
+        oiio_read = NULL;
+    }
+}
+
+static int oiio_ready(const char *file, char *err, size_t errlen)
+{
+    pthread_once(&oiio_once, oiio_load);
+    if (oiio_write) return 1;
+    if (err && errlen) snprintf(err, errlen, "%s: %s", file, oiio_load_error);
+    return 0;
+}
+#define PREE_OIIO_WRITE(file, ...) (oiio_ready(file, err, errlen) ? oiio_write(__VA_ARGS__) : -1)
+#define PREE_OIIO_READ(file, ...) (oiio_ready(file, err, errlen) ? oiio_read(__VA_ARGS__) : -1)
+#else
+#define PREE_OIIO_WRITE(file, ...) pree_oiio_write(__VA_ARGS__)
+#define PREE_OIIO_READ(file, ...) pree_oiio_read(__VA_ARGS__)
+#endif
 
 /* Largest image accepted anywhere: 2^28 pixels (16384 x 16384). */
 #define PREE_IMAGE_MAX_PIXELS ((int64_t)1 << 28)
@@ -156,7 +205,7 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
         rc = write_ppm_fd(fd, path, w, h, pixels, err, errlen);
     } else {
         close(fd);   /* OpenImageIO opens the file by name and truncates it */
-        rc = pree_oiio_write(tmp, ext, w, h, is_float, pixels, err, errlen);
+        rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, err, errlen);
         if (rc && err && errlen) {   /* name the destination, not the temporary */
             size_t tl = strlen(tmp);
             if (!strncmp(err, tmp, tl)) {
@@ -206,7 +255,106 @@ int pree_image_write_u8(const char *path, int w, int h, const unsigned char *rgb
     return write_atomic(path, ext, w, h, 0, rgb, err, errlen);
 }
 
+/* A PNM file being parsed: the whole file in memory and a cursor. */
+typedef struct { const unsigned char *p, *end; } pnm_cursor_t;
+
+/* Skip white space and '#' comments; read an unsigned decimal number into *v (< 2^31). */
+static int pnm_number(pnm_cursor_t *c, long *v)
+{
+    for (;;) {
+        while (c->p < c->end && (*c->p == ' ' || (*c->p >= '\t' && *c->p <= '\r'))) c->p++;
+        if (c->p < c->end && *c->p == '#') {
+            while (c->p < c->end && *c->p != '\n') c->p++;
+            continue;
+        }
+        break;
+    }
+    if (c->p >= c->end || *c->p < '0' || *c->p > '9') return -1;
+    long x = 0;
+    while (c->p < c->end && *c->p >= '0' && *c->p <= '9') {
+        x = x * 10 + (*c->p++ - '0');
+        if (x > 0x7fffffffL) return -1;
+    }
+    *v = x;
+    return 0;
+}
+
+/* Read a P2/P3 (ASCII) or P5/P6 (binary) file with maxval 255 or 65535 in plain C, so PPM work
+ * never needs OpenImageIO. Grey (P2/P5) is replicated to RGB. */
+static int read_pnm(const char *path, const unsigned char *buf, size_t len, pree_image_t *img,
+                    char *err, size_t errlen)
+{
+    pnm_cursor_t c = {buf + 2, buf + len};
+    const int ascii = buf[1] == '2' || buf[1] == '3', nc = (buf[1] == '3' || buf[1] == '6') ? 3 : 1;
+    long w, h, maxval;
+    if (pnm_number(&c, &w) || pnm_number(&c, &h) || pnm_number(&c, &maxval))
+        return set_err(err, errlen, "%s: %s", path, "malformed PNM header");
+    if (maxval != 255 && maxval != 65535)
+        return set_err(err, errlen, "%s: %s", path, "unsupported PNM maxval (255 or 65535 only)");
+    if (check_size((int)w, (int)h, path, err, errlen)) return -1;
+    const size_t n = (size_t)w * h * nc, bytes = maxval > 255 ? 2 : 1;
+    if (!ascii) {
+        /* Exactly one white-space character separates the header from the samples. */
+        if (c.p >= c.end || !(*c.p == ' ' || (*c.p >= '\t' && *c.p <= '\r')) || (size_t)(c.end - c.p - 1) < n * bytes)
+            return set_err(err, errlen, "%s: %s", path, "truncated PNM file");
+        c.p++;
+    }
+    float *rgb = malloc((size_t)w * h * 3 * sizeof(float));
+    if (!rgb) return set_err(err, errlen, "%s: %s", path, "out of memory");
+    for (size_t i = 0; i < n; i++) {
+        long v;
+        if (ascii) {
+            if (pnm_number(&c, &v)) {
+                free(rgb);
+                return set_err(err, errlen, "%s: %s", path, "truncated or malformed PNM samples");
+            }
+        } else {
+            v = bytes == 1 ? c.p[i] : (long)c.p[2 * i] << 8 | c.p[2 * i + 1];
+        }
+        if (v > maxval) {
+            free(rgb);
+            return set_err(err, errlen, "%s: %s", path, "PNM sample above maxval");
+        }
+        if (nc == 3) rgb[i] = (float)v;
+        else rgb[3 * i] = rgb[3 * i + 1] = rgb[3 * i + 2] = (float)v;
+    }
+    img->width = (int)w;
+    img->height = (int)h;
+    img->rgb = rgb;
+    img->samples = maxval > 255 ? PREE_SAMPLES_U16 : PREE_SAMPLES_U8;
+    return 0;
+}
+
 int pree_image_read(const char *path, pree_image_t *img, char *err, size_t errlen)
 {
-    return pree_oiio_read(path, img, err, errlen);
+    img->width = img->height = 0;
+    img->rgb = NULL;
+    img->samples = PREE_SAMPLES_FLOAT;
+
+    /* PNM (P2, P3, P5, P6) is read here; everything else by OpenImageIO. */
+    FILE *f = fopen(path, "rb");
+    if (!f) return set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    unsigned char magic[2] = {0, 0};
+    size_t got = fread(magic, 1, 2, f);
+    int pnm = got == 2 && magic[0] == 'P' && (magic[1] == '2' || magic[1] == '3' || magic[1] == '5' || magic[1] == '6');
+    if (!pnm) {
+        fclose(f);
+        return PREE_OIIO_READ(path, path, img, err, errlen);
+    }
+    unsigned char *buf = NULL;
+    size_t len = 0, cap = 0;
+    int rc = -1;
+    if (fseek(f, 0, SEEK_END) == 0) {
+        long size = ftell(f);
+        if (size > 0 && fseek(f, 0, SEEK_SET) == 0) {
+            cap = (size_t)size;
+            buf = malloc(cap);
+            if (buf) len = fread(buf, 1, cap, f);
+        }
+    }
+    if (!buf || len != cap || ferror(f)) set_err(err, errlen, "%s: %s", path, "cannot read the file");
+    else rc = read_pnm(path, buf, len, img, err, errlen);
+    free(buf);
+    fclose(f);
+    return rc;
 }

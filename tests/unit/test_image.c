@@ -248,6 +248,65 @@ static void test_read_errors(void **state)
     assert_null(strchr(err, '\n'));
 }
 
+static void put_file(const char *dir, const char *name, const void *data, size_t len, char *path)
+{
+    sprintf(path, "%s/%s", dir, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, len, f), len);
+    fclose(f);
+}
+
+/* PNM files read in C: ASCII and binary, colour and grey, 8 and 16 bits, comments. */
+static void test_read_pnm(void **state)
+{
+    char path[256], err[512] = "";
+    pree_image_t img = {0};
+    const float want[6] = {0, 9, 10, 99, 100, 255};
+
+    const char p3[] = "P3 # comment\n# another\n 1 2\n255\n0 9 10\n99 100 255";
+    put_file(*state, "a.ppm", p3, sizeof p3 - 1, path);
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), 0);
+    assert_int_equal(img.width, 1);
+    assert_int_equal(img.height, 2);
+    assert_int_equal(img.samples, PREE_SAMPLES_U8);
+    assert_memory_equal(img.rgb, want, sizeof want);
+    pree_image_free(&img);
+
+    const unsigned char p6[] = {'P', '6', '\n', '2', ' ', '1', '\n', '2', '5', '5', '\n', 0, 9, 10, 99, 100, 255};
+    put_file(*state, "b.ppm", p6, sizeof p6, path);
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), 0);
+    assert_int_equal(img.width, 2);
+    assert_int_equal(img.samples, PREE_SAMPLES_U8);
+    assert_memory_equal(img.rgb, want, sizeof want);
+    pree_image_free(&img);
+
+    const unsigned char p5[] = {'P', '5', ' ', '2', ' ', '1', ' ', '6', '5', '5', '3', '5', '\n', 0x01, 0x02, 0xff, 0xff};
+    put_file(*state, "c.pgm", p5, sizeof p5, path);
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), 0);
+    assert_int_equal(img.samples, PREE_SAMPLES_U16);
+    const float grey[6] = {258, 258, 258, 65535, 65535, 65535};
+    assert_memory_equal(img.rgb, grey, sizeof grey);
+    pree_image_free(&img);
+
+    const char p2[] = "P2\n1 1\n255\n7\n";
+    put_file(*state, "d.pgm", p2, sizeof p2 - 1, path);
+    assert_int_equal(pree_image_read(path, &img, err, sizeof err), 0);
+    assert_true(img.rgb[0] == 7.0f && img.rgb[1] == 7.0f && img.rgb[2] == 7.0f);
+    pree_image_free(&img);
+
+    /* Refused: truncated binary, a sample above maxval, another maxval, a bad header. */
+    const char *bad[] = {"P6\n2 1\n255\nabcde", "P3\n1 1\n255\n1 2 256", "P3\n1 1\n100\n1 2 3",
+                         "P3\n1 x\n255\n1 2 3", "P3\n0 1\n255\n", "P3\n1 1\n255\n1 2"};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        put_file(*state, "bad.ppm", bad[k], strlen(bad[k]), path);
+        err[0] = 0;
+        assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
+        assert_null(img.rgb);
+        assert_non_null(strstr(err, path));
+    }
+}
+
 static void test_alloc(void **state)
 {
     (void)state;
@@ -276,6 +335,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_atomic_failures, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_failed_write_keeps_old_file, make_dir, remove_dir),
         cmocka_unit_test_setup_teardown(test_read_errors, make_dir, remove_dir),
+        cmocka_unit_test_setup_teardown(test_read_pnm, make_dir, remove_dir),
         cmocka_unit_test(test_alloc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
