@@ -1,10 +1,11 @@
 /* scene-stats.c: helper for the scene checks and the scene benchmark (built by
  * scripts/scene-lib.sh against build/libpree.a).
  *   scene-stats info SCENE    one line: triangles, meshes, spheres, point and area lights,
- *                             materials and which kinds occur (from scene_load)
+ *                             materials and which kinds occur, and scene_load's wall seconds
  *   scene-stats image FILE    one line: the mean of R, G, B and of all three, the smallest and
  *                             largest value, and the NaN and infinity counts of an image */
 #include <math.h>
+#include <time.h>
 #include <stdio.h>
 #include <string.h>
 #include "image.h"
@@ -14,7 +15,10 @@ static int info(const char *path)
 {
     scene_t s;
     char err[1024];
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     if (scene_load(path, &s, err, sizeof err)) { fprintf(stderr, "scene-stats: %s\n", err); return 1; }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
     size_t tris = 0;
     for (int i = 0; i < s.num_meshes; i++) tris += s.meshes[i].num_triangles;
     int point = 0, area = 0;
@@ -22,8 +26,9 @@ static int info(const char *path)
         point += s.lights[i].kind == LIGHT_POINT;
         area += s.lights[i].kind == LIGHT_AREA;
     }
-    printf("triangles=%zu meshes=%d spheres=%d point_lights=%d area_lights=%d materials=%d diffuse=%d mirror=%d glass=%d\n",
-           tris, s.num_meshes, s.num_spheres, point, area, s.num_materials, s.has_diffuse, s.has_mirror, s.has_glass);
+    printf("triangles=%zu meshes=%d spheres=%d point_lights=%d area_lights=%d materials=%d diffuse=%d mirror=%d glass=%d load_seconds=%.3f\n",
+           tris, s.num_meshes, s.num_spheres, point, area, s.num_materials, s.has_diffuse, s.has_mirror, s.has_glass,
+           (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec));
     scene_free(&s);
     return 0;
 }

@@ -29,7 +29,7 @@ while read -r scene ref; do
     fail=1
   fi
 done <<'REF'
-cornell-teapot 0.0564627
+cornell-teapot 0.0571132
 sibenik 0.35785
 conference 0.0841122
 cornell-sphere 0.0706771
