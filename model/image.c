@@ -27,14 +27,35 @@ typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const vo
 typedef int (*oiio_read_fn)(const char *, pree_image_t *, char *, size_t);
 static oiio_write_fn oiio_write;
 static oiio_read_fn oiio_read;
-static char oiio_load_error[600];
+static char oiio_load_error[8192];
 static pthread_once_t oiio_once = PTHREAD_ONCE_INIT;
 
-/* Load the module once: $PREE_OIIO_MODULE if set, else the path it was built with. */
+/* Put "<dir><name>" into out[len]; 0 if it fitted. */
+static int join_path(char *out, size_t len, const char *dir, const char *name)
+{
+    int r = snprintf(out, len, "%s%s", dir, name);
+    return r < 0 || (size_t)r >= len ? -1 : 0;
+}
+
+/* Load the module once, from the first of: $PREE_OIIO_MODULE; libpree_oiio.so beside the
+ * program or one directory up (build/pree, build/tests/test_*); the path it was built with. */
 static void oiio_load(void)
 {
-    const char *path = getenv("PREE_OIIO_MODULE");
-    if (!path || !*path) path = PREE_OIIO_MODULE;
+    static char found[4096];
+    const char *path = getenv("PREE_OIIO_MODULE");   /* an explicit choice is never second-guessed */
+    if (!path || !*path) {
+        path = PREE_OIIO_MODULE;
+        char exe[4096];
+        ssize_t len = readlink("/proc/self/exe", exe, sizeof exe - 1);
+        char *slash = len > 0 ? (exe[len] = 0, strrchr(exe, '/')) : NULL;
+        if (slash) {
+            slash[1] = 0;
+            if (join_path(found, sizeof found, exe, "libpree_oiio.so") == 0 && access(found, R_OK) == 0)
+                path = found;
+            else if (join_path(found, sizeof found, exe, "../libpree_oiio.so") == 0 && access(found, R_OK) == 0)
+                path = found;
+        }
+    }
     void *h = dlopen(path, RTLD_NOW | RTLD_LOCAL);
     if (h) {
         oiio_write = (oiio_write_fn)dlsym(h, "pree_oiio_write");
