@@ -20,17 +20,21 @@ ADISO_RTL     := rtl/pree_adiso_rec.v
 # X values are randomised so that a missing reset shows up as a mismatch.
 CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique
 
-# AFTSO configurations in the regression: EarlyReady = 1 (the default) for every NumPreu, the
-# paper's back-pressure (EarlyReady = 0) for NumPreu = 4; ctrl-sim-full builds all six.
-CTRL_AFTSO_CFGS    := p4_e0 p4_e1 p8_e1 p16_e1
-CTRL_AFTSO_CFGS_ALL := $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),p$(p)_e$(e)))
+# AFTSO configurations pP_eE[_bB]: NumPreu P, EarlyReady E, BufDepth B (default 4). The
+# regression runs EarlyReady = 1 (the default) for every NumPreu and the paper's back-pressure
+# (EarlyReady = 0) for NumPreu = 4; ctrl-sim-full adds the rest and an 8-entry buffer.
+CTRL_AFTSO_CFGS     := p4_e0 p4_e1 p8_e1 p16_e1
+CTRL_AFTSO_STD      := $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),p$(p)_e$(e)))
+CTRL_AFTSO_CFGS_ALL := $(CTRL_AFTSO_STD) p16_e1_b8
+ctrl_cfg_word = $(patsubst $(2)%,%,$(filter $(2)%,$(subst _, ,$(1))))
+ctrl_cfg_buf  = $(or $(call ctrl_cfg_word,$(1),b),4)
 CTRL_AFTSO_BENCHES := $(foreach c,$(CTRL_AFTSO_CFGS),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_AFTSO_BENCHES_ALL := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_ADISO_BENCHES := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/adiso_p$(p)/adiso_bench)
-CTRL_AFTSO_VVP     := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/icarus/aftso_$(c).vvp)
+CTRL_AFTSO_VVP     := $(foreach c,$(CTRL_AFTSO_STD),$(CTRL_DIR)/icarus/aftso_$(c).vvp)
 CTRL_ADISO_VVP     := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/icarus/adiso_p$(p).vvp)
 CTRL_VECS          := $(CTRL_AFTSO_VVP:.vvp=.ncyc) $(CTRL_ADISO_VVP:.vvp=.ncyc)
-CTRL_TOOLS         := $(CTRL_DIR)/aftso_util $(CTRL_DIR)/aftso_vecgen $(CTRL_DIR)/adiso_vecgen
+CTRL_TOOLS         := $(CTRL_DIR)/aftso_util $(CTRL_DIR)/aftso_vecgen $(CTRL_DIR)/adiso_vecgen $(CTRL_DIR)/adiso_seq
 CTRL_ALL           := $(CTRL_AFTSO_BENCHES) $(CTRL_ADISO_BENCHES) $(CTRL_AFTSO_VVP) $(CTRL_ADISO_VVP) \
                       $(CTRL_VECS) $(CTRL_TOOLS)
 
@@ -53,12 +57,14 @@ $(CTRL_DIR)/aftso_vecgen: $(CTRL_DIR)/aftso_vecgen.o $(CTRL_DIR)/aftso_model.o
 	$(CC) $^ -o $@ -lm
 $(CTRL_DIR)/adiso_vecgen: $(CTRL_DIR)/adiso_vecgen.o $(CTRL_DIR)/adiso_model.o
 	$(CC) $^ -o $@ -lm
+$(CTRL_DIR)/adiso_seq: $(CTRL_DIR)/adiso_seq.o $(CTRL_DIR)/adiso_model.o
+	$(CC) $^ -o $@ -lm
 
 # Verilator benches, one binary per configuration (the parameters are compile-time).
 define CTRL_AFTSO_RULE
-$(CTRL_DIR)/aftso_p$(1)_e$(2)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_DIR)/aftso_model.o $(CTRL_HDR)
-	$(CTRL_VERILATE) -GNumPreu=$(1) -GEarlyReady=$(2) \
-	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DEARLY_READY=$(2) -I$(abspath tb/ctrl)" \
+$(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_DIR)/aftso_model.o $(CTRL_HDR)
+	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) \
+	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -I$(abspath tb/ctrl)" \
 	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
 	  $(abspath $(CTRL_DIR)/aftso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef
@@ -86,7 +92,7 @@ $(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
 	@mkdir -p $$(@D)
 	$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
 endef
-$(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_RULE,$(p),$(e)))))
+$(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(eval $(call CTRL_AFTSO_RULE,$(c),$(call ctrl_cfg_word,$(c),p),$(call ctrl_cfg_word,$(c),e),$(call ctrl_cfg_buf,$(c)))))
 $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),$(e)))))
 $(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_RULE,$(p))))
 $(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_ICARUS_RULE,$(p))))
@@ -108,7 +114,9 @@ ctrl-lint:
 	@set -e; for p in $(CTRL_PREUS); do \
 	  for e in $(CTRL_EARLY); do verilator --lint-only -Wall -GNumPreu=$$p -GEarlyReady=$$e $(AFTSO_RTL); done; \
 	  verilator --lint-only -Wall -GNumPreu=$$p $(ADISO_RTL); done
-	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS)"
+	@verilator --lint-only -Wall -GNumPreu=16 -GBufDepth=8 $(AFTSO_RTL)
+	@verilator --lint-only -Wall -GNumPreu=4 -GBufDepth=2 $(AFTSO_RTL)
+	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS) (BufDepth 2, 4, 8)"
 
 # Synthesis: one resource line per configuration; fails on a latch or a loop.
 ctrl-synth:
@@ -123,8 +131,10 @@ CTRL_UTIL_PHOTONS ?= 1000000
 ctrl-util: $(CTRL_DIR)/aftso_util $(CTRL_AFTSO_BENCHES_ALL)
 	@set -e; { for e in $(CTRL_EARLY); do for p in $(CTRL_PREUS); do \
 	    $(CTRL_DIR)/aftso_util --preu $$p --early-ready $$e --geo 32 --photons $(CTRL_UTIL_PHOTONS); done; done; \
+	  for p in $(CTRL_PREUS); do \
+	    $(CTRL_DIR)/aftso_util --preu $$p --buf 8 --geo 32 --photons $(CTRL_UTIL_PHOTONS); done; \
 	  $(CTRL_DIR)/aftso_util --geo 32 --photons 20000 --seed 5 --write-np $(CTRL_DIR)/np_geo32.txt >/dev/null; \
-	  for p in $(CTRL_PREUS); do $(CTRL_DIR)/aftso_p$${p}_e1/aftso_bench --np-file $(CTRL_DIR)/np_geo32.txt; done; \
+	  for c in $(CTRL_AFTSO_CFGS_ALL); do $(CTRL_DIR)/aftso_$$c/aftso_bench --np-file $(CTRL_DIR)/np_geo32.txt; done; \
 	  if [ -n "$(NP_FILE)" ]; then for p in $(CTRL_PREUS); do \
 	    $(CTRL_DIR)/aftso_util --preu $$p --np-file $(NP_FILE); \
 	    $(CTRL_DIR)/aftso_p$${p}_e1/aftso_bench --np-file $(NP_FILE); done; fi; } >$(CTRL_DIR)/util.txt.tmp

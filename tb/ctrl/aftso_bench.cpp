@@ -10,7 +10,7 @@
 // Usage: aftso_bench [--seed S] [--scale K] [--np-file FILE]
 //   --scale K       photons per scenario x K (default 1)
 //   --np-file FILE  only measure utilization on these N^P values (one per line)
-// Build defines: NUM_PREU, EARLY_READY (must match the -G parameters). Exit 0 on pass.
+// Build defines: NUM_PREU, EARLY_READY, BUF_DEPTH (must match the -G parameters). Exit 0 on pass.
 #include "Vpree_aftso_hpuoc.h"
 #include "verilated.h"
 
@@ -34,8 +34,12 @@ extern "C" {
 #define EARLY_READY 1
 #endif
 
+#ifndef BUF_DEPTH
+#define BUF_DEPTH 4
+#endif
+
 static const int kWords = 6;  // DataW = 192
-static const int kBuf = 4;
+static const int kBuf = BUF_DEPTH;
 
 namespace {
 
@@ -259,8 +263,8 @@ int main(int argc, char **argv) {
     std::vector<uint32_t> np = read_np(np_file);
     Scenario s{"np-file", 0, 0.0, 0.0, 0, true};
     double u = run(b, s, &np, seed);
-    std::printf("aftso rtl np-file=%s preu=%d early_ready=%d photons=%zu ops=%ld cycles=%ld utilization=%.6f%% checks=%ld errors=%ld\n",
-                np_file, NUM_PREU, EARLY_READY, np.size(), b.ops, b.cycles, 100.0 * u, b.checks, b.errors);
+    std::printf("aftso rtl np-file=%s preu=%d buf=%d early_ready=%d photons=%zu ops=%ld cycles=%ld utilization=%.6f%% checks=%ld errors=%ld\n",
+                np_file, NUM_PREU, BUF_DEPTH, EARLY_READY, np.size(), b.ops, b.cycles, 100.0 * u, b.checks, b.errors);
     return b.errors ? 1 : 0;
   }
 
@@ -285,8 +289,8 @@ int main(int argc, char **argv) {
     if (i == 0) util_geo = u;
     std::printf("  %-20s cycles=%-8ld ops=%-8ld utilization=%.4f%%\n", s.name, b.cycles - c0, b.ops - o0, 100.0 * u);
   }
-  std::printf("aftso rtl-vs-model preu=%d early_ready=%d seed=%" PRIu64 " cycles=%ld ops=%ld checks=%ld errors=%ld geo32_utilization=%.4f%% %s\n",
-              NUM_PREU, EARLY_READY, seed, b.cycles, b.ops, b.checks, b.errors, 100.0 * util_geo,
+  std::printf("aftso rtl-vs-model preu=%d buf=%d early_ready=%d seed=%" PRIu64 " cycles=%ld ops=%ld checks=%ld errors=%ld geo32_utilization=%.4f%% %s\n",
+              NUM_PREU, BUF_DEPTH, EARLY_READY, seed, b.cycles, b.ops, b.checks, b.errors, 100.0 * util_geo,
               b.errors ? "FAIL" : "PASS");
   return b.errors ? 1 : 0;
 }
