@@ -16,6 +16,8 @@
  *   preu_radiance(L, hp, ne)    one radiance evaluation step (Eq. 9): L += tau * (1/((PI*r2)*NE))
  *   preu_n_emitted(count)       NE = the photon count rounded once to binary32
  *
+ * Bit-exactness needs binary32 evaluation with no contraction: build with -ffp-contract=off and
+ * no fast-math (the project's flags), also in C++ harnesses that include this header.
  * None of these can fail; NaN and infinity inputs give the results documented in the datapath
  * document (a NaN distance or radius never accepts). */
 #ifndef PREE_PREU_FP32_H

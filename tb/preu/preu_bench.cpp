@@ -1,7 +1,7 @@
 // preu_bench.cpp: Verilator bench for rtl/pree_preu.v in both modes, scoreboarded bit for bit
 // against model/preu_fp32.c (expected values computed by tb/preu/preu_vec.c).
 //
-// Usage: preu_bench [count [seed]]   (defaults 200000, 1)
+// Usage: preu_bench [count [seed]] [+trace=FILE.fst]   (defaults 200000, 1; no trace)
 // The sequence (preu_seq_gen) starts with directed cases, then alternates update and radiance
 // phases of random length with back-to-back and gapped valid_i. The bench behaves as a top
 // would: it switches mode_i only in a cycle where busy_o = 0, answers lreq_o by driving the
@@ -14,11 +14,13 @@
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <deque>
 #include <memory>
 #include <vector>
 
 #include "verilated.h"
+#include "verilated_fst_c.h"
 #include "Vpree_preu.h"
 #include "preu_vec.h"
 
@@ -59,14 +61,35 @@ bool eq96(const VlWide<3> &port, const uint32_t *w)
 
 int main(int argc, char **argv)
 {
-    int count = argc > 1 ? std::atoi(argv[1]) : 200000;
-    uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 0) : 1;
+    std::vector<const char *> pos;
+    for (int i = 1; i < argc; i++) if (argv[i][0] != '+') pos.push_back(argv[i]);
+    int count = pos.size() > 0 ? std::atoi(pos[0]) : 200000;
+    uint64_t seed = pos.size() > 1 ? std::strtoull(pos[1], nullptr, 0) : 1;
     if (count < 1) { std::fprintf(stderr, "preu_bench: count must be >= 1\n"); return 2; }
 
     // The context holds simulation time and the command-line plusargs for the model.
     const std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
     ctx->commandArgs(argc, argv);
+    // Tracing is compiled in but off unless +trace=FILE is given; it must be enabled before
+    // the model is built.
+    const char *trace_arg = ctx->commandArgsPlusMatch("trace=");
+    const bool tracing = trace_arg && trace_arg[0];
+    if (tracing) ctx->traceEverOn(true);
     const std::unique_ptr<Vpree_preu> dut{new Vpree_preu{ctx.get()}};
+    std::unique_ptr<VerilatedFstC> tfp;
+    if (tracing) {
+        tfp.reset(new VerilatedFstC);
+        dut->trace(tfp.get(), 99);
+        tfp->open(trace_arg + std::strlen("+trace="));
+    }
+    uint64_t t = 0;
+    // One half clock period: drive clk, evaluate, dump the trace.
+    auto edge = [&](int clk) {
+        dut->clk_i = clk;
+        dut->eval();
+        if (tfp) tfp->dump(t);
+        t += 5;
+    };
 
     std::vector<preu_vec_t> seq(count);
     preu_seq_gen(seq.data(), count, seed);
@@ -74,7 +97,7 @@ int main(int argc, char **argv)
     // Reset: two cycles with rst_ni low, inputs idle.
     dut->clk_i = 0; dut->rst_ni = 0; dut->valid_i = 0; dut->mode_i = 0;
     dut->eval();
-    for (int i = 0; i < 2; i++) { dut->clk_i = 1; dut->eval(); dut->clk_i = 0; dut->eval(); }
+    for (int i = 0; i < 2; i++) { edge(1); edge(0); }
     dut->rst_ni = 1;
     dut->eval();
 
@@ -178,11 +201,12 @@ int main(int argc, char **argv)
             results.pop_front();
         }
 
-        dut->clk_i = 1; dut->eval();
-        dut->clk_i = 0; dut->eval();
+        edge(1);
+        edge(0);
         cycle++;
     }
     dut->final();
+    if (tfp) tfp->close();
 
     bool ok = errors == 0 && checked == (uint64_t)count && results.empty();
     std::printf("preu_bench: seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "

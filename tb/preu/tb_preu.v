@@ -89,7 +89,8 @@ module tb_preu;
     hp_pos = 0; hp_f = 0; hp_tau = 0; hp_r2 = 0; hp_n = 0; ph_pos = 0; ph_phi = 0;
     can_switch = 1'b0;
     repeat (2) @(posedge clk);
-    rst_n <= 1'b1;
+    @(negedge clk);
+    rst_n = 1'b1;
   end
 
   // At each rising edge: check the outputs of the cycle that ends, then drive the next cycle's
@@ -102,14 +103,14 @@ module tb_preu;
       else begin
         if (tag_out != expect_next)
           fail("result out of order (tag)", expect_next);
-        else if (cycle != issue_cycle[expect_next] + (vec[b] ? 12 : 10))
+        else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? 12 : 10))
           fail("wrong latency", expect_next);
         else if (vec[b] == 0 && (accept !== vec[b+23][0] || tau_out !== w96(b+24) ||
                                  r2_out !== vec[b+27] || n_out !== vec[b+28]))
           fail("update result", expect_next);
         else if (vec[b] == 1 && (accept !== 1'b0 || l_out !== w96(b+29)))
           fail("radiance result", expect_next);
-        accepted = accepted + (vec[b] == 0 && accept);
+        if (vec[b] == 0 && accept) accepted = accepted + 1;
         checked = checked + 1;
         expect_next = expect_next + 1;
       end
@@ -123,10 +124,10 @@ module tb_preu;
       b = next * W;
       if (gap_left > 0) begin
         gap_left = gap_left - 1;
-      end else if (vec[b] != mode && !can_switch) begin
+      end else if (vec[b][0] != mode && !can_switch) begin
         // wait for the drain
       end else begin
-        if (vec[b] != mode) switches = switches + 1;
+        if (vec[b][0] != mode) switches = switches + 1;
         mode   <= vec[b][0];
         valid  <= 1'b1;
         tag    <= next;
