@@ -17,8 +17,9 @@ CTRL_HDR      := $(wildcard tb/ctrl/*.h)
 AFTSO_RTL     := rtl/pree_aftso_hpuoc.v
 ADISO_RTL     := rtl/pree_adiso_rec.v
 # Verilator: -O3 and the default output split favour simulation speed (OPT_FAST in the manual);
-# X values are randomised so that a missing reset shows up as a mismatch.
-CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique
+# X values are randomised so that a missing reset shows up as a mismatch; PREE_ASSERT turns on
+# the RTL's simulation-only invariant checks.
+CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique +define+PREE_ASSERT
 
 # AFTSO configurations pP_eE[_bB]: NumPreu P, EarlyReady E, BufDepth B (default 4). The
 # regression runs EarlyReady = 1 (the default) for every NumPreu and the paper's back-pressure
@@ -79,7 +80,7 @@ endef
 define CTRL_AFTSO_ICARUS_RULE
 $(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).vvp: tb/ctrl/aftso_tb.v $(AFTSO_RTL)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$^
+	iverilog -g2005 -Wall -DPREE_ASSERT -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$^
 $(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).ncyc: $(CTRL_DIR)/aftso_vecgen
 	@mkdir -p $$(@D)
 	$$< --preu $(1) --early-ready $(2) --seed $(1)$(2)7 --cycles 3000 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
@@ -116,6 +117,7 @@ ctrl-lint:
 	  verilator --lint-only -Wall -GNumPreu=$$p $(ADISO_RTL); done
 	@verilator --lint-only -Wall -GNumPreu=16 -GBufDepth=8 $(AFTSO_RTL)
 	@verilator --lint-only -Wall -GNumPreu=4 -GBufDepth=2 $(AFTSO_RTL)
+	@verilator --lint-only -Wall +define+PREE_ASSERT $(AFTSO_RTL)
 	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS) (BufDepth 2, 4, 8)"
 
 # Synthesis: one resource line per configuration; fails on a latch or a loop.

@@ -297,9 +297,10 @@ module pree_aftso_hpuoc #(
   end
 
 `ifdef PREE_ASSERT
-  // valid_q stays a thermometer code; a valid entry never has rem = 0.
+  // Simulation-only checks (the benches define PREE_ASSERT): valid_q stays a thermometer code
+  // and a valid entry never has rem = 0.
   integer a;
-  always @(posedge clk_i) begin
+  always @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
       for (a = 1; a < BufDepth; a = a + 1)
         if (valid_q[a] && !valid_q[a-1]) $fatal(1, "pree_aftso_hpuoc: valid_q not a thermometer");
