@@ -5,12 +5,14 @@
 #                          Icarus (directed + FP32_IV_QUICK random per unit); part of `make sim`
 #   make sim-fp32-full     thorough level: FP32_FULL random per unit in Verilator (>= 10 million)
 #                          and FP32_IV_FULL per unit in Icarus
-#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp)
-#   make lint-fp32         verilator --lint-only -Wall on every unit
+#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp div8)
+#   make lint-fp32         verilator --lint-only -Wall on every unit and divider configuration
 #   make synth-fp32        yosys synth_xilinx per unit, latch and loop checks, resource table
 #                          in $(BUILD)/fp32/synth/resources.md
+# "div8" is the divider's deeper configuration (parameter Stages = 8, latency 8); it goes
+# through the same benches as the default (Stages = 4).
 
-FP32_UNITS    := add mul sqr div cmp
+FP32_UNITS    := add mul sqr div cmp div8
 FP32_DIR      := $(BUILD)/fp32
 FP32_RTL      := $(wildcard rtl/pree_fp32_*.v)
 FP32_QUICK    ?= 1000000
@@ -40,23 +42,24 @@ $(FP32_DIR)/fp32_gen.o: tb/fp32/fp32_gen.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
 $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	$(CC) $(FP32_CFLAGS) $< $(FP32_DIR)/fp32_gen.o -o $@ -lm
 
-# Per unit: Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation,
-# quick and full runs. --x-assign/--x-initial unique: no reliance on X or initial values.
+# Per configuration $(1): the RTL unit $(2), Verilator -G/-D flags $(3), Icarus -D flags $(4).
+# Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation, quick and
+# full runs. --x-assign/--x-initial unique: no reliance on X or initial values.
 define FP32_UNIT_RULES
 $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique \
-	  -Mdir $(FP32_DIR)/vl_$(1) --top-module pree_fp32_$(1) -y rtl rtl/pree_fp32_$(1).v \
+	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
+	  -Mdir $(FP32_DIR)/vl_$(1) --top-module pree_fp32_$(2) -y rtl rtl/pree_fp32_$(2).v \
 	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
-	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(1) | tr a-z A-Z) -I$(abspath tb/fp32) -I$(abspath model)" \
+	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model)" \
 	  -o fp32_bench_$(1) > $(FP32_DIR)/vl_$(1).build.log 2>&1 \
 	  || { tail -30 $(FP32_DIR)/vl_$(1).build.log; exit 1; }
 
 $(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall $(if $(filter cmp,$(1)),,-DUNIT_$(shell echo $(1) | tr a-z A-Z)) \
-	  -o $$@ -y rtl $(if $(filter cmp,$(1)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
-	  rtl/pree_fp32_$(1).v
+	iverilog -g2005 -Wall $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
+	  -o $$@ -y rtl $(if $(filter cmp,$(2)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
+	  rtl/pree_fp32_$(2).v
 
 .PHONY: sim-fp32-vl-$(1) sim-fp32-iv-$(1) sim-fp32-full-vl-$(1) sim-fp32-full-iv-$(1)
 sim-fp32-vl-$(1): $(FP32_DIR)/vl_$(1)/fp32_bench_$(1)
@@ -66,23 +69,26 @@ sim-fp32-full-vl-$(1): $(FP32_DIR)/vl_$(1)/fp32_bench_$(1)
 	$$< $(FP32_FULL) $(FP32_SEED)
 
 sim-fp32-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
-	$(FP32_DIR)/fp32_vecgen $(1) $(FP32_IV_QUICK) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_quick.txt
+	$(FP32_DIR)/fp32_vecgen $(2) $(FP32_IV_QUICK) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_quick.txt
 	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_quick.txt +seed=$(FP32_SEED)
 
 sim-fp32-full-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
-	$(FP32_DIR)/fp32_vecgen $(1) $(FP32_IV_FULL) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_full.txt
+	$(FP32_DIR)/fp32_vecgen $(2) $(FP32_IV_FULL) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_full.txt
 	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_full.txt +seed=$(FP32_SEED)
 endef
-$(foreach u,$(FP32_UNITS),$(eval $(call FP32_UNIT_RULES,$(u))))
+$(foreach u,add mul sqr div cmp,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
+$(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAGES=8))
 
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
 sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u))
 
-# Lint: every unit as a top, with the helpers it instantiates; warnings are errors.
+# Lint: every unit as a top, with the helpers it instantiates, and the divider at Stages 2, 4
+# and 8; warnings are errors.
 lint-fp32: | $(DEPS_STAMP)
-	@set -e; for u in $(FP32_UNITS); do \
-	  echo "verilator --lint-only -Wall -y rtl --top-module pree_fp32_$$u rtl/pree_fp32_$$u.v"; \
-	  verilator --lint-only -Wall -y rtl --top-module pree_fp32_$$u rtl/pree_fp32_$$u.v; \
+	@set -e; for u in add mul sqr div cmp "div -GStages=2" "div -GStages=8"; do \
+	  set -- $$u; \
+	  echo "verilator --lint-only -Wall $$2 -y rtl --top-module pree_fp32_$$1 rtl/pree_fp32_$$1.v"; \
+	  verilator --lint-only -Wall $$2 -y rtl --top-module pree_fp32_$$1 rtl/pree_fp32_$$1.v; \
 	done
 
 # Synthesis: one Yosys run per unit (scripts/fp32_synth.sh), then the resource/depth table.

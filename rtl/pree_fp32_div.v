@@ -1,25 +1,31 @@
-// pree_fp32_div: IEEE-754 binary32 divider, round to nearest even, 4 pipeline stages,
-// fully pipelined (one new division every cycle).
+// pree_fp32_div: IEEE-754 binary32 divider, round to nearest even, fully pipelined (one new
+// division every cycle), Stages pipeline stages (4 by default, the paper's).
 //
 // y = a / b. Subnormal inputs and outputs in full, signed zeros, overflow to a signed infinity,
 // x / 0 -> signed infinity for finite non-zero x. NaN result (x86-64 SSE rule): a NaN -> a
 // quieted; else b NaN -> b quieted; else 0 / 0 or inf / inf -> 0xFFC00000.
 //
+// Parameter Stages (2 .. 8): the latency. 4 matches the paper; 8 halves the logic depth per
+// stage for FPGA clock rates. Every configuration is bit-identical and passes the same benches.
+//
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
-// appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
-// y_o holds its last value while valid_o is low. Only the valid bits are reset.
+// appears on y_o with valid_o exactly LATENCY (= Stages) edges later; one operation may enter
+// every cycle. y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
 // Datapath: both significands are normalised (pree_fp32_unpack), so their quotient lies in
 // (1/2, 2). A restoring radix-2 array (pree_fp32_div_steps) produces 26 quotient bits of
 // weights 2^0 .. 2^-25: 24 significant bits and a guard bit whichever binade the quotient is in;
 // the final remainder (non-zero: inexact) and the last bit form the sticky bit.
-// Stage 1: unpack, special cases, exponent difference, STEPS1 quotient bits.
-// Stage 2: STEPS2 quotient bits.        Stage 3: STEPS3 quotient bits.
-// Stage 4: STEPS4 quotient bits, one-bit normalisation, pree_fp32_round (with the shift into
-//          the subnormal range), final mux with the special result.
+// Stage 1 also unpacks and decides special results (carried beside the datapath to the final
+// mux); the last stage also normalises by one bit and rounds (pree_fp32_round). The quotient
+// bits are spread so that the unpack and the rounding each weigh about three division steps:
+// stage k ends with BITS_DONE(k) = round(32 k / Stages) - 3 bits (clamped to 0 .. 26), which
+// gives 5 / 8 / 8 / 5 bits for Stages = 4 and 1 / 4 / 4 / 4 / 4 / 4 / 4 / 1 for Stages = 8.
 `default_nettype none
 
-module pree_fp32_div (
+module pree_fp32_div #(
+  parameter Stages = 4
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -29,14 +35,22 @@ module pree_fp32_div (
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = 4;
-  // Quotient bits per stage (26 in all); the first and last stages also unpack and round.
-  localparam STEPS1 = 5;
-  localparam STEPS2 = 8;
-  localparam STEPS3 = 8;
-  localparam STEPS4 = 26 - STEPS1 - STEPS2 - STEPS3;
+  localparam LATENCY = Stages;
+  localparam QW      = 26;                      // quotient bits
+  // Per-stage pipeline word: remainder, quotient, divisor, exponent, sign, special flag and value.
+  localparam W       = 25 + QW + 24 + 10 + 1 + 1 + 32;
 
-  // ---------------------------------------------------------------- stage 1: unpack, first bits
+  // Quotient bits completed at the end of stage k (k = 0 .. Stages).
+  function integer bits_done;
+    input integer k;
+    begin
+      bits_done = (k * 32 + Stages / 2) / Stages - 3;
+      if (k == 0 || bits_done < 0) bits_done = 0;
+      if (k == Stages || bits_done > QW) bits_done = QW;
+    end
+  endfunction
+
+  // ---------------------------------------------------------------- stage 1 input: unpack
   wire        sign_a, sign_b, zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
   wire [9:0]  exp_a, exp_b;
   wire [23:0] man_a, man_b;
@@ -67,14 +81,6 @@ module pree_fp32_div (
     else                                             special_d   = 1'b0;
   end
 
-  // The dividend significand seeds the partial remainder (man_a < 2^24 <= 2 * man_b).
-  wire [24:0] rem0 = {1'b0, man_a};
-  wire [24:0] rem1_d;
-  wire [25:0] quo1_d;
-  pree_fp32_div_steps #(.Steps(STEPS1)) u_steps1 (
-    .rem_i (rem0), .den_i (man_b), .quo_i (26'd0), .rem_o (rem1_d), .quo_o (quo1_d)
-  );
-
   // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
   reg [LATENCY-1:0] valid_q;
 
@@ -83,94 +89,61 @@ module pree_fp32_div (
     else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
   end
 
-  // Stage k registers carry the partial remainder, quotient, divisor, exponent, sign, special.
-  reg [24:0] s1_rem_q, s2_rem_q, s3_rem_q;
-  reg [25:0] s1_quo_q, s2_quo_q, s3_quo_q;
-  reg [23:0] s1_den_q, s2_den_q, s3_den_q;
-  reg [9:0]  s1_exp_q, s2_exp_q, s3_exp_q;
-  reg        s1_sign_q, s2_sign_q, s3_sign_q;
-  reg        s1_special_q, s2_special_q, s3_special_q;
-  reg [31:0] s1_special_y_q, s2_special_y_q, s3_special_y_q;
+  // word[k] is what stage k+1 works on: word[0] comes from the inputs (the dividend significand
+  // seeds the partial remainder: man_a < 2^24 <= 2 * man_b), word[k] is the stage-k register.
+  wire [W-1:0] word [0:Stages-1];
+  assign word[0] = {{1'b0, man_a}, {QW{1'b0}}, man_b, exp_d, sign_y, special_d, special_y_d};
 
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_rem_q       <= rem1_d;
-      s1_quo_q       <= quo1_d;
-      s1_den_q       <= man_b;
-      s1_exp_q       <= exp_d;
-      s1_sign_q      <= sign_y;
-      s1_special_q   <= special_d;
-      s1_special_y_q <= special_y_d;
+  genvar k;
+  generate
+    for (k = 1; k <= Stages; k = k + 1) begin : g_stage
+      // Unpack this stage's input word.
+      wire [24:0] rem_in  = word[k-1][W-1 -: 25];
+      wire [QW-1:0] quo_in = word[k-1][W-26 -: QW];
+      wire [23:0] den     = word[k-1][W-26-QW -: 24];
+      wire [9:0]  exp_v   = word[k-1][W-50-QW -: 10];
+      wire        sign_v  = word[k-1][33];
+      wire        spec_v  = word[k-1][32];
+      wire [31:0] spec_y  = word[k-1][31:0];
+      wire        load    = (k == 1) ? valid_i : valid_q[(k > 1) ? k - 2 : 0];
+
+      wire [24:0]   rem_out;
+      wire [QW-1:0] quo_out;
+      pree_fp32_div_steps #(.Steps(bits_done(k) - bits_done(k - 1))) u_steps (
+        .rem_i (rem_in), .den_i (den), .quo_i (quo_in), .rem_o (rem_out), .quo_o (quo_out)
+      );
+
+      if (k < Stages) begin : g_mid
+        reg [W-1:0] word_q;
+        always @(posedge clk_i) begin
+          if (load) word_q <= {rem_out, quo_out, den, exp_v, sign_v, spec_v, spec_y};
+        end
+        assign word[k] = word_q;
+      end else begin : g_last
+        // Quotient in [1, 2): bits 25..2 significant, bit 1 guard; in (1/2, 1): bits 24..1, 0.
+        wire        top      = quo_out[QW-1];
+        wire [26:0] norm_man = top ? {quo_out[25:1], 2'b00} : {quo_out[24:0], 2'b00};
+        wire        sticky   = (rem_out != 25'd0) | (top & quo_out[0]);
+        wire [9:0]  norm_exp = exp_v - {9'd0, ~top};
+        wire [31:0] rounded;
+
+        pree_fp32_round #(.Denorm(1)) u_round (
+          .sign_i   (sign_v),
+          .exp_i    (norm_exp),
+          .man_i    (norm_man),
+          .sticky_i (sticky),
+          .y_o      (rounded)
+        );
+
+        reg [31:0] y_q;
+        always @(posedge clk_i) begin
+          if (load) y_q <= spec_v ? spec_y : rounded;
+        end
+        assign y_o = y_q;
+      end
     end
-  end
-
-  // ---------------------------------------------------------------- stage 2
-  wire [24:0] rem2_d;
-  wire [25:0] quo2_d;
-  pree_fp32_div_steps #(.Steps(STEPS2)) u_steps2 (
-    .rem_i (s1_rem_q), .den_i (s1_den_q), .quo_i (s1_quo_q), .rem_o (rem2_d), .quo_o (quo2_d)
-  );
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) begin
-      s2_rem_q       <= rem2_d;
-      s2_quo_q       <= quo2_d;
-      s2_den_q       <= s1_den_q;
-      s2_exp_q       <= s1_exp_q;
-      s2_sign_q      <= s1_sign_q;
-      s2_special_q   <= s1_special_q;
-      s2_special_y_q <= s1_special_y_q;
-    end
-  end
-
-  // ---------------------------------------------------------------- stage 3
-  wire [24:0] rem3_d;
-  wire [25:0] quo3_d;
-  pree_fp32_div_steps #(.Steps(STEPS3)) u_steps3 (
-    .rem_i (s2_rem_q), .den_i (s2_den_q), .quo_i (s2_quo_q), .rem_o (rem3_d), .quo_o (quo3_d)
-  );
-
-  always @(posedge clk_i) begin
-    if (valid_q[1]) begin
-      s3_rem_q       <= rem3_d;
-      s3_quo_q       <= quo3_d;
-      s3_den_q       <= s2_den_q;
-      s3_exp_q       <= s2_exp_q;
-      s3_sign_q      <= s2_sign_q;
-      s3_special_q   <= s2_special_q;
-      s3_special_y_q <= s2_special_y_q;
-    end
-  end
-
-  // ---------------------------------------------------------------- stage 4: last bits, round
-  wire [24:0] rem4;
-  wire [25:0] quo4;
-  pree_fp32_div_steps #(.Steps(STEPS4)) u_steps4 (
-    .rem_i (s3_rem_q), .den_i (s3_den_q), .quo_i (s3_quo_q), .rem_o (rem4), .quo_o (quo4)
-  );
-
-  // Quotient in [1, 2): bits 25..2 significant, bit 1 guard; in (1/2, 1): bits 24..1, bit 0.
-  wire        top      = quo4[25];
-  wire [26:0] norm_man = top ? {quo4[25:1], 2'b00} : {quo4[24:0], 2'b00};
-  wire        sticky   = (rem4 != 25'd0) | (top & quo4[0]);
-  wire [9:0]  norm_exp = s3_exp_q - {9'd0, ~top};
-  wire [31:0] rounded;
-
-  pree_fp32_round #(.Denorm(1)) u_round (
-    .sign_i   (s3_sign_q),
-    .exp_i    (norm_exp),
-    .man_i    (norm_man),
-    .sticky_i (sticky),
-    .y_o      (rounded)
-  );
-
-  reg [31:0] s4_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[2]) s4_y_q <= s3_special_q ? s3_special_y_q : rounded;
-  end
+  endgenerate
 
   assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s4_y_q;
 
 endmodule

@@ -18,8 +18,8 @@ chain CI -> CO counts one level per CARRY4, the real critical path of a wide add
   dsp         = 1 when some path of the stage passes through a DSP48E1 (combinational multiply).
 A DSP48E1 whose output register is used (PREG = 1) holds a pipeline register: its multiply
 ends a path and its outputs start new ones.
-The stage of an endpoint is read from the register name its flip-flop drives: s<k>_*_q is the
-stage-k register, valid_q[k] belongs to stage k+1; a primary output driven by logic (the
+The stage of an endpoint is read from the register name its flip-flop drives: s<k>_*_q and
+g_stage[<k>].*_q are stage-k registers, valid_q[k] belongs to stage k+1; a primary output driven by logic (the
 combinational comparator) is stage 0. IBUF/OBUF/BUFG cells count zero levels.
 """
 import json
@@ -48,8 +48,9 @@ def weight(cell_type):
 
 
 def stage_of(names):
+    """Stage of a register from its name: s<k>_*_q, or g_stage[<k>].*_q in generate loops."""
     for n in names:
-        m = re.match(r"^\\?s(\d+)_\w*_q$", n)
+        m = re.match(r"^\\?s(\d+)_\w*_q$", n) or re.match(r"^\\?g_stage\[(\d+)\]\..*_q$", n)
         if m:
             return int(m.group(1))
     return None

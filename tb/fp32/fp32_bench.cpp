@@ -1,7 +1,8 @@
 // fp32_bench.cpp: Verilator bench for one binary32 unit, checked bit for bit against
 // model/fp32_ops.h (through fp32_gen.c).
 //
-// Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP> and the matching Verilated model.
+// Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP> and the matching Verilated model
+// (for a divider built with -GStages=N, also -DFP32_DIV_STAGES=N).
 // Usage: fp32_bench_<unit> [random_count [seed]]  (defaults 200000, 1). Runs the directed list,
 // then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
 // density) and a scoreboard keyed on the handshake: an expected result is pushed when an
@@ -36,7 +37,10 @@ static const int LATENCY = 2;
 #include "Vpree_fp32_div.h"
 typedef Vpree_fp32_div Dut;
 static const fp32_unit_t UNIT = FP32_DIV;
-static const int LATENCY = 4;
+#ifndef FP32_DIV_STAGES
+#define FP32_DIV_STAGES 4   // the model's Stages parameter (-GStages=N), the latency
+#endif
+static const int LATENCY = FP32_DIV_STAGES;
 #elif defined(FP32_UNIT_CMP)
 #include "Vpree_fp32_cmp.h"
 typedef Vpree_fp32_cmp Dut;
@@ -195,9 +199,9 @@ int main(int argc, char **argv)
     int protocol_error = run(*dut, src, sb);
     dut->final();
 
-    std::printf("pree_fp32_%s: %zu directed + %" PRIu64 " random (seed %" PRIu64 "): "
+    std::printf("pree_fp32_%s (latency %d): %zu directed + %" PRIu64 " random (seed %" PRIu64 "): "
                 "%" PRIu64 " checked, %" PRIu64 " mismatches%s\n",
-                fp32_unit_name(UNIT), src.directed, count, seed, sb.checked, sb.errors,
+                fp32_unit_name(UNIT), LATENCY, src.directed, count, seed, sb.checked, sb.errors,
                 protocol_error ? ", handshake error" : "");
     if (sb.errors || protocol_error || sb.checked != src.total) {
         std::printf("FAIL: rerun with: %s %" PRIu64 " %" PRIu64 "\n", argv[0], count, seed);

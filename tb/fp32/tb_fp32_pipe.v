@@ -1,6 +1,7 @@
 // tb_fp32_pipe: self-checking Icarus/Verilog-2005 testbench for one pipelined binary32 unit.
 //
-// The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR or -DUNIT_DIV.
+// The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR or -DUNIT_DIV (with
+// -DDIV_STAGES=N for a divider configured with Stages = N; 4 by default).
 // Run: vvp -N <sim> +vec=<file> [+seed=<n>]; the vector file comes from fp32_vecgen
 // ("a b sub expected" in hex per line). Operations enter with random gaps in valid_i; each
 // accepted operation's expected result goes into a FIFO and is compared, bit for bit, when
@@ -20,7 +21,10 @@ module tb_fp32_pipe;
   localparam LAT = 2;
   localparam [8*3-1:0] NAME = "sqr";
 `elsif UNIT_DIV
-  localparam LAT = 4;
+`ifndef DIV_STAGES
+`define DIV_STAGES 4
+`endif
+  localparam LAT = `DIV_STAGES;
   localparam [8*3-1:0] NAME = "div";
 `endif
   localparam FIFO = 16;       // > LAT: room for every operation in flight
@@ -45,7 +49,7 @@ module tb_fp32_pipe;
   pree_fp32_sqr dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a),
                      .valid_o(valid_out), .y_o(y));
 `elsif UNIT_DIV
-  pree_fp32_div dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .b_i(b),
+  pree_fp32_div #(.Stages(`DIV_STAGES)) dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .b_i(b),
                      .valid_o(valid_out), .y_o(y));
 `endif
 
@@ -123,8 +127,8 @@ module tb_fp32_pipe;
     end
 
     $fclose(fd);
-    $display("tb_fp32_pipe %0s: %0d vectors, %0d checked, %0d mismatches", NAME, vectors, checked,
-             errors);
+    $display("tb_fp32_pipe %0s (latency %0d): %0d vectors, %0d checked, %0d mismatches",
+             NAME, LAT, vectors, checked, errors);
     if (errors != 0 || checked != vectors || vectors == 0)
       $fatal(1, "tb_fp32_pipe %0s: FAILED", NAME);
     $finish;
