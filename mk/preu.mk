@@ -1,7 +1,8 @@
 # PREU (rtl/pree_preu.v): lint, Verilator bench scoreboarded against model/preu_fp32.c,
 # self-checking Icarus bench over a C-generated vector file, Yosys synthesis.
 #   make sim-preu        Verilator C++ bench (PREU_N ops) + the Verilog bench over PREU_IV_N vectors
-#                        under Icarus and under Verilator --binary, both modes
+#                        under Icarus and under Verilator --binary, both modes, and a run that
+#                        breaks the mode-switch rule, which the RTL assertion must stop
 #   make sim-preu-full   the thorough level: PREU_N_FULL Verilator ops over several seeds
 #   make wave-preu       an FST waveform of a short Verilator run (PREU_N=200 recommended)
 #   make lint-preu       verilator --lint-only -Wall, with and without PREE_ASSERT, TagW 1/8/32
@@ -23,7 +24,7 @@ PREU_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -Wall -Wextra -Imodel -Itb/preu
 PREU_C_OBJ  := $(PREU_DIR)/preu_fp32.o $(PREU_DIR)/preu_vec.o
 PREU_BENCH  := $(PREU_DIR)/vl/preu_bench
 
-.PHONY: wave-preu lint-preu sim-preu sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-full synth-preu yosys-check-preu
+.PHONY: sim-preu-badswitch wave-preu lint-preu sim-preu sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-full synth-preu yosys-check-preu
 LINT_TARGETS  += lint-preu
 SIM_TARGETS   += sim-preu
 SYNTH_TARGETS += synth-preu
@@ -82,7 +83,20 @@ $(PREU_DIR)/vlbin/tb_preu_$(PREU_IV_N)_$(PREU_SEED): tb/preu/tb_preu.v $(PREU_SR
 sim-preu-vlbin: $(PREU_DIR)/vlbin/tb_preu_$(PREU_IV_N)_$(PREU_SEED)
 	$<
 
-sim-preu: sim-preu-vl sim-preu-iv sim-preu-vlbin
+# The mode-switch assertion must fire when the bench switches modes with operations in flight.
+sim-preu-badswitch: $(PREU_DIR)/preu_vec_bad.hex tb/preu/tb_preu.v $(PREU_SRCS)
+	iverilog -g2005 -DPREE_ASSERT -Irtl -s tb_preu -Ptb_preu.NOps=100 -Ptb_preu.BadSwitch=1 \
+	  -Ptb_preu.VecFile='"$(PREU_DIR)/preu_vec_bad.hex"' -o $(PREU_DIR)/tb_preu_badswitch.vvp \
+	  tb/preu/tb_preu.v $(PREU_SRCS)
+	if vvp -N $(PREU_DIR)/tb_preu_badswitch.vvp >$(PREU_DIR)/badswitch.log 2>&1; then \
+	  echo "sim-preu-badswitch: the run passed, but it switched modes while busy"; exit 1; fi
+	grep -q 'mode_i changed while operations were in flight' $(PREU_DIR)/badswitch.log || \
+	  { tail -5 $(PREU_DIR)/badswitch.log; echo "sim-preu-badswitch: failed, but not by the assertion"; exit 1; }
+	@echo "sim-preu-badswitch: the mode-switch assertion fired as it must"
+$(PREU_DIR)/preu_vec_bad.hex: $(PREU_DIR)/preu_vecgen
+	$(PREU_DIR)/preu_vecgen 100 1 $@
+
+sim-preu: sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-badswitch
 
 sim-preu-full: $(PREU_BENCH)
 	for s in 1 2 3 4 5; do $(PREU_BENCH) $(PREU_N_FULL) $$s || exit 1; done

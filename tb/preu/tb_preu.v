@@ -7,12 +7,15 @@
 // the operation's pixel sum on l_i in the next cycle, and drives junk on unread inputs. Every
 // result is checked against its vector by tag, with its latency (10 update, 12 radiance);
 // the first 20 mismatches are printed; any failure ends in $fatal (run as `vvp -N`).
+// With BadSwitch = 1 it breaks the mode-switch rule on purpose: pree_preu's PREE_ASSERT check
+// must then stop the run (mk/preu.mk: sim-preu-badswitch expects that failure).
 `timescale 1ns / 1ps
 `default_nettype none
 
 module tb_preu;
   parameter NOps    = 100;
   parameter VecFile = "preu_vec.hex";
+  parameter BadSwitch = 0;   // 1: switch modes without waiting for the drain (the RTL must stop)
   localparam W = 32;
 
   reg [31:0] vec [0:NOps*W-1];
@@ -124,7 +127,7 @@ module tb_preu;
       b = next * W;
       if (gap_left > 0) begin
         gap_left = gap_left - 1;
-      end else if (vec[b][0] != mode && !can_switch) begin
+      end else if (vec[b][0] != mode && !can_switch && BadSwitch == 0) begin
         // wait for the drain
       end else begin
         if (vec[b][0] != mode) switches = switches + 1;
