@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # The fp32 benches can fail: each mutant below breaks one rule of the binary32 units (tie
 # rounding, signed zero, NaN priority, latency, -0 == +0) in a copy of rtl/,
-# and the Verilator bench of the affected unit must then report mismatches and exit non-zero.
-# A mutant that passes its bench fails this check.
+# and both the Verilator bench and the Icarus testbench of the affected unit must then report
+# mismatches and exit non-zero. A mutant that passes either fails this check.
 set -u
 cd "$(dirname "$0")/../.."
-make --no-print-directory -s build/fp32/fp32_gen.o >/dev/null || { echo "FAILED: make build/fp32/fp32_gen.o"; exit 1; }
+make --no-print-directory -s build/fp32/fp32_gen.o build/fp32/fp32_vecgen >/dev/null \
+  || { echo "FAILED: make build/fp32/fp32_gen.o build/fp32/fp32_vecgen"; exit 1; }
 work=build/fp32/mutants
 rm -rf "$work"; mkdir -p "$work"
 fail=0
@@ -39,7 +40,19 @@ for m in "${mutants[@]}"; do
     echo "mutant $i ($what) in $unit: NOT detected; reproduce: ${build[*]} && $dir/vl/bench 100000 1"
     fail=1
   else
-    echo "mutant $i ($what) in $unit: detected: $(tail -2 "$dir/run.log" | head -1)"
+    echo "mutant $i ($what) in $unit: Verilator detected: $(tail -2 "$dir/run.log" | head -1)"
+  fi
+  tb=tb/fp32/tb_fp32_pipe.v; def=-DUNIT_$U
+  if [ "$unit" = cmp ]; then tb=tb/fp32/tb_fp32_cmp.v; def=; fi
+  iv=(iverilog -g2005 $def -o "$dir/tb.vvp" -y "$dir/rtl" "$tb" "$dir/rtl/pree_fp32_$unit.v")
+  if ! build/fp32/fp32_vecgen "$unit" 5000 1 "$dir/vec.txt" >/dev/null || ! "${iv[@]}" >"$dir/iv.log" 2>&1; then
+    echo "mutant $i ($what): Icarus build failed, see $dir/iv.log"; fail=1; continue
+  fi
+  if vvp -N "$dir/tb.vvp" +vec="$dir/vec.txt" >"$dir/iv_run.log" 2>&1; then
+    echo "mutant $i ($what) in $unit: NOT detected by Icarus; reproduce: ${iv[*]} && vvp -N $dir/tb.vvp +vec=$dir/vec.txt"
+    fail=1
+  else
+    echo "mutant $i ($what) in $unit: Icarus detected: $(grep -m1 -E 'mismatches|FATAL' "$dir/iv_run.log")"
   fi
 done
 [ $fail -eq 0 ] || echo "FAILED: reproduce with: bash tests/checks/fp32_mutants.sh"
