@@ -4,7 +4,8 @@
 #   make sim-fp32          quick level: Verilator (directed + FP32_QUICK random per unit) and
 #                          Icarus (directed + FP32_IV_QUICK random per unit); part of `make sim`
 #   make sim-fp32-full     thorough level: FP32_FULL random per unit in Verilator (>= 10 million)
-#                          and FP32_IV_FULL per unit in Icarus
+#                          and FP32_IV_FULL per unit in Icarus, and the squarer's exhaustive
+#                          significand sweep (sim-fp32-sweep-sqr)
 #   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp div8)
 #   make lint-fp32         verilator --lint-only -Wall on every unit and divider configuration
 #   make synth-fp32        yosys synth_xilinx per unit, latch and loop checks, resource table
@@ -80,7 +81,12 @@ $(foreach u,add mul sqr div cmp,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
 $(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAGES=8))
 
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
-sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u))
+sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u)) sim-fp32-sweep-sqr
+
+# The squarer has one operand: every significand at six exponents (50 million cases).
+.PHONY: sim-fp32-sweep-sqr
+sim-fp32-sweep-sqr: $(FP32_DIR)/vl_sqr/fp32_bench_sqr
+	$< 0 $(FP32_SEED) sweep
 
 # Lint: every unit as a top, with the helpers it instantiates, and the divider at Stages 2, 4
 # and 8; warnings are errors.

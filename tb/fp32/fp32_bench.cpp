@@ -3,8 +3,9 @@
 //
 // Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP> and the matching Verilated model
 // (for a divider built with -GStages=N, also -DFP32_DIV_STAGES=N).
-// Usage: fp32_bench_<unit> [random_count [seed]]  (defaults 200000, 1). Runs the directed list,
-// then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
+// Usage: fp32_bench_<unit> [random_count [seed [sweep]]]  (defaults 200000, 1). Runs the
+// directed list, then (with the word "sweep", squarer only) the exhaustive significand sweep of
+// fp32_gen.c, then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
 // density) and a scoreboard keyed on the handshake: an expected result is pushed when an
 // operation is accepted and popped when valid_o appears, which must be exactly LATENCY cycles
 // later. Operands driven while valid_i is low are random, so stale data cannot hide.
@@ -14,6 +15,7 @@
 #include <cstdlib>
 #include <deque>
 #include <memory>
+#include <string>
 
 #include "verilated.h"
 #include "fp32_gen.h"
@@ -80,13 +82,13 @@ struct Scoreboard {
 
 // The next case: the directed list first, then random ones.
 struct Source {
-    size_t directed, next = 0;
+    size_t directed, swept, next = 0;
     uint64_t total;
     uint64_t rng;
 
-    Source(uint64_t random_count, uint64_t seed)
-        : directed(fp32_directed_count(UNIT)), total(directed + random_count),
-          rng(seed * 0x9E3779B97F4A7C15ULL + 1) {}
+    Source(uint64_t random_count, uint64_t seed, bool sweep)
+        : directed(fp32_directed_count(UNIT)), swept(sweep ? fp32_sweep_count(UNIT) : 0),
+          total(directed + swept + random_count), rng(seed * 0x9E3779B97F4A7C15ULL + 1) {}
 
     bool done() const { return next >= total; }
 
@@ -94,6 +96,7 @@ struct Source {
     {
         fp32_case_t c;
         if (next < directed) fp32_directed(UNIT, next, &c);
+        else if (next < directed + swept) fp32_sweep(UNIT, next - directed, &c);
         else fp32_random(UNIT, &rng, &c);
         next++;
         return c;
@@ -187,6 +190,7 @@ int main(int argc, char **argv)
 {
     uint64_t count = argc > 1 ? std::strtoull(argv[1], nullptr, 0) : 200000;
     uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 0) : 1;
+    bool sweep = argc > 3 && std::string(argv[3]) == "sweep";
 
     // One context per simulation; the model is owned by a smart pointer so that it is
     // finalised on every return path.
@@ -194,17 +198,18 @@ int main(int argc, char **argv)
     ctx->commandArgs(argc, argv);
     const std::unique_ptr<Dut> dut{new Dut{ctx.get()}};
 
-    Source src(count, seed);
+    Source src(count, seed, sweep);
     Scoreboard sb;
     int protocol_error = run(*dut, src, sb);
     dut->final();
 
-    std::printf("pree_fp32_%s (latency %d): %zu directed + %" PRIu64 " random (seed %" PRIu64 "): "
-                "%" PRIu64 " checked, %" PRIu64 " mismatches%s\n",
-                fp32_unit_name(UNIT), LATENCY, src.directed, count, seed, sb.checked, sb.errors,
-                protocol_error ? ", handshake error" : "");
+    std::printf("pree_fp32_%s (latency %d): %zu directed + %zu sweep + %" PRIu64 " random "
+                "(seed %" PRIu64 "): %" PRIu64 " checked, %" PRIu64 " mismatches%s\n",
+                fp32_unit_name(UNIT), LATENCY, src.directed, src.swept, count, seed, sb.checked,
+                sb.errors, protocol_error ? ", handshake error" : "");
     if (sb.errors || protocol_error || sb.checked != src.total) {
-        std::printf("FAIL: rerun with: %s %" PRIu64 " %" PRIu64 "\n", argv[0], count, seed);
+        std::printf("FAIL: rerun with: %s %" PRIu64 " %" PRIu64 "%s\n", argv[0], count, seed,
+                    sweep ? " sweep" : "");
         return 1;
     }
     return 0;

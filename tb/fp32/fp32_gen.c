@@ -373,3 +373,25 @@ void fp32_random(fp32_unit_t unit, uint64_t *rng, fp32_case_t *c)
     c->sub = unit == FP32_ADD ? rnd(rng, 2) : 0;
     c->y = fp32_expect(unit, a, b, c->sub);
 }
+
+/* ------------------------------------------------------------------ exhaustive sweep */
+
+/* Squarer: every significand at exponent fields whose squares land around 2^-150 (52, 53:
+ * smallest subnormal and half of it), in the subnormal range and across the smallest normal
+ * (63, 64), in [1, 4) (127) and across the overflow threshold (190). The sign varies with the
+ * significand; it must not matter. */
+static const uint32_t SWEEP_EXPS[] = { 52, 53, 63, 64, 127, 190 };
+#define N_SWEEP_EXPS (sizeof SWEEP_EXPS / sizeof SWEEP_EXPS[0])
+
+size_t fp32_sweep_count(fp32_unit_t unit)
+{
+    return unit == FP32_SQR ? N_SWEEP_EXPS << 23 : 0;
+}
+
+void fp32_sweep(fp32_unit_t unit, size_t i, fp32_case_t *c)
+{
+    uint32_t man = (uint32_t)i & 0x7FFFFFu;
+    c->a = pack((man >> 7) & 1u, SWEEP_EXPS[(i >> 23) % N_SWEEP_EXPS], man);
+    c->b = 0; c->sub = 0;
+    c->y = fp32_expect(unit, c->a, c->b, c->sub);
+}

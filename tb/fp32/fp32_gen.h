@@ -12,6 +12,9 @@
  *   fp32_directed_count(unit)      number of directed cases.
  *   fp32_directed(unit, i, &c)     directed case i (0 <= i < count), expected result filled in.
  *   fp32_random(unit, &rng, &c)    one random case, expected result filled in.
+ *   fp32_sweep_count(unit)         cases of the exhaustive significand sweep: the squarer only
+ *                                  (6 exponents x 2^23 significands), 0 for the other units.
+ *   fp32_sweep(unit, i, &c)        sweep case i (0 <= i < count), expected result filled in.
  * Random cases come from a seeded xorshift generator, so a run is reproducible from its seed.
  */
 #ifndef PREE_TB_FP32_GEN_H
@@ -38,6 +41,8 @@ uint32_t    fp32_expect(fp32_unit_t unit, uint32_t a, uint32_t b, uint32_t sub);
 size_t      fp32_directed_count(fp32_unit_t unit);
 void        fp32_directed(fp32_unit_t unit, size_t i, fp32_case_t *c);
 void        fp32_random(fp32_unit_t unit, uint64_t *rng, fp32_case_t *c);
+size_t      fp32_sweep_count(fp32_unit_t unit);
+void        fp32_sweep(fp32_unit_t unit, size_t i, fp32_case_t *c);
 uint64_t    fp32_rng_next(uint64_t *rng);
 
 #ifdef __cplusplus
