@@ -27,7 +27,7 @@ OPT      := -O1
 endif
 CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
 CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
-LDLIBS   := -lembree3 -lOpenImageIO -lOpenImageIO_Util -lm
+LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 
 .PHONY: all deps build run test check bench clean help lint synth sim
