@@ -175,7 +175,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     }
     double rs = g->r_safe;
     g->bmin = v3(lo.x - rs, lo.y - rs, lo.z - rs);
-    g->inv_cell = 1.0 / g->r0;
+    g->inv_cell = 1.0 / (GRID_CELL_FACTOR * g->r0);
     const double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
     for (int a = 0; a < 3; a++) {
         double cells = used ? floor((ext[a] + 2 * rs) * g->inv_cell) : 0;
@@ -332,39 +332,24 @@ void grid_free(grid_t *g)
     memset(g, 0, sizeof *g);
 }
 
-const grid_entry_t *grid_lookup(const grid_t *g, int p, vec3 x, size_t *count)
+uint32_t grid_bucket(const grid_t *g, vec3 x)
 {
-    const grid_part_t *part = &g->parts[p];
-    size_t b;
     switch (g->kind) {
     case GRID_SMALLPPM: {
         uint32_t ix = abs_u32(trunc_i32((x.x - g->bmin.x) * g->inv_cell));
         uint32_t iy = abs_u32(trunc_i32((x.y - g->bmin.y) * g->inv_cell));
         uint32_t iz = abs_u32(trunc_i32((x.z - g->bmin.z) * g->inv_cell));
-        b = smallppm_bucket(ix, iy, iz, g->num_buckets);
-        break;
+        return (uint32_t)smallppm_bucket(ix, iy, iz, g->num_buckets);
     }
     case GRID_CELLS: {
         int64_t c[3];
-        if (!cell_coords(g, x, c)) { *count = 0; return NULL; }
+        if (!cell_coords(g, x, c)) return GRID_NO_BUCKET;
         uint64_t key = cell_key(c[0], c[1], c[2]);
-        b = find_slot(part->keys, g->num_buckets - 1, key);
-        if (part->keys[b] != key) { *count = 0; return NULL; }
-        break;
+        const uint64_t *keys = g->parts[0].keys;
+        size_t s = find_slot(keys, g->num_buckets - 1, key);
+        return keys[s] == key ? (uint32_t)s : GRID_NO_BUCKET;
     }
     default:
-        b = 0;
-        break;
+        return 0;
     }
-    *count = part->start[b + 1] - part->start[b];
-    return *count ? part->entries + part->start[b] : NULL;
-}
-
-int grid_has_cell(const grid_t *g, vec3 x)
-{
-    if (g->kind != GRID_CELLS) return 1;
-    int64_t c[3];
-    if (!cell_coords(g, x, c)) return 0;
-    uint64_t key = cell_key(c[0], c[1], c[2]);
-    return g->parts[0].keys[find_slot(g->parts[0].keys, g->num_buckets - 1, key)] == key;
 }

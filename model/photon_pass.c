@@ -16,6 +16,7 @@ static int record(photon_hits_t *out, vec3 x, vec3 n, vec3 flux, uint64_t i)
     }
     photon_hit_t *h = &out->hits[out->n++];
     h->x = x; h->n = n; h->flux = flux; h->photon = i;
+    h->bucket = 0;
     return 0;
 }
 

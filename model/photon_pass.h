@@ -17,6 +17,7 @@ typedef struct {
     vec3 n;           /* outward normal at the hit (not flipped toward the photon) */
     vec3 flux;        /* photon flux arriving */
     uint64_t photon;  /* photon index */
+    uint32_t bucket;  /* grid bucket (filled after tracing), or GRID_NO_BUCKET */
 } photon_hit_t;
 
 typedef struct {

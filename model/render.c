@@ -71,11 +71,14 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
         for (uint64_t i = lo; i < hi && !failed; i++) {
             size_t before = out->n;
             if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
-            if (!skip) continue;
+            /* Find each hit's bucket once, here in parallel; with skips, drop the hits
+             * that reach no hit point's cell. */
             size_t keep = before;
             for (size_t k = before; k < out->n; k++) {
-                if (grid_has_cell(g, out->hits[k].x)) out->hits[keep++] = out->hits[k];
-                else no_cell++;
+                photon_hit_t *ph = &out->hits[k];
+                ph->bucket = grid_bucket(g, ph->x);
+                if (skip && ph->bucket == GRID_NO_BUCKET) { no_cell++; continue; }
+                out->hits[keep++] = *ph;
             }
             out->n = keep;
         }

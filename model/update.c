@@ -68,6 +68,13 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
 
 typedef struct { const grid_entry_t *cand; size_t count; } lookup_t;
 
+static inline lookup_t lookup(const grid_t *g, int p, const photon_hit_t *ph)
+{
+    lookup_t l = {NULL, 0};
+    if (ph->bucket != GRID_NO_BUCKET) l.cand = grid_bucket_entries(g, p, ph->bucket, &l.count);
+    return l;
+}
+
 static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const lookup_t *l)
 {
     for (size_t c = 0; c < l->count && c < 4; c++) {
@@ -82,14 +89,14 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
     update_stats_t s = *st;
     lookup_t ring[LOOKAHEAD];
     for (size_t k = 0; k < n && k < LOOKAHEAD; k++) {
-        ring[k].cand = grid_lookup(g, p, hits[k].x, &ring[k].count);
+        ring[k] = lookup(g, p, &hits[k]);
         if (ring[k].count) __builtin_prefetch(ring[k].cand);
     }
     for (size_t k = 0; k < n; k++) {
         lookup_t cur = ring[k % LOOKAHEAD];
         if (k + LOOKAHEAD < n) {
             lookup_t *next = &ring[k % LOOKAHEAD];
-            next->cand = grid_lookup(g, p, hits[k + LOOKAHEAD].x, &next->count);
+            *next = lookup(g, p, &hits[k + LOOKAHEAD]);
             prefetch_lookup(h, prec, next);
         }
         const grid_entry_t *cand = cur.cand;

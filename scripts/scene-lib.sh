@@ -1,8 +1,10 @@
 # scene-lib.sh: sourced by the scene checks and scripts/bench-scenes.sh (run from the repository
 # root). build_scene_stats builds build/scene-stats from scripts/scene-stats.c against
-# build/libpree.a with the Makefile's flags (make builds the library and pree first).
+# build/libpree.a with the Makefile's flags; make runs only for what is missing (`make test`
+# builds build/pree and the library before the checks run).
 build_scene_stats() {
-  make -s build/pree >/dev/null || return 1
+  [ -x build/pree ] || make -s build/pree >/dev/null || return 1
+  [ -f build/libpree.a ] || make -s build/libpree.a >/dev/null || return 1
   local flags cflags ldflags ldlibs
   flags=$(make -pn build/pree 2>/dev/null)
   cflags=$(sed -n 's/^CFLAGS := //p' <<<"$flags" | sed 's/-MMD -MP//')

@@ -6,7 +6,7 @@
 # level: quick
 set -u
 cd "$(dirname "$0")/../.."
-make -s build/pree >/dev/null || { echo "FAIL: build"; exit 1; }
+[ -x build/pree ] || make -s build/pree >/dev/null || { echo "FAIL: cannot build build/pree (make build/pree)"; exit 1; }
 pree=$PWD/build/pree
 d=build/checks/mesh_bad_input; rm -rf "$d"; mkdir -p "$d"; cd "$d"
 fail=0

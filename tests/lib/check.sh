@@ -2,7 +2,7 @@
 # Every failure prints what failed and the command that reproduces it, then exits 1.
 set -u
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-PREE="$ROOT/build/pree"
+PREE=${PREE:-$ROOT/build/pree}   # override to test another build
 TMP=$(mktemp -d "${TMPDIR:-/tmp}/pree-check.XXXXXX")
 trap 'rm -rf "$TMP"' EXIT
 
