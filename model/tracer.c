@@ -7,11 +7,18 @@
 #include <stdlib.h>
 #include "tracer.h"
 
+/* Scenes with at most this many spheres keep them all in one Embree primitive whose callback
+ * tests each in index order: with so few, the BVH culls little and every extra primitive
+ * costs a callback. Larger sets get one primitive per sphere. The result is the same either
+ * way: the closest hit is chosen by exact (t, index). */
+#define SPHERE_GROUP_MAX 16
+
 struct tracer {
     RTCDevice device;
     RTCScene scene;
     const scene_t *src;
     unsigned sphere_geom;     /* Embree geometry id of the sphere set, or RTC_INVALID_GEOMETRY_ID */
+    int spheres_per_prim;     /* num_spheres when grouped, else 1 */
     unsigned *mesh_of_geom;   /* geometry id -> mesh index */
     unsigned num_geoms;
     double build_seconds;
@@ -48,55 +55,64 @@ static inline double sphere_hit_t(const sphere_t *s, vec3 o, vec3 d)
 
 static void sphere_bounds(const struct RTCBoundsFunctionArguments *args)
 {
-    const scene_t *sc = args->geometryUserPtr;
-    const sphere_t *s = &sc->spheres[args->primID];
-    /* Pad by a relative margin so that float traversal never culls a double hit. */
-    double r = s->radius * (1.0 + 1e-5) + 1e-3;
-    args->bounds_o->lower_x = (float)(s->centre.x - r);
-    args->bounds_o->lower_y = (float)(s->centre.y - r);
-    args->bounds_o->lower_z = (float)(s->centre.z - r);
-    args->bounds_o->upper_x = (float)(s->centre.x + r);
-    args->bounds_o->upper_y = (float)(s->centre.y + r);
-    args->bounds_o->upper_z = (float)(s->centre.z + r);
+    const tracer_t *tr = args->geometryUserPtr;
+    const int first = (int)args->primID * tr->spheres_per_prim;
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int i = first; i < first + tr->spheres_per_prim; i++) {
+        const sphere_t *s = &tr->src->spheres[i];
+        /* Pad by a relative margin so that float traversal never culls a double hit. */
+        double r = s->radius * (1.0 + 1e-5) + 1e-3;
+        const double c[3] = {s->centre.x, s->centre.y, s->centre.z};
+        for (int a = 0; a < 3; a++) { lo[a] = fmin(lo[a], c[a] - r); hi[a] = fmax(hi[a], c[a] + r); }
+    }
+    args->bounds_o->lower_x = (float)lo[0]; args->bounds_o->lower_y = (float)lo[1]; args->bounds_o->lower_z = (float)lo[2];
+    args->bounds_o->upper_x = (float)hi[0]; args->bounds_o->upper_y = (float)hi[1]; args->bounds_o->upper_z = (float)hi[2];
 }
 
 static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
 {
     if (!args->valid[0]) return;
     dray_context_t *ctx = (dray_context_t *)args->context;
-    const scene_t *sc = args->geometryUserPtr;
-    const int id = (int)args->primID;
-    double t = sphere_hit_t(&sc->spheres[id], ctx->o, ctx->d);
-    if (t == 0) return;
-    if (!(t < ctx->best_t || (t == ctx->best_t && id < ctx->best_sphere))) return;
+    const tracer_t *tr = args->geometryUserPtr;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;   /* N == 1: rtcIntersect1 */
-    /* A triangle already committed closer (float t) wins. */
-    if ((double)rh->ray.tfar < t && rh->hit.geomID != args->geomID) return;
-    ctx->best_t = t;
-    ctx->best_sphere = id;
-    float tf = (float)t;
-    if ((double)tf < t) tf = nextafterf(tf, FLT_MAX);
-    rh->ray.tfar = tf;
-    rh->hit.geomID = args->geomID;
-    rh->hit.primID = args->primID;
+    const int first = (int)args->primID * tr->spheres_per_prim;
+    for (int id = first; id < first + tr->spheres_per_prim; id++) {
+        double t = sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
+        if (t == 0) continue;
+        if (!(t < ctx->best_t || (t == ctx->best_t && id < ctx->best_sphere))) continue;
+        /* A triangle already committed closer (float t) wins. */
+        if ((double)rh->ray.tfar < t && rh->hit.geomID != args->geomID) continue;
+        ctx->best_t = t;
+        ctx->best_sphere = id;
+        float tf = (float)t;
+        if ((double)tf < t) tf = nextafterf(tf, FLT_MAX);
+        rh->ray.tfar = tf;
+        rh->hit.geomID = args->geomID;
+        rh->hit.primID = args->primID;
+    }
 }
 
 static void sphere_occluded(const struct RTCOccludedFunctionNArguments *args)
 {
     if (!args->valid[0]) return;
     dray_context_t *ctx = (dray_context_t *)args->context;
-    const scene_t *sc = args->geometryUserPtr;
-    double t = sphere_hit_t(&sc->spheres[args->primID], ctx->o, ctx->d);
+    const tracer_t *tr = args->geometryUserPtr;
     struct RTCRay *ray = (struct RTCRay *)args->ray;
-    if (t != 0 && t < (double)ray->tfar) ray->tfar = -INFINITY;
+    const int first = (int)args->primID * tr->spheres_per_prim;
+    for (int id = first; id < first + tr->spheres_per_prim; id++) {
+        double t = sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
+        if (t != 0 && t < (double)ray->tfar) { ray->tfar = -INFINITY; return; }
+    }
 }
 
 static int add_spheres(tracer_t *tr, char *err, size_t errlen)
 {
     RTCGeometry g = rtcNewGeometry(tr->device, RTC_GEOMETRY_TYPE_USER);
     if (!g) { snprintf(err, errlen, "embree: cannot create the sphere geometry"); return -1; }
-    rtcSetGeometryUserPrimitiveCount(g, (unsigned)tr->src->num_spheres);
-    rtcSetGeometryUserData(g, (void *)tr->src);
+    const int n = tr->src->num_spheres;
+    tr->spheres_per_prim = n <= SPHERE_GROUP_MAX ? n : 1;
+    rtcSetGeometryUserPrimitiveCount(g, (unsigned)(n / tr->spheres_per_prim));
+    rtcSetGeometryUserData(g, tr);
     rtcSetGeometryBoundsFunction(g, sphere_bounds, NULL);
     rtcSetGeometryIntersectFunction(g, sphere_intersect);
     rtcSetGeometryOccludedFunction(g, sphere_occluded);
