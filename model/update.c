@@ -4,6 +4,9 @@
 #include <stdlib.h>
 #include "update.h"
 
+/* Radii are prefetched this many candidates ahead within a bucket. */
+#define RADIUS_AHEAD 6
+
 /* Double mode: the reference program's tests, normal first, then distance. */
 static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
                         const grid_entry_t *cand, size_t count, update_stats_t *s)
@@ -13,6 +16,7 @@ static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const
     const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
     for (size_t c = 0; c < count; c++) {
         const grid_entry_t *e = &cand[c];
+        if (c + RADIUS_AHEAD < count) __builtin_prefetch(&h->r2[cand[c + RADIUS_AHEAD].hp]);
         double vx = e->px - x, vy = e->py - y, vz = e->pz - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         /* Radii only shrink: a candidate beyond the safe initial radius never accepts. */
