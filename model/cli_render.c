@@ -108,6 +108,11 @@ int pree_cmd_render(int argc, char **argv)
         return 1;
     }
     int status = rc == 1 ? 130 : 0;
+    /* A black image is a correct answer here, but rarely the one intended. */
+    if (res.stats.hit_points == 0)
+        fprintf(stderr, "pree render: warning: %s: no eye ray reaches a diffuse surface; the image is black\n", scene_path);
+    else if (res.stats.photon_hits == 0)
+        fprintf(stderr, "pree render: warning: %s: no photon reaches a diffuse surface; the image is black\n", scene_path);
     if (rc == 1)
         fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
                 (unsigned long long)res.stats.photons_emitted);
