@@ -53,7 +53,7 @@ typedef struct {
 
 typedef struct {
     vec3 origin, dir;   /* dir as written; normalised by the camera code */
-    double scale;       /* half-height of the image plane at unit distance (tan(fov/2)) */
+    double scale;       /* height of the image plane at unit distance (2 tan(fov/2)) */
     double near;        /* rays start at origin + d * near, d the unnormalised pixel vector */
     int has_up;         /* 0: image x axis is world +x (the reference program's camera) */
     vec3 up;

@@ -130,7 +130,7 @@ static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
             double deg;
             if (parse_number(pc, tok[i + 1], &deg)) return -1;
             if (!(deg > 0 && deg < 180)) return fail(pc, "camera: fov %g is not in (0, 180) degrees", deg);
-            c.scale = tan(deg * PREE_PI / 360.0);
+            c.scale = 2.0 * tan(deg * PREE_PI / 360.0);
             have_scale = 1; i += 2;
         } else if (!strcmp(key, "near") && i + 1 < ntok) {
             if (parse_number(pc, tok[i + 1], &c.near)) return -1;
@@ -246,7 +246,7 @@ static int parse_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     if (need(pc, ntok, 11, "triangle X Y Z X Y Z X Y Z MATERIAL")) return -1;
     if (ntok > 11) return fail(pc, "triangle: unexpected '%s'", tok[11]);
     vec3 p[3];
-    int mat;
+    int mat = -1;
     for (int k = 0; k < 3; k++)
         if (parse_vec(pc, tok + 1 + 3 * k, &p[k])) return -1;
     if (material_ref(pc, s, tok[10], &mat)) return -1;
