@@ -29,6 +29,8 @@ static void render_usage(FILE *f)
         "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
         "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
         "  --no-skip              disable the skips (zero-weight hit points, empty cells, far candidates)\n"
+        "  --preu P               fp32: the PREE's PREU count (4, 8 or 16, default 4), which sets the\n"
+        "                         radiance pass's per-pixel order (docs/pree_top.md)\n"
         "  --threads T            OpenMP threads (default: all cores); the image does not depend on T\n"
         "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
         "  --stats FILE.json      write the statistics\n"
@@ -38,7 +40,7 @@ static void render_usage(FILE *f)
 int pree_cmd_render(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
-                            .grid = GRID_CELLS, .progress = 1, .interrupt = &interrupted};
+                            .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
     const char *scene_path = NULL, *stats_path = NULL;
     const char *outs[MAX_OUTPUTS];
     int nout = 0;
@@ -51,7 +53,11 @@ int pree_cmd_render(int argc, char **argv)
         else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.width = (int)v; }
         else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.height = (int)v; }
         else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
-        else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; opt.threads = (int)v; }
+        else if (!strcmp(arg, "--preu")) {
+            if (cli_int(&a, arg, 4, 16, &v)) return 2;
+            if (v != 4 && v != 8 && v != 16) return cli_error(&a, "--preu: %lld is not 4, 8 or 16", v);
+            opt.preu = (int)v;
+        } else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; opt.threads = (int)v; }
         else if (!strcmp(arg, "--precision")) {
             const char *s = cli_value(&a, arg);
             if (!s) return 2;

@@ -22,6 +22,7 @@ typedef struct {
     grid_kind_t grid;
     int threads;             /* 0: OpenMP's default */
     int no_skip;             /* 1: disable the skips (for proving them harmless) */
+    int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
     /* Co-simulation: with a sink (fp32 precision only), the update runs on one thread and
@@ -41,6 +42,9 @@ typedef struct {
     double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_radiance, sec_total;
     long peak_rss_kb;
     int threads;
+    /* What the scene holds (the engine builds only what it needs). */
+    unsigned long long scene_spheres, scene_triangles, scene_lights;
+    int scene_mirror, scene_glass;
     uint64_t image_hash;     /* FNV-1a over the pixels' double bits */
     uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words) */
 } render_stats_t;

@@ -1,0 +1,115 @@
+# The PREE top (rtl/pree_top.v) and its co-simulation with the C engine (tb/cosim/):
+# docs/pree_top.md.
+#
+#   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
+#                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
+#   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation, 4 PREUs, then
+#                      8 and 16 (figures in $(COSIM_DIR)/full_p*.json)
+#   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
+#                      2k photons) or one of the bench scenarios: random, one, dense, mixed
+#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
+#   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
+#
+# The three Verilated models (NumPreu 4, 8, 16) are linked into build/pree for `pree cosim`.
+# Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
+# only switched on by --trace; X assignments resolved the fast way (no random X).
+
+COSIM_DIR    := $(BUILD)/cosim
+COSIM_PREUS  := 4 8 16
+COSIM_RTL    := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
+                rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v)
+VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
+# Banks: hit points 2^(log2 NumPreu + 4) (few conflicts once the host orders candidates), pixels
+# 2^(log2 NumPreu + 2). The model directory names carry them, so a change never reuses a model.
+COSIM_HPB_4 := 6
+COSIM_HPB_8 := 7
+COSIM_HPB_16 := 8
+COSIM_PXB_4 := 4
+COSIM_PXB_8 := 5
+COSIM_PXB_16 := 6
+COSIM_MDIR    = $(COSIM_DIR)/vl_p$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
+                -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1))
+COSIM_LIBS   := $(foreach p,$(COSIM_PREUS),$(call COSIM_MDIR,$(p))/Vpree_top_p$(p)__ALL.a)
+COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
+COSIM_VLRT   := verilated verilated_fst_c verilated_threads
+COSIM_VLRT_FLAGS := -std=c++17 -O2 -I$(VERILATOR_ROOT_DIR)/include -I$(VERILATOR_ROOT_DIR)/include/vltstd \
+                -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
+COSIM_OBJS   := $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(COSIM_DIR)/cosim_main.o
+COSIM_BENCH  := $(COSIM_DIR)/top_bench
+COSIM_CFLAGS := $(CFLAGS) -Itb/cosim
+
+PREE_EXTRA_OBJS += $(COSIM_OBJS)
+PREE_EXTRA_LIBS += $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -lz -pthread
+
+TEST_PREREQS  += $(COSIM_BENCH)
+SIM_TARGETS   += sim-top
+LINT_TARGETS  += lint-top
+SYNTH_TARGETS += synth-top
+
+.PHONY: sim-top sim-full lint-top synth-top wave
+
+# One Verilated model per PREU count.
+define COSIM_VL_RULE
+$(call COSIM_MDIR,$(1))/Vpree_top_p$(1)__ALL.a: $(COSIM_RTL) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
+	  -Irtl --top-module pree_top --prefix Vpree_top_p$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
+	  $(call COSIM_GPARAMS,$(1)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  $(COSIM_RTL) >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
+endef
+$(foreach p,$(COSIM_PREUS),$(eval $(call COSIM_VL_RULE,$(p))))
+# The Verilator run-time library, once for all models (tracing compiled in).
+$(COSIM_DIR)/vlrt/%.o: $(VERILATOR_ROOT_DIR)/include/%.cpp | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CXX) $(COSIM_VLRT_FLAGS) -c $< -o $@
+$(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
+	rm -f $@ && ar rcs $@ $^
+
+$(COSIM_DIR)/cosim_rtl.o: tb/cosim/cosim_rtl.cpp tb/cosim/cosim_rtl.h $(COSIM_LIBS) $(COSIM_VLIB)
+	$(CXX) $(COSIM_VLRT_FLAGS) -g -Wall -Imodel -Itb/cosim $(foreach p,$(COSIM_PREUS),-I$(call COSIM_MDIR,$(p)) -DCOSIM_HAVE_P$(p) -DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p))) \
+	  -c $< -o $@
+$(COSIM_DIR)/%.o: tb/cosim/%.c tb/cosim/cosim_drv.h tb/cosim/cosim_rtl.h | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(COSIM_CFLAGS) -c $< -o $@
+
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(LIBPREE)
+	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
+
+# Simulation: the bench's traces, then the reduced co-simulation.
+COSIM_SMALL := scenes/cornell3 --width 64 --height 48 --photons 20000 --quiet
+sim-top: $(COSIM_BENCH) $(BUILD)/pree
+	@set -e; for p in $(COSIM_PREUS); do \
+	  for s in random one dense mixed; do $(COSIM_BENCH) --preu $$p --scenario $$s --photons 600 | tail -1; done; \
+	  $(COSIM_BENCH) --preu $$p --scenario random --hp 150 --photons 400 --gap 0.3 | tail -1; \
+	  $(COSIM_BENCH) --preu $$p --scenario mixed --no-reorder --photons 400 | tail -1; done
+	@set -e; for p in $(COSIM_PREUS); do \
+	  $(BUILD)/pree cosim $(COSIM_SMALL) --preu $$p --stats $(COSIM_DIR)/small_p$$p.json --out $(COSIM_DIR)/small_p$$p.png; \
+	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_p$$p.json; done
+
+# Whole frame: cornell3 320x240, 768k photons.
+sim-full: $(BUILD)/pree
+	@set -e; for p in $(COSIM_PREUS); do \
+	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json"; \
+	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --quiet \
+	    --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json; cat $(COSIM_DIR)/full_p$$p.json; done
+
+# Waveforms: TEST=cosim or a bench scenario; opens with tb/cosim/pree_top.gtkw.
+TEST ?= mixed
+wave: $(COSIM_BENCH) $(BUILD)/pree
+	@mkdir -p $(COSIM_DIR)
+	@if [ "$(TEST)" = cosim ]; then \
+	  $(BUILD)/pree cosim scenes/cornell3 --width 32 --height 24 --photons 2000 --quiet --no-reference \
+	    --trace $(COSIM_DIR)/wave_cosim.fst; \
+	else $(COSIM_BENCH) --scenario $(TEST) --photons 40 --hp 120 --trace $(COSIM_DIR)/wave_$(TEST).fst; fi
+	@sed "s|@FST@|$(abspath $(COSIM_DIR))/wave_$(TEST).fst|" tb/cosim/pree_top.gtkw > $(COSIM_DIR)/wave_$(TEST).gtkw
+	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
+
+lint-top: | $(DEPS_STAMP)
+	@set -e; for p in $(COSIM_PREUS); do \
+	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p $(COSIM_RTL)"; \
+	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p $(COSIM_RTL); done
+
+synth-top: | $(DEPS_STAMP)
+	@mkdir -p $(COSIM_DIR)
+	tb/cosim/synth_top.sh $(COSIM_DIR)/synth

@@ -1,0 +1,579 @@
+// pree_top: the progressive radiance estimation engine (paper 000 Sec. IV, Fig. 5): NumPreu
+// PREUs, the AFTSO-HpUOC dispatcher (update mode), the ADISO-REC leaping-address generator
+// (radiance mode), the hit-point memory, the index table and the pixel memory, with hazard
+// detection so that results never depend on timing. docs/pree_top.md is the user's manual:
+// interfaces, timing diagrams, memory organisation, hazards, the radiance order.
+//
+// Modes (mode_i; change it only while idle_o is high):
+//   0 update:   photons come in on ph_* (valid/ready). Photon k's candidate list is N^P
+//               hit-point addresses held in the index table at p_addr .. p_addr + N^P - 1,
+//               written beforehand (or in the same cycle) through idx_*. AFTSO-HpUOC turns the
+//               photons into up to NumPreu hit-point update operations per cycle.
+//   1 radiance: a pulse on rad_start_i with n_hit_i = N starts one pass: ADISO-REC hands every
+//               hit-point address in [0, N) to a PREU once, and each adds its flux to its pixel.
+//
+// Pipeline (both modes; a lane l of a stage feeds PREU l):
+//   A  controller lanes (combinational offer of AFTSO / ADISO); reads of the first RAM:
+//      update: index table (bank = ref_addr mod NumPreu), radiance: hit-point memory.
+//      Lanes read in lane order; a lane whose bank an earlier unread lane of the offer already
+//      uses waits (bank conflict, "abank"); the controller is stalled until every lane of
+//      its offer has been read. A reads only when stage B empties in this cycle.
+//   B  the read results: hit-point address (update) or hit-point data and pixel (radiance).
+//      Issue in lane order (a prefix of the pending lanes) to the next step: a lane waits
+//      while its key (hit point / pixel) is in flight (hazard "haz"), an earlier pending lane
+//      of the stage has the same key ("dup") or the same bank of the memory it is about to
+//      use ("bank"; hit-point banks in update, pixel banks in radiance). Update: issue = read
+//      of the hit-point memory; radiance: issue = PREU input (the held RAM output).
+//   C  update only: the hit-point data, into the PREU (valid_i), with the photon.
+//   The PREU result is written back: update, the hit point's tau, r2, N when accepted (10
+//   stages after C); radiance, the pixel sum (read at PREU S10, written at S12).
+// Hazard windows (cycles after issue in which the same key must not issue again): update 11
+// (issue, C, 10 PREU stages, write at the end of the last); radiance 3 (pixel read 9 cycles
+// after issue, write 12 cycles after issue). Consequence: per hit point, updates happen in
+// photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
+// first), which model/adiso_order.c reproduces.
+//
+// Memories (all pree_ram_sdp, one write and one read port each):
+//   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular
+//   hit points    2^HpBankW banks, each a constant part {pixel, f, pos} (written by the host)
+//                 and a state part {n, r2, tau} (host or update write-back); bank = low bits
+//   pixels        2^PxBankW banks of 96-bit {b, g, r} sums; bank = low bits of the pixel
+// Host ports (hp_*, px_*): use them only while idle_o is high; read data comes one cycle after
+// the read enable. The index load port writes up to NumPreu entries per cycle, which must lie
+// in distinct banks (distinct addresses mod NumPreu).
+//
+// Counters (cnt_o, CNT_W bits each, counting only while cnt_en_i is high), in order:
+//   0 update cycles, 1 radiance cycles, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve (cycles in
+//   which fewer than NumPreu operations issued, by cause: the first blocked lane's cause in B,
+//   else abank when A left lanes for a bank conflict, else starve: the controller offered
+//   fewer), then 7 + l: operations into PREU l. photons_done_o counts photons whose last
+//   index-table entry has been read (the host may then reuse their entries); it wraps.
+`default_nettype none
+
+module pree_top #(
+  parameter NumPreu = 4,    // PREUs (a power of two, >= 2)
+  parameter HpAW    = 18,   // hit-point address bits
+  parameter HpBankW = 4,    // log2 of the hit-point banks (1 .. HpAW-1)
+  parameter IdxAW   = 12,   // index-table address bits (> log2 NumPreu)
+  parameter PxAW    = 17,   // pixel address bits
+  parameter PxBankW = 4,    // log2 of the pixel banks (1 .. PxAW-1)
+  parameter CntW    = 16    // bits of a photon's candidate count N^P
+) (
+  input  wire                       clk_i,
+  input  wire                       rst_ni,
+  // Mode and control.
+  input  wire                       mode_i,
+  input  wire                       cnt_en_i,
+  input  wire [31:0]                ne_i,          // N_emitted as binary32 (radiance)
+  input  wire                       rad_start_i,
+  input  wire [HpAW-1:0]            n_hit_i,
+  output wire                       idle_o,
+  // Photon stream (update mode). ph_data_i = {phi b, g, r, pos z, y, x}.
+  input  wire                       ph_valid_i,
+  output wire                       ph_ready_o,
+  input  wire [191:0]               ph_data_i,
+  input  wire [IdxAW-1:0]           ph_paddr_i,
+  input  wire [CntW-1:0]            ph_n_i,
+  output wire [31:0]                photons_done_o,
+  // Index-table load port: entry j in bits [j*W +: W].
+  input  wire [NumPreu-1:0]         idx_we_i,
+  input  wire [NumPreu*IdxAW-1:0]   idx_addr_i,
+  input  wire [NumPreu*HpAW-1:0]    idx_data_i,
+  // Host hit-point port: {pixel, f b g r, pos z y x, n, r2, tau b g r}.
+  input  wire                       hp_we_i,
+  input  wire                       hp_re_i,
+  input  wire [HpAW-1:0]            hp_addr_i,
+  input  wire [PxAW+351:0]          hp_wdata_i,
+  output wire [PxAW+351:0]          hp_rdata_o,
+  // Host pixel port: {b, g, r}.
+  input  wire                       px_we_i,
+  input  wire                       px_re_i,
+  input  wire [PxAW-1:0]            px_addr_i,
+  input  wire [95:0]                px_wdata_i,
+  output wire [95:0]                px_rdata_o,
+  // Counters.
+  output wire [(7+NumPreu)*48-1:0]  cnt_o
+);
+
+  localparam LANE_W    = $clog2(NumPreu);
+  localparam HP_BANKS  = 1 << HpBankW;
+  localparam HP_ROW_W  = HpAW - HpBankW;
+  localparam PX_BANKS  = 1 << PxBankW;
+  localparam PX_ROW_W  = PxAW - PxBankW;
+  localparam IDX_ROW_W = IdxAW - LANE_W;
+  localparam KEY_W     = HpAW > PxAW ? HpAW : PxAW;          // hazard key: hit point or pixel
+  localparam ABANK_W   = LANE_W > HpBankW ? LANE_W : HpBankW; // stage-A bank number
+  localparam BBANK_W   = HpBankW > PxBankW ? HpBankW : PxBankW; // stage-B bank number
+  localparam AADDR_W   = IdxAW > HpAW ? IdxAW : HpAW;         // stage-A address
+  localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
+  localparam STATE_W   = 160;                                 // {n, r2, tau}
+  localparam WIN_UPD   = 11;
+  localparam WIN_RAD   = 3;
+  localparam CNT_W     = 48;
+  localparam [CNT_W-1:0] CNT_ONE = 1;
+  localparam NCNT      = 7 + NumPreu;
+  localparam PH_W      = 192;
+
+  // NumPreu must be a power of two (index-table banks and ADISO groups are cut by bits).
+  generate
+    if ((1 << LANE_W) != NumPreu || NumPreu < 2) begin : g_bad_numpreu
+      pree_top_numpreu_must_be_a_power_of_two_at_least_2 u_fail ();
+    end
+  endgenerate
+
+  genvar gl, gb;
+
+  // ===============================================================================================
+  // Controllers.
+  wire                      a_all;      // every lane of the current offer is read by now
+  wire [NumPreu-1:0]        af_valid, af_last;
+  wire [NumPreu*IdxAW-1:0]  af_ref;
+  wire [NumPreu*PH_W-1:0]   af_data;
+  wire [NumPreu-1:0]        af_id_unused;
+  wire                      af_ready, af_busy_unused, af_empty;
+
+  pree_aftso_hpuoc #(
+    .NumPreu(NumPreu), .BufDepth(4), .DataW(PH_W), .IdW(1), .AddrW(IdxAW), .CntW(CntW),
+    .EarlyReady(1)
+  ) u_aftso (
+    .clk_i(clk_i), .rst_ni(rst_ni),
+    .in_valid_i(ph_valid_i & ~mode_i), .in_ready_o(af_ready), .in_data_i(ph_data_i),
+    .in_id_i(1'b0), .in_p_addr_i(ph_paddr_i), .in_n_i(ph_n_i),
+    .stall_i(mode_i | ~a_all), .lane_valid_o(af_valid), .lane_ref_addr_o(af_ref),
+    .lane_data_o(af_data), .lane_id_o(af_id_unused), .lane_last_o(af_last),
+    .busy_o(af_busy_unused), .empty_o(af_empty));
+
+  assign ph_ready_o = af_ready & ~mode_i;
+
+  wire [NumPreu-1:0]       ad_valid;
+  wire [NumPreu*HpAW-1:0]  ad_addr;
+  wire                     ad_busy;
+
+  pree_adiso_rec #(.NumPreu(NumPreu), .PipeDepth(12), .AddrW(HpAW)) u_adiso (
+    .clk_i(clk_i), .rst_ni(rst_ni), .start_i(rad_start_i), .n_hit_i(n_hit_i),
+    .stall_i(~mode_i | ~a_all), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
+
+  // ===============================================================================================
+  // Stage A: read the offer's lanes in lane order, one lane per bank per cycle.
+  reg  [NumPreu-1:0]         a_done_q;
+  wire [NumPreu-1:0]         ctl_valid = mode_i ? ad_valid : af_valid;
+  wire [NumPreu-1:0]         a_valid   = ctl_valid & ~a_done_q;
+  reg  [NumPreu*ABANK_W-1:0] a_bank;
+  reg  [NumPreu*AADDR_W-1:0] a_addr;
+  reg  [NumPreu-1:0]         a_rd, a_conf;
+  reg                        a_pre;
+  wire                       a_go;        // stage B empties in this cycle
+
+  always @* begin : a_lanes
+    integer l, m;
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      a_addr[l*AADDR_W +: AADDR_W] = {AADDR_W{1'b0}};
+      a_bank[l*ABANK_W +: ABANK_W] = {ABANK_W{1'b0}};
+      if (mode_i) begin
+        a_addr[l*AADDR_W +: HpAW]    = ad_addr[l*HpAW +: HpAW];
+        a_bank[l*ABANK_W +: HpBankW] = ad_addr[l*HpAW +: HpBankW];
+      end else begin
+        a_addr[l*AADDR_W +: IdxAW]   = af_ref[l*IdxAW +: IdxAW];
+        a_bank[l*ABANK_W +: LANE_W]  = af_ref[l*IdxAW +: LANE_W];
+      end
+    end
+    a_pre = 1'b1;
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      a_conf[l] = 1'b0;
+      for (m = 0; m < l; m = m + 1)
+        if (a_valid[m] && a_bank[m*ABANK_W +: ABANK_W] == a_bank[l*ABANK_W +: ABANK_W])
+          a_conf[l] = 1'b1;
+      a_rd[l] = a_go && a_valid[l] && !a_conf[l] && a_pre;
+      a_pre   = a_pre && (!a_valid[l] || a_rd[l]);
+    end
+  end
+
+  assign a_all = &(~ctl_valid | a_done_q | a_rd);
+  wire a_short = a_go && |(a_valid & ~a_rd);
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni)    a_done_q <= {NumPreu{1'b0}};
+    else if (a_all) a_done_q <= {NumPreu{1'b0}};
+    else            a_done_q <= a_done_q | a_rd;
+  end
+
+  // Photons whose last index entry has been read.
+  reg [31:0] photons_done_q;
+  reg [31:0] last_rd;
+  always @* begin : last_count
+    integer l;
+    last_rd = 32'd0;
+    for (l = 0; l < NumPreu; l = l + 1)
+      if (a_rd[l] && af_last[l] && !mode_i) last_rd = last_rd + 32'd1;
+  end
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) photons_done_q <= 32'd0;
+    else         photons_done_q <= photons_done_q + last_rd;
+  end
+  assign photons_done_o = photons_done_q;
+
+  // ===============================================================================================
+  // Index table: NumPreu banks; bank = address mod NumPreu.
+  wire [NumPreu*HpAW-1:0] idx_rdata;
+
+  generate
+    for (gb = 0; gb < NumPreu; gb = gb + 1) begin : g_idx
+      localparam [LANE_W-1:0] BANK = gb;
+      reg                 re, we;
+      reg [IDX_ROW_W-1:0] raddr, waddr;
+      reg [HpAW-1:0]      wdata;
+      integer j;
+      always @* begin
+        re = 1'b0; raddr = {IDX_ROW_W{1'b0}};
+        we = 1'b0; waddr = {IDX_ROW_W{1'b0}}; wdata = {HpAW{1'b0}};
+        for (j = 0; j < NumPreu; j = j + 1) begin
+          if (!mode_i && a_rd[j] && af_ref[j*IdxAW +: LANE_W] == BANK) begin
+            re    = 1'b1;
+            raddr = raddr | af_ref[j*IdxAW + LANE_W +: IDX_ROW_W];
+          end
+          if (idx_we_i[j] && idx_addr_i[j*IdxAW +: LANE_W] == BANK) begin
+            we    = 1'b1;
+            waddr = waddr | idx_addr_i[j*IdxAW + LANE_W +: IDX_ROW_W];
+            wdata = wdata | idx_data_i[j*HpAW +: HpAW];
+          end
+        end
+      end
+      pree_ram_sdp #(.Width(HpAW), .AddrW(IDX_ROW_W)) u_ram (
+        .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
+        .re_i(re), .raddr_i(raddr), .rdata_o(idx_rdata[gb*HpAW +: HpAW]));
+    end
+  endgenerate
+
+  // ===============================================================================================
+  // Stage B registers: the lanes read by A.
+  reg  [NumPreu-1:0]         b_pend_q;
+  reg  [NumPreu*AADDR_W-1:0] b_addr_q;
+  reg  [NumPreu*PH_W-1:0]    b_data_q;
+  reg                        b_short_q;
+  reg  [NumPreu-1:0]         b_iss;
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni)   b_pend_q <= {NumPreu{1'b0}};
+    else if (a_go) b_pend_q <= a_rd;
+    else           b_pend_q <= b_pend_q & ~b_iss;
+  end
+
+  always @(posedge clk_i) begin
+    if (a_go) begin
+      b_addr_q  <= a_addr;
+      b_data_q  <= af_data;
+      b_short_q <= a_short;
+    end
+  end
+
+  // Hit-point memory read outputs (per bank) and the B lanes' keys.
+  wire [HP_BANKS*CONST_W-1:0] hpc_rdata;
+  wire [HP_BANKS*STATE_W-1:0] hps_rdata;
+  reg  [NumPreu*HpAW-1:0]     b_hp;     // update: hit-point address from the index table
+  reg  [NumPreu*KEY_W-1:0]    b_key;
+  reg  [NumPreu*BBANK_W-1:0]  b_bank;
+  reg  [NumPreu*CONST_W-1:0]  b_const;  // radiance: the lane's hit-point constant part
+  reg  [NumPreu*STATE_W-1:0]  b_state;  // radiance: the lane's hit-point state part
+
+  always @* begin : b_lanes
+    integer l, m;
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      // Bank outputs selected by the bank number (indexed part-selects: one mux each).
+      m = {{(32-LANE_W){1'b0}}, b_addr_q[l*AADDR_W +: LANE_W]};
+      b_hp[l*HpAW +: HpAW] = idx_rdata[m*HpAW +: HpAW];
+      m = {{(32-HpBankW){1'b0}}, b_addr_q[l*AADDR_W +: HpBankW]};
+      b_const[l*CONST_W +: CONST_W] = hpc_rdata[m*CONST_W +: CONST_W];
+      b_state[l*STATE_W +: STATE_W] = hps_rdata[m*STATE_W +: STATE_W];
+      b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
+      b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
+      if (mode_i) begin
+        b_key[l*KEY_W +: PxAW]       = b_const[l*CONST_W + 192 +: PxAW];
+        b_bank[l*BBANK_W +: PxBankW] = b_const[l*CONST_W + 192 +: PxBankW];
+      end else begin
+        b_key[l*KEY_W +: HpAW]       = b_hp[l*HpAW +: HpAW];
+        b_bank[l*BBANK_W +: HpBankW] = b_hp[l*HpAW +: HpBankW];
+      end
+    end
+  end
+
+  // In-flight window: the keys issued in each of the last WIN_UPD cycles.
+  reg [WIN_UPD*NumPreu-1:0]       inf_v_q;
+  reg [WIN_UPD*NumPreu*KEY_W-1:0] inf_k_q;
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) inf_v_q <= {WIN_UPD*NumPreu{1'b0}};
+    else         inf_v_q <= {inf_v_q[0 +: (WIN_UPD-1)*NumPreu], b_iss};
+  end
+  always @(posedge clk_i) begin
+    inf_k_q <= {inf_k_q[0 +: (WIN_UPD-1)*NumPreu*KEY_W], b_key};
+  end
+
+  // Issue: a prefix of the pending lanes, each free of hazards and conflicts.
+  reg [NumPreu-1:0] b_haz, b_dup, b_bcf;
+  reg               b_pre;
+  always @* begin : b_issue
+    integer l, m, s;
+    b_pre = 1'b1;
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      b_haz[l] = 1'b0;
+      b_dup[l] = 1'b0;
+      b_bcf[l] = 1'b0;
+      for (s = 0; s < WIN_UPD; s = s + 1)
+        for (m = 0; m < NumPreu; m = m + 1)
+          if ((s < WIN_RAD || !mode_i) && inf_v_q[s*NumPreu + m] &&
+              inf_k_q[(s*NumPreu + m)*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W])
+            b_haz[l] = 1'b1;
+      for (m = 0; m < l; m = m + 1)
+        if (b_pend_q[m]) begin
+          if (b_key[m*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W]) b_dup[l] = 1'b1;
+          else if (b_bank[m*BBANK_W +: BBANK_W] == b_bank[l*BBANK_W +: BBANK_W]) b_bcf[l] = 1'b1;
+        end
+      b_iss[l] = b_pend_q[l] && b_pre && !b_haz[l] && !b_dup[l] && !b_bcf[l];
+      b_pre    = b_pre && (!b_pend_q[l] || b_iss[l]);
+    end
+  end
+
+  assign a_go = &(~b_pend_q | b_iss);
+
+  // ===============================================================================================
+  // Stage C (update): the hit-point data arrives; the PREU takes it with the photon.
+  reg [NumPreu-1:0]         c_v_q;
+  reg [NumPreu*HpAW-1:0]    c_hp_q;
+  reg [NumPreu*PH_W-1:0]    c_data_q;
+
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) c_v_q <= {NumPreu{1'b0}};
+    else         c_v_q <= b_iss & {NumPreu{~mode_i}};
+  end
+  always @(posedge clk_i) begin
+    c_hp_q   <= b_hp;
+    c_data_q <= b_data_q;
+  end
+
+  // ===============================================================================================
+  // PREUs.
+  wire [NumPreu-1:0]       p_valid, p_vout, p_acc, p_lreq, p_busy;
+  wire [NumPreu*KEY_W-1:0] p_tag, p_ltag;
+  wire [NumPreu*96-1:0]    p_tau, p_l;
+  wire [NumPreu*32-1:0]    p_r2, p_n;
+  reg  [NumPreu*BBANK_W-1:0] px_rbank_q;
+  wire [PX_BANKS*96-1:0]   px_rdata;
+
+  generate
+    for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
+      // The lane's hit-point data: radiance from the bank B addresses, update from C's bank.
+      reg [191:0]       hc;      // {f, pos}
+      reg [STATE_W-1:0] hs;
+      reg [KEY_W-1:0]   tag;
+      reg [95:0]        li;
+      integer bk;
+      always @* begin
+        hc  = b_const[gl*CONST_W +: 192];
+        hs  = b_state[gl*STATE_W +: STATE_W];
+        tag = b_key[gl*KEY_W +: KEY_W];
+        if (!mode_i) begin
+          tag = {KEY_W{1'b0}};
+          tag[HpAW-1:0] = c_hp_q[gl*HpAW +: HpAW];
+          bk = {{(32-HpBankW){1'b0}}, c_hp_q[gl*HpAW +: HpBankW]};
+          hc = hpc_rdata[bk*CONST_W +: 192];
+          hs = hps_rdata[bk*STATE_W +: STATE_W];
+        end
+        bk = {{(32-PxBankW){1'b0}}, px_rbank_q[gl*BBANK_W +: PxBankW]};
+        li = px_rdata[bk*96 +: 96];
+      end
+      assign p_valid[gl] = mode_i ? b_iss[gl] : c_v_q[gl];
+
+      pree_preu #(.TagW(KEY_W)) u_preu (
+        .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .valid_i(p_valid[gl]), .tag_i(tag),
+        .hp_pos_i(hc[0 +: 96]), .hp_f_i(hc[96 +: 96]), .hp_tau_i(hs[0 +: 96]),
+        .hp_r2_i(hs[96 +: 32]), .hp_n_i(hs[128 +: 32]),
+        .ph_pos_i(c_data_q[gl*PH_W +: 96]), .ph_phi_i(c_data_q[gl*PH_W + 96 +: 96]),
+        .ne_i(ne_i), .lreq_o(p_lreq[gl]), .lreq_tag_o(p_ltag[gl*KEY_W +: KEY_W]),
+        .l_i(li), .valid_o(p_vout[gl]), .tag_o(p_tag[gl*KEY_W +: KEY_W]),
+        .accept_o(p_acc[gl]), .tau_o(p_tau[gl*96 +: 96]), .r2_o(p_r2[gl*32 +: 32]),
+        .n_o(p_n[gl*32 +: 32]), .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
+    end
+  endgenerate
+
+  always @(posedge clk_i) begin : px_rbank
+    integer l;
+    for (l = 0; l < NumPreu; l = l + 1)
+      if (p_lreq[l]) px_rbank_q[l*BBANK_W +: BBANK_W] <= {{(BBANK_W-PxBankW){1'b0}},
+                                                          p_ltag[l*KEY_W +: PxBankW]};
+  end
+
+  // ===============================================================================================
+  // Hit-point memory: HP_BANKS banks of a constant and a state RAM.
+  reg [HpBankW-1:0] hp_hbank_q;   // bank of the host's read
+
+  generate
+    for (gb = 0; gb < HP_BANKS; gb = gb + 1) begin : g_hp
+      localparam [HpBankW-1:0] BANK = gb;
+      reg                re, wec, wes;
+      reg [HP_ROW_W-1:0] raddr, waddr;
+      reg [STATE_W-1:0]  wstate;
+      integer j, wl;
+      always @* begin
+        re = 1'b0; raddr = {HP_ROW_W{1'b0}};
+        wec = 1'b0; wes = 1'b0; waddr = {HP_ROW_W{1'b0}}; wstate = {STATE_W{1'b0}};
+        // Reads: host, update issue (B), radiance read (A).
+        if (hp_re_i && hp_addr_i[HpBankW-1:0] == BANK) begin
+          re = 1'b1; raddr = hp_addr_i[HpAW-1:HpBankW];
+        end
+        for (j = 0; j < NumPreu; j = j + 1) begin
+          if (!mode_i && b_iss[j] && b_hp[j*HpAW +: HpBankW] == BANK) begin
+            re = 1'b1; raddr = raddr | b_hp[j*HpAW + HpBankW +: HP_ROW_W];
+          end
+          if (mode_i && a_rd[j] && ad_addr[j*HpAW +: HpBankW] == BANK) begin
+            re = 1'b1; raddr = raddr | ad_addr[j*HpAW + HpBankW +: HP_ROW_W];
+          end
+        end
+        // Writes: host (both parts), update write-back of accepted photons (state).
+        if (hp_we_i && hp_addr_i[HpBankW-1:0] == BANK) begin
+          wec = 1'b1; wes = 1'b1; waddr = hp_addr_i[HpAW-1:HpBankW];
+          wstate = hp_wdata_i[0 +: STATE_W];
+        end
+        // Write-back: the (one) lane whose accepted result belongs to this bank.
+        wl = -1;
+        for (j = 0; j < NumPreu; j = j + 1)
+          if (!mode_i && p_vout[j] && p_acc[j] && p_tag[j*KEY_W +: HpBankW] == BANK) wl = j;
+        if (wl >= 0) begin
+          wes    = 1'b1;
+          waddr  = p_tag[wl*KEY_W + HpBankW +: HP_ROW_W];
+          wstate = {p_n[wl*32 +: 32], p_r2[wl*32 +: 32], p_tau[wl*96 +: 96]};
+        end
+      end
+      pree_ram_sdp #(.Width(CONST_W), .AddrW(HP_ROW_W)) u_const (
+        .clk_i(clk_i), .we_i(wec), .waddr_i(waddr), .wdata_i(hp_wdata_i[STATE_W +: CONST_W]),
+        .re_i(re), .raddr_i(raddr), .rdata_o(hpc_rdata[gb*CONST_W +: CONST_W]));
+      pree_ram_sdp #(.Width(STATE_W), .AddrW(HP_ROW_W)) u_state (
+        .clk_i(clk_i), .we_i(wes), .waddr_i(waddr), .wdata_i(wstate),
+        .re_i(re), .raddr_i(raddr), .rdata_o(hps_rdata[gb*STATE_W +: STATE_W]));
+    end
+  endgenerate
+
+  always @(posedge clk_i) begin
+    if (hp_re_i) hp_hbank_q <= hp_addr_i[HpBankW-1:0];
+  end
+
+  reg [CONST_W+STATE_W-1:0] hp_rdata;
+  always @* begin : hp_host_rd
+    integer m;
+    m = {{(32-HpBankW){1'b0}}, hp_hbank_q};
+    hp_rdata = {hpc_rdata[m*CONST_W +: CONST_W], hps_rdata[m*STATE_W +: STATE_W]};
+  end
+  assign hp_rdata_o = hp_rdata;
+
+  // ===============================================================================================
+  // Pixel memory: PX_BANKS banks of {b, g, r}.
+  reg [PxBankW-1:0] px_hbank_q;
+
+  generate
+    for (gb = 0; gb < PX_BANKS; gb = gb + 1) begin : g_px
+      localparam [PxBankW-1:0] BANK = gb;
+      reg                re, we;
+      reg [PX_ROW_W-1:0] raddr, waddr;
+      reg [95:0]         wdata;
+      integer j, wl;
+      always @* begin
+        wl = -1;
+        re = 1'b0; raddr = {PX_ROW_W{1'b0}};
+        we = 1'b0; waddr = {PX_ROW_W{1'b0}}; wdata = 96'd0;
+        if (px_re_i && px_addr_i[PxBankW-1:0] == BANK) begin
+          re = 1'b1; raddr = px_addr_i[PxAW-1:PxBankW];
+        end
+        if (px_we_i && px_addr_i[PxBankW-1:0] == BANK) begin
+          we = 1'b1; waddr = px_addr_i[PxAW-1:PxBankW]; wdata = px_wdata_i;
+        end
+        for (j = 0; j < NumPreu; j = j + 1) begin
+          if (p_lreq[j] && p_ltag[j*KEY_W +: PxBankW] == BANK) begin
+            re = 1'b1; raddr = raddr | p_ltag[j*KEY_W + PxBankW +: PX_ROW_W];
+          end
+          if (mode_i && p_vout[j] && p_tag[j*KEY_W +: PxBankW] == BANK) wl = j;
+        end
+        // Radiance write-back: the (one) lane whose pixel sum belongs to this bank.
+        if (wl >= 0) begin
+          we    = 1'b1;
+          waddr = p_tag[wl*KEY_W + PxBankW +: PX_ROW_W];
+          wdata = p_l[wl*96 +: 96];
+        end
+      end
+      pree_ram_sdp #(.Width(96), .AddrW(PX_ROW_W)) u_ram (
+        .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
+        .re_i(re), .raddr_i(raddr), .rdata_o(px_rdata[gb*96 +: 96]));
+    end
+  endgenerate
+
+  always @(posedge clk_i) begin
+    if (px_re_i) px_hbank_q <= px_addr_i[PxBankW-1:0];
+  end
+
+  reg [95:0] px_rdata_host;
+  always @* begin : px_host_rd
+    integer m;
+    m = {{(32-PxBankW){1'b0}}, px_hbank_q};
+    px_rdata_host = px_rdata[m*96 +: 96];
+  end
+  assign px_rdata_o = px_rdata_host;
+
+  // ===============================================================================================
+  // Idle and counters.
+  assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !(|c_v_q) && !(|p_busy);
+
+  reg [NCNT*CNT_W-1:0] cnt_q;
+  reg [2:0]            cause;    // 0 none, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve
+  reg                  found;
+  always @* begin : stall_cause
+    integer l;
+    cause = 3'd0;
+    found = 1'b0;
+    if (b_iss != {NumPreu{1'b1}}) begin
+      cause = b_short_q ? 3'd5 : 3'd6;
+      for (l = 0; l < NumPreu; l = l + 1)
+        if (!found && b_pend_q[l] && !b_iss[l]) begin
+          found = 1'b1;
+          cause = b_haz[l] ? 3'd2 : b_dup[l] ? 3'd3 : 3'd4;
+        end
+    end
+  end
+
+  always @(posedge clk_i or negedge rst_ni) begin : counters
+    integer l;
+    if (!rst_ni) begin
+      cnt_q <= {NCNT*CNT_W{1'b0}};
+    end else if (cnt_en_i) begin
+      if (mode_i) cnt_q[1*CNT_W +: CNT_W] <= cnt_q[1*CNT_W +: CNT_W] + CNT_ONE;
+      else        cnt_q[0 +: CNT_W]       <= cnt_q[0 +: CNT_W] + CNT_ONE;
+      for (l = 2; l < 7; l = l + 1)
+        if (cause == l[2:0]) cnt_q[l*CNT_W +: CNT_W] <= cnt_q[l*CNT_W +: CNT_W] + CNT_ONE;
+      for (l = 0; l < NumPreu; l = l + 1)
+        if (p_valid[l]) cnt_q[(7+l)*CNT_W +: CNT_W] <= cnt_q[(7+l)*CNT_W +: CNT_W] + CNT_ONE;
+    end
+  end
+  assign cnt_o = cnt_q;
+
+`ifdef PREE_ASSERT
+  // Protocol checks (simulation only): mode changes and host access only when idle, index
+  // writes of one cycle in distinct banks.
+  reg mode_q;
+  integer a, b;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      mode_q <= 1'b0;
+    end else begin
+      mode_q <= mode_i;
+      if (mode_i != mode_q && !idle_o) $fatal(1, "pree_top: mode_i changed while busy");
+      if ((hp_we_i || hp_re_i || px_we_i || px_re_i) && !idle_o)
+        $fatal(1, "pree_top: host memory port used while busy");
+      for (a = 0; a < NumPreu; a = a + 1)
+        for (b = 0; b < a; b = b + 1)
+          if (idx_we_i[a] && idx_we_i[b] &&
+              idx_addr_i[a*IdxAW +: LANE_W] == idx_addr_i[b*IdxAW +: LANE_W])
+            $fatal(1, "pree_top: two index writes in bank %0d", idx_addr_i[a*IdxAW +: LANE_W]);
+    end
+  end
+`endif
+
+endmodule
+
+`default_nettype wire

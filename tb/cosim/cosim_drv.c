@@ -1,0 +1,257 @@
+/* cosim_drv.c: the PREE host protocol on a Verilated pree_top (see cosim_drv.h). */
+#include "cosim_drv.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define IDX_DEPTH (1u << COSIM_IDXAW)
+#define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
+#define PQ_CAP    64u                  /* queued photons (power of two) */
+#define AQ_CAP    (2u * IDX_DEPTH)     /* allocated, unretired photons (power of two) */
+#define MAX_CAND  (IDX_DEPTH / 2)      /* candidates of one photon */
+
+typedef struct { uint32_t addr, hp; } idx_entry_t;
+typedef struct { preu_photon_t ph; uint32_t paddr, n; uint64_t widx_end; } photon_entry_t;
+typedef struct { uint64_t start, end; } alloc_entry_t;
+
+struct cosim_drv {
+    cosim_rtl_t *rtl;
+    cosim_in_t *in;
+    cosim_drv_opts_t opt;
+    char err[256];
+    idx_entry_t iq[IQ_CAP];
+    uint64_t iq_head, iq_tail;         /* absolute counts: written, queued */
+    photon_entry_t pq[PQ_CAP];
+    uint64_t pq_head, pq_tail;
+    alloc_entry_t aq[AQ_CAP];
+    uint64_t aq_head, aq_tail;
+    uint64_t alloc_end;                /* absolute index-table position after the last photon */
+    uint64_t prev_p;                   /* absolute p of the last photon */
+    uint32_t retired;                  /* photons_done_o seen so far */
+    int ready;                         /* ph_ready_o after the last edge */
+    uint64_t rng;
+    uint64_t ops;
+    int recent[COSIM_MAX_PREU];        /* hit-point banks of the last NumPreu-1 operations */
+    int nrecent;
+    uint32_t *cand;                    /* reorder scratch */
+};
+
+static uint64_t next_rand(cosim_drv_t *d)
+{
+    d->rng = d->rng * 6364136223846793005ull + 1442695040888963407ull;
+    return d->rng >> 33;
+}
+
+cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
+{
+    cosim_drv_t *d = calloc(1, sizeof *d);
+    if (!d) return NULL;
+    d->cand = malloc(MAX_CAND * sizeof *d->cand);
+    if (!d->cand) { free(d); return NULL; }
+    d->rtl = rtl;
+    d->in = cosim_rtl_in(rtl);
+    d->opt = *opt;
+    d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
+    d->ready = cosim_rtl_ph_ready(rtl);
+    return d;
+}
+
+void cosim_drv_free(cosim_drv_t *d)
+{
+    if (!d) return;
+    free(d->cand);
+    free(d);
+}
+
+const char *cosim_drv_error(const cosim_drv_t *d) { return d->err; }
+uint64_t cosim_drv_ops_sent(const cosim_drv_t *d) { return d->ops; }
+
+void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]) { cosim_rtl_counters(d->rtl, cnt); }
+
+/* One clock cycle of the update stream: retire, write index entries, offer a photon. */
+static void pump(cosim_drv_t *d)
+{
+    cosim_in_t *in = d->in;
+    const int np = d->opt.preu;
+    /* Retire the photons whose entries the PREE has read. */
+    uint32_t done = cosim_rtl_photons_done(d->rtl);
+    while (d->retired != done && d->aq_head != d->aq_tail) { d->aq_head++; d->retired++; }
+    /* Up to NumPreu index entries in distinct banks (consecutive queue entries are). */
+    uint32_t used = 0;
+    int nw = 0;
+    while (nw < np && d->iq_head != d->iq_tail) {
+        const idx_entry_t *e = &d->iq[d->iq_head & (IQ_CAP - 1)];
+        uint32_t b = 1u << (e->addr % (uint32_t)np);
+        if (used & b) break;
+        used |= b;
+        in->idx_we[nw] = 1;
+        in->idx_addr[nw] = e->addr;
+        in->idx_data[nw] = e->hp;
+        nw++;
+        d->iq_head++;
+    }
+    for (int j = nw; j < np; j++) in->idx_we[j] = 0;
+    /* The head photon once its entries are written (by the end of this cycle). */
+    in->ph_valid = 0;
+    if (d->pq_head != d->pq_tail) {
+        const photon_entry_t *p = &d->pq[d->pq_head & (PQ_CAP - 1)];
+        int gap = d->opt.gap > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.gap;
+        if (p->widx_end <= d->iq_head && !gap) {
+            in->ph_valid = 1;
+            memcpy(in->ph_pos, p->ph.pos, sizeof in->ph_pos);
+            memcpy(in->ph_phi, p->ph.phi, sizeof in->ph_phi);
+            in->ph_paddr = p->paddr;
+            in->ph_n = p->n;
+        }
+    }
+    /* ph_ready_o depends on the state only, so the value after the last edge holds now. */
+    int take = in->ph_valid && d->ready;
+    cosim_rtl_tick(d->rtl);
+    if (take) d->pq_head++;
+    d->ready = cosim_rtl_ph_ready(d->rtl);
+}
+
+/* Order a photon's candidates: each next one, where possible, in a bank none of the last
+ * NumPreu-1 operations used. */
+static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
+{
+    const int np = d->opt.preu;
+    const uint32_t mask = (1u << d->opt.hp_bank_w) - 1;
+    memcpy(d->cand, hps, n * sizeof *hps);
+    for (size_t k = 0; k < n; k++) {
+        size_t pick = k;
+        if (d->opt.reorder) {
+            for (size_t c = k; c < n; c++) {
+                int bank = (int)(d->cand[c] & mask), clash = 0;
+                for (int r = 0; r < d->nrecent; r++) clash |= d->recent[r] == bank;
+                if (!clash) { pick = c; break; }
+            }
+            uint32_t t = d->cand[k]; d->cand[k] = d->cand[pick]; d->cand[pick] = t;
+        }
+        /* Remember the bank in the window of the last NumPreu-1 operations. */
+        if (np > 1) {
+            if (d->nrecent == np - 1) {
+                memmove(d->recent, d->recent + 1, (size_t)(np - 2) * sizeof *d->recent);
+                d->nrecent--;
+            }
+            d->recent[d->nrecent++] = (int)(d->cand[k] & mask);
+        }
+    }
+}
+
+int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
+{
+    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
+    if (n > MAX_CAND) {
+        snprintf(d->err, sizeof d->err, "a photon with %zu candidates (at most %u)", n, MAX_CAND);
+        return -1;
+    }
+    const uint32_t np = (uint32_t)d->opt.preu;
+    reorder(d, hps, n);
+    /* Place it: p = prev_p - n (mod NumPreu), at or after the end of the last photon. */
+    uint64_t target = (d->prev_p + (uint64_t)np * MAX_CAND - n) % np;
+    uint64_t p = d->alloc_end + (target + np - d->alloc_end % np) % np;
+    /* Wait for index-table space: everything from the oldest unretired photon on is in use. */
+    for (;;) {
+        uint64_t low = d->aq_head != d->aq_tail ? d->aq[d->aq_head & (AQ_CAP - 1)].start : p;
+        if (p + n - low <= IDX_DEPTH && d->aq_tail - d->aq_head < AQ_CAP &&
+            d->pq_tail - d->pq_head < PQ_CAP)
+            break;
+        pump(d);
+    }
+    d->aq[d->aq_tail++ & (AQ_CAP - 1)] = (alloc_entry_t){p, p + n};
+    d->alloc_end = p + n;
+    d->prev_p = p;
+    /* The k-th operation AFTSO-HpUOC emits reads ref = p + n - 1 - k. */
+    for (size_t k = 0; k < n; k++) {
+        idx_entry_t *e = &d->iq[d->iq_tail++ & (IQ_CAP - 1)];
+        e->addr = (uint32_t)((p + n - 1 - k) & (IDX_DEPTH - 1));
+        e->hp = d->cand[k];
+    }
+    photon_entry_t *pe = &d->pq[d->pq_tail++ & (PQ_CAP - 1)];
+    pe->ph = *ph;
+    pe->paddr = (uint32_t)(p & (IDX_DEPTH - 1));
+    pe->n = (uint32_t)n;
+    pe->widx_end = d->iq_tail;
+    d->ops += n;
+    d->in->cnt_en = 1;
+    while (d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) pump(d);
+    return 0;
+}
+
+int cosim_drv_drain(cosim_drv_t *d)
+{
+    uint64_t guard = 0;
+    while (d->pq_head != d->pq_tail || d->iq_head != d->iq_tail) {
+        pump(d);
+        if (++guard > 100000000ull) { snprintf(d->err, sizeof d->err, "the photon stream does not drain"); return -1; }
+    }
+    d->in->ph_valid = 0;
+    for (int j = 0; j < d->opt.preu; j++) d->in->idx_we[j] = 0;
+    guard = 0;
+    while (!cosim_rtl_idle(d->rtl)) {
+        cosim_rtl_tick(d->rtl);
+        if (++guard > 1000000) { snprintf(d->err, sizeof d->err, "the PREE does not become idle"); return -1; }
+    }
+    d->in->cnt_en = 0;
+    cosim_rtl_tick(d->rtl);
+    return 0;
+}
+
+void cosim_drv_load_hp(cosim_drv_t *d, const preu_hp_t *hp, const int32_t *pixel, size_t n)
+{
+    cosim_in_t *in = d->in;
+    in->hp_we = 1;
+    for (size_t i = 0; i < n; i++) {
+        in->hp_addr = (uint32_t)i;
+        in->hp_wdata = hp[i];
+        in->hp_pixel = (uint32_t)pixel[i];
+        cosim_rtl_tick(d->rtl);
+    }
+    in->hp_we = 0;
+    cosim_rtl_tick(d->rtl);
+}
+
+void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hp_t *hp, uint32_t *pixel)
+{
+    d->in->hp_re = 1;
+    d->in->hp_addr = i;
+    cosim_rtl_tick(d->rtl);
+    d->in->hp_re = 0;
+    cosim_rtl_hp_rdata(d->rtl, hp, pixel);
+}
+
+void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L)
+{
+    cosim_in_t *in = d->in;
+    /* Clear the pixel sums to +0. */
+    in->px_we = 1;
+    memset(in->px_wdata, 0, sizeof in->px_wdata);
+    for (size_t p = 0; p < npix; p++) {
+        in->px_addr = (uint32_t)p;
+        cosim_rtl_tick(d->rtl);
+    }
+    in->px_we = 0;
+    /* Switch to radiance mode (idle), start the pass, wait for idle. */
+    in->mode = 1;
+    cosim_rtl_tick(d->rtl);
+    in->ne = ne;
+    in->n_hit = n_hit;
+    in->rad_start = 1;
+    in->cnt_en = 1;
+    cosim_rtl_tick(d->rtl);
+    in->rad_start = 0;
+    while (!cosim_rtl_idle(d->rtl)) cosim_rtl_tick(d->rtl);
+    in->cnt_en = 0;
+    /* Read the pixels back. */
+    for (size_t p = 0; p < npix; p++) {
+        in->px_re = 1;
+        in->px_addr = (uint32_t)p;
+        cosim_rtl_tick(d->rtl);
+        cosim_rtl_px_rdata(d->rtl, L + 3 * p);
+    }
+    in->px_re = 0;
+    in->mode = 0;
+    cosim_rtl_tick(d->rtl);
+}

@@ -1,0 +1,54 @@
+/* cosim_drv.h: the host side of the PREE: drives a Verilated pree_top (cosim_rtl.h) the way an
+ * FPGA host would: loads the hit points, streams photons with their index-table entries,
+ * runs the radiance pass and reads the memories back.
+ *
+ * API
+ *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory)
+ *   cosim_drv_free(d)
+ *   cosim_drv_load_hp(d, ...)     write n hit points (state + pixel) through the host port
+ *   cosim_drv_photon(d, ph, hps, n)  queue one photon hit with its candidate hit points, in
+ *                                 photon order; clocks the model as far as needed to keep the
+ *                                 queues short. Returns 0, or -1 with a message in d->err.
+ *   cosim_drv_drain(d)            send everything queued and wait until the PREE is idle
+ *   cosim_drv_read_hp(d, i, hp, pixel)  read hit point i back (one model cycle)
+ *   cosim_drv_radiance(d, n_hit, ne, npix, L)  clear npix pixels, run the radiance pass over
+ *                                 [0, n_hit) with N_emitted = ne, read the pixels into L
+ *   cosim_drv_counters(d, cnt)    pree_top's counters now
+ *
+ * Index table use (docs/pree_top.md, "Host protocol"): photon k's N^P entries sit at
+ * p_k .. p_k + N^P - 1 (mod 2^IdxAW), with p_k chosen so that the refs AFTSO-HpUOC emits are
+ * consecutive mod NumPreu across photons (p_k = p_(k-1) - N^P mod NumPreu): then any NumPreu
+ * consecutive operations read distinct index banks and the load port writes NumPreu entries a
+ * cycle without conflicts. With reorder set, each photon's candidates are ordered so that any
+ * NumPreu consecutive operations use distinct hit-point banks where the candidates allow it
+ * (the order inside one photon does not change any result). */
+#ifndef PREE_COSIM_DRV_H
+#define PREE_COSIM_DRV_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "cosim_rtl.h"
+
+typedef struct {
+    int preu;          /* PREUs of the model */
+    int hp_bank_w;     /* log2 of its hit-point banks */
+    int reorder;       /* 1: order each photon's candidates for distinct banks */
+    double gap;        /* probability of an idle cycle on the photon input (0: none) */
+    uint64_t seed;     /* for the gaps */
+} cosim_drv_opts_t;
+
+typedef struct cosim_drv cosim_drv_t;
+
+
+cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt);
+void cosim_drv_free(cosim_drv_t *d);
+const char *cosim_drv_error(const cosim_drv_t *d);
+void cosim_drv_load_hp(cosim_drv_t *d, const preu_hp_t *hp, const int32_t *pixel, size_t n);
+int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n);
+int cosim_drv_drain(cosim_drv_t *d);
+void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hp_t *hp, uint32_t *pixel);
+void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
+void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);
+uint64_t cosim_drv_ops_sent(const cosim_drv_t *d);
+
+#endif

@@ -1,0 +1,296 @@
+/* cosim_main.c: `pree cosim SCENE [options]`: the renderer in fp32 mode as the host of the
+ * Verilated PREE (rtl/pree_top.v). Every photon hit's operations are streamed into the RTL in
+ * photon order; after the last photon the RTL's hit-point memory is compared word for word with
+ * the fp32 model, the radiance pass runs in RTL, and its pixel memory (the image) is compared
+ * with the model's radiance in the same order. A double-precision render of the same scene
+ * gives SSIM and SNR. Exit status: 0 when both comparisons show 0 differing words, 1 otherwise
+ * or on a failure, 2 on a usage error. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include "cli.h"
+#include "cli_options.h"
+#include "compare.h"
+#include "cosim_drv.h"
+#include "image.h"
+#include "radiance.h"
+#include "render.h"
+
+typedef struct {
+    cosim_drv_t *drv;
+    double sec_rtl;              /* wall time spent clocking the RTL in the update phase */
+    unsigned long long photons_sent, photons_empty;
+    int failed;
+} cosim_ctx_t;
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+static void cosim_usage(FILE *f)
+{
+    fprintf(f,
+        "usage: pree cosim SCENE [options]\n"
+        "  --width W --height H --photons N --grid G --no-skip --threads T   as for 'pree render'\n"
+        "                         (--threads: the double reference render only)\n"
+        "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
+        "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
+        "  --out IMAGE            the RTL image (.png, .ppm or .exr)\n"
+        "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
+        "  --no-reference         skip the double render (no SSIM/SNR)\n"
+        "  --no-reorder           stream each photon's candidates in the engine's order\n"
+        "  --gap P                idle cycles on the photon input with probability P\n"
+        "  --quiet                no progress on stderr\n");
+}
+
+static int on_begin(void *user, const hitpoints_t *hp, uint64_t photons)
+{
+    cosim_ctx_t *c = user;
+    (void)photons;
+    if (hp->n > (1u << COSIM_HPAW)) { c->failed = 1; return -1; }
+    cosim_drv_load_hp(c->drv, hp->fp32, hp->pixel, hp->n);
+    return 0;
+}
+
+static int on_hit(void *user, const photon_hit_t *hit, const preu_photon_t *ph32, const uint32_t *hps, size_t n)
+{
+    cosim_ctx_t *c = user;
+    (void)hit;
+    if (n == 0) { c->photons_empty++; return 0; }
+    double t0 = now();
+    int rc = cosim_drv_photon(c->drv, ph32, hps, n);
+    c->sec_rtl += now() - t0;
+    c->photons_sent++;
+    return rc;
+}
+
+static int hp_words_differ(const preu_hp_t *a, uint32_t pa, const preu_hp_t *b, uint32_t pb)
+{
+    int d = pa != pb;
+    for (int k = 0; k < 3; k++)
+        d += (a->pos[k] != b->pos[k]) + (a->f[k] != b->f[k]) + (a->tau[k] != b->tau[k]);
+    return d + (a->r2 != b->r2) + (a->n != b->n);
+}
+
+static void to_float(const double *rgb, size_t n, float *out)
+{
+    for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
+}
+
+int pree_cmd_cosim(int argc, char **argv)
+{
+    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
+                            .grid = GRID_CELLS, .preu = 4, .progress = 1};
+    const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
+    int reference = 1, reorder = 1, threads = 0;
+    double gap = 0;
+    char err[1024];
+    cli_args_t a = {argc, argv, 1, "cosim"};
+    while (a.i < argc) {
+        const char *arg = argv[a.i++];
+        long long v;
+        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { cosim_usage(stdout); return 0; }
+        else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.width = (int)v; }
+        else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.height = (int)v; }
+        else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
+        else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; threads = (int)v; }
+        else if (!strcmp(arg, "--preu")) {
+            if (cli_int(&a, arg, 4, 16, &v)) return 2;
+            if (v != 4 && v != 8 && v != 16) return cli_error(&a, "--preu: %lld is not 4, 8 or 16", v);
+            opt.preu = (int)v;
+        } else if (!strcmp(arg, "--grid")) {
+            const char *s = cli_value(&a, arg);
+            if (!s) return 2;
+            if (!strcmp(s, "cells")) opt.grid = GRID_CELLS;
+            else if (!strcmp(s, "smallppm")) opt.grid = GRID_SMALLPPM;
+            else if (!strcmp(s, "brute")) opt.grid = GRID_BRUTE;
+            else return cli_error(&a, "--grid: '%s' is not cells, smallppm or brute", s);
+        } else if (!strcmp(arg, "--gap")) {
+            const char *s = cli_value(&a, arg);
+            char *end;
+            if (!s) return 2;
+            gap = strtod(s, &end);
+            if (*end || !(gap >= 0 && gap < 1)) return cli_error(&a, "--gap: '%s' is not in [0, 1)", s);
+        } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
+        else if (!strcmp(arg, "--no-reference")) reference = 0;
+        else if (!strcmp(arg, "--no-reorder")) reorder = 0;
+        else if (!strcmp(arg, "--quiet")) opt.progress = 0;
+        else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
+        else if (!strcmp(arg, "--out")) {
+            if (!(out_path = cli_value(&a, arg))) return 2;
+            if (cli_image_ext(&a, out_path)) return 2;
+        } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
+        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree cosim --help')", arg);
+        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
+        else scene_path = arg;
+    }
+    if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
+    const size_t npix = (size_t)opt.width * (size_t)opt.height;
+    if (npix > (1u << COSIM_PXAW))
+        return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
+
+    scene_t scene;
+    if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
+
+    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, trace_path, err, sizeof err);
+    if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder, .gap = gap, .seed = 1};
+    cosim_ctx_t ctx = {0};
+    ctx.drv = cosim_drv_new(rtl, &dopt);
+    update_sink_t sink = {.fn = on_hit, .user = &ctx};
+    opt.sink = &sink;
+    opt.begin = on_begin;
+
+    int status = 1;
+    render_result_t res = {0}, ref = {0};
+    uint32_t *Lr = NULL, *Lm = NULL;
+    double *rgb = NULL;
+    double t_start = now();
+    int rc = ctx.drv ? render_run(&scene, &opt, &res, err, sizeof err) : -1;
+    double sec_engine = now() - t_start;
+    if (rc != 0) {
+        fprintf(stderr, "pree cosim: %s: %s\n", scene_path,
+                ctx.failed ? "more hit points than the RTL's hit-point memory" :
+                sink.failed ? cosim_drv_error(ctx.drv) : err);
+        goto out;
+    }
+    double t0 = now();
+    if (cosim_drv_drain(ctx.drv)) { fprintf(stderr, "pree cosim: %s\n", cosim_drv_error(ctx.drv)); goto out; }
+    double sec_update_rtl = ctx.sec_rtl + (now() - t0);
+    uint64_t cnt_upd[COSIM_NCNT], cnt_all[COSIM_NCNT];
+    cosim_drv_counters(ctx.drv, cnt_upd);
+
+    /* Hit-point memory against the fp32 model's final state. */
+    unsigned long long hp_diff = 0, hp_diff_points = 0;
+    for (size_t i = 0; i < res.hp.n; i++) {
+        preu_hp_t h;
+        uint32_t px;
+        cosim_drv_read_hp(ctx.drv, (uint32_t)i, &h, &px);
+        int dw = hp_words_differ(&h, px, &res.hp.fp32[i], (uint32_t)res.hp.pixel[i]);
+        if (dw && hp_diff_points < 5)
+            fprintf(stderr, "pree cosim: hit point %zu differs: RTL r2 %08x n %08x tau %08x, model r2 %08x n %08x tau %08x\n",
+                    i, h.r2, h.n, h.tau[0], res.hp.fp32[i].r2, res.hp.fp32[i].n, res.hp.fp32[i].tau[0]);
+        hp_diff += (unsigned long long)dw;
+        hp_diff_points += dw != 0;
+    }
+
+    /* Radiance in RTL and in the model, same order. */
+    Lr = calloc(npix * 3, sizeof *Lr);
+    Lm = calloc(npix * 3, sizeof *Lm);
+    rgb = malloc(npix * 3 * sizeof *rgb);
+    if (!Lr || !Lm || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
+    const uint32_t ne = preu_n_emitted(res.stats.photons_emitted);
+    t0 = now();
+    cosim_drv_radiance(ctx.drv, (uint32_t)res.hp.n, ne, npix, Lr);
+    double sec_rad_rtl = now() - t0;
+    cosim_drv_counters(ctx.drv, cnt_all);
+    unsigned long long skipped;
+    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, Lm, &skipped)) {
+        fprintf(stderr, "pree cosim: out of memory\n");
+        goto out;
+    }
+    unsigned long long img_diff = 0;
+    for (size_t j = 0; j < npix * 3; j++) {
+        if (Lr[j] != Lm[j] && img_diff < 5)
+            fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
+        img_diff += Lr[j] != Lm[j];
+    }
+    for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
+    if (out_path && pree_image_write(out_path, opt.width, opt.height, rgb, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
+        goto out;
+    }
+
+    /* The double-precision reference render. */
+    pree_metrics_t m = {0};
+    int have_m = 0;
+    if (reference) {
+        render_options_t ropt = {.width = opt.width, .height = opt.height, .photons = opt.photons,
+                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = threads,
+                                 .no_skip = opt.no_skip, .preu = opt.preu};
+        if (render_run(&scene, &ropt, &ref, err, sizeof err)) { fprintf(stderr, "pree cosim: reference: %s\n", err); goto out; }
+        pree_image_t ia = {0}, ib = {0};
+        if (pree_image_alloc(&ia, opt.width, opt.height, err, sizeof err) ||
+            pree_image_alloc(&ib, opt.width, opt.height, err, sizeof err)) {
+            fprintf(stderr, "pree cosim: %s\n", err);
+            pree_image_free(&ia);
+            goto out;
+        }
+        to_float(ref.rgb, npix * 3, ia.rgb);
+        to_float(rgb, npix * 3, ib.rgb);
+        if (pree_compare(&ia, &ib, &m, err, sizeof err)) fprintf(stderr, "pree cosim: compare: %s\n", err);
+        else have_m = 1;
+        pree_image_free(&ia);
+        pree_image_free(&ib);
+    }
+
+    /* Figures. */
+    const int np = opt.preu;
+    uint64_t ops_upd = 0, ops_all = 0;
+    for (int l = 0; l < np; l++) { ops_upd += cnt_upd[CNT_OPS0 + l]; ops_all += cnt_all[CNT_OPS0 + l]; }
+    const uint64_t cyc_upd = cnt_upd[CNT_CYC_UPD], cyc_rad = cnt_all[CNT_CYC_RAD];
+    const uint64_t ops_rad = ops_all - ops_upd;
+    const double util_upd = cyc_upd ? (double)ops_upd / ((double)np * (double)cyc_upd) : 0;
+    const double util_rad = cyc_rad ? (double)ops_rad / ((double)np * (double)cyc_rad) : 0;
+    const double sim_ops_s = sec_update_rtl > 0 ? (double)ops_upd / sec_update_rtl : 0;
+    const char *causes[] = {"hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a", "starved"};
+    int ok = hp_diff == 0 && img_diff == 0 && ops_upd == cosim_drv_ops_sent(ctx.drv) && ops_rad == res.hp.n;
+    if (ops_upd != cosim_drv_ops_sent(ctx.drv))
+        fprintf(stderr, "pree cosim: %llu update operations sent, %llu counted in the RTL\n",
+                (unsigned long long)cosim_drv_ops_sent(ctx.drv), (unsigned long long)ops_upd);
+    if (stats_path) {
+        FILE *f = fopen(stats_path, "w");
+        if (!f) { fprintf(stderr, "pree cosim: %s: cannot write\n", stats_path); goto out; }
+        fprintf(f, "{\n  \"scene\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"photons_emitted\": %llu,\n",
+                scene_path, opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
+        fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
+                np, reorder ? "true" : "false", gap, res.hp.n);
+        fprintf(f, "  \"photon_hits_streamed\": %llu,\n  \"photon_hits_without_operations\": %llu,\n",
+                ctx.photons_sent, ctx.photons_empty);
+        fprintf(f, "  \"hp_words_differing\": %llu,\n  \"hp_points_differing\": %llu,\n  \"image_words_differing\": %llu,\n",
+                hp_diff, hp_diff_points, img_diff);
+        if (have_m)
+            fprintf(f, "  \"ssim_vs_double\": %.9f,\n  \"snr_db_vs_double\": %.4f,\n  \"psnr_db_vs_double\": %.4f,\n",
+                    m.ssim, m.snr_db, m.psnr_db);
+        fprintf(f, "  \"update\": {\"cycles\": %llu, \"operations\": %llu, \"ops_per_cycle\": %.6f, \"preu_utilization\": %.6f,\n",
+                (unsigned long long)cyc_upd, (unsigned long long)ops_upd, cyc_upd ? (double)ops_upd / (double)cyc_upd : 0, util_upd);
+        fprintf(f, "    \"ops_per_preu\": [");
+        for (int l = 0; l < np; l++) fprintf(f, "%s%llu", l ? ", " : "", (unsigned long long)cnt_upd[CNT_OPS0 + l]);
+        fprintf(f, "],\n    \"short_cycles_by_cause\": {");
+        for (int k = 0; k < 5; k++) fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)cnt_upd[CNT_HAZ + k]);
+        fprintf(f, "}},\n");
+        fprintf(f, "  \"radiance\": {\"cycles\": %llu, \"operations\": %llu, \"preu_utilization\": %.6f, \"short_cycles_by_cause\": {",
+                (unsigned long long)cyc_rad, (unsigned long long)ops_rad, util_rad);
+        for (int k = 0; k < 5; k++)
+            fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)(cnt_all[CNT_HAZ + k] - cnt_upd[CNT_HAZ + k]));
+        fprintf(f, "}},\n");
+        fprintf(f, "  \"seconds\": {\"engine_with_rtl\": %.3f, \"rtl_update\": %.3f, \"rtl_radiance\": %.3f},\n",
+                sec_engine, sec_update_rtl, sec_rad_rtl);
+        fprintf(f, "  \"simulated_ops_per_second\": %.0f,\n  \"simulated_cycles_per_second\": %.0f,\n",
+                sim_ops_s, sec_update_rtl > 0 ? (double)cyc_upd / sec_update_rtl : 0);
+        fprintf(f, "  \"pass\": %s\n}\n", ok ? "true" : "false");
+        if (fclose(f)) { fprintf(stderr, "pree cosim: %s: write failed\n", stats_path); goto out; }
+    }
+    if (opt.progress)
+        fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/s; "
+                "differing words: hit points %llu, image %llu%s\n",
+                np, (unsigned long long)ops_upd, (unsigned long long)cyc_upd, 100 * util_upd, sim_ops_s,
+                hp_diff, img_diff, ok ? "" : " FAIL");
+    status = ok ? 0 : 1;
+out:
+    free(Lr);
+    free(Lm);
+    free(rgb);
+    render_result_free(&res);
+    if (reference) render_result_free(&ref);
+    free(sink.buf);
+    cosim_drv_free(ctx.drv);
+    cosim_rtl_free(rtl);
+    scene_free(&scene);
+    return status;
+}

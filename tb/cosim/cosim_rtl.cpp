@@ -1,0 +1,259 @@
+// cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
+// Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models.
+#include "cosim_rtl.h"
+
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "verilated.h"
+#include "verilated_fst_c.h"
+#ifdef COSIM_HAVE_P4
+#include "Vpree_top_p4.h"
+#endif
+#ifdef COSIM_HAVE_P8
+#include "Vpree_top_p8.h"
+#endif
+#ifdef COSIM_HAVE_P16
+#include "Vpree_top_p16.h"
+#endif
+
+namespace {
+
+// Bit fields of a port: integral ports (up to 64 bits) and wide ports (VlWide).
+template <typename T>
+void put(T &port, unsigned lsb, unsigned w, uint64_t v)
+{
+    const uint64_t mask = (w >= 64 ? ~0ull : ((1ull << w) - 1)) << lsb;
+    port = static_cast<T>((static_cast<uint64_t>(port) & ~mask) | ((v << lsb) & mask));
+}
+template <std::size_t N>
+void put(VlWide<N> &port, unsigned lsb, unsigned w, uint64_t v)
+{
+    for (unsigned b = 0; b < w; b++) {
+        unsigned bit = lsb + b, word = bit / 32, off = bit % 32;
+        uint32_t x = port[word];
+        x = (x & ~(1u << off)) | (static_cast<uint32_t>((v >> b) & 1u) << off);
+        port[word] = x;
+    }
+}
+template <std::size_t N>
+void put32(VlWide<N> &port, unsigned lsb, uint32_t v)
+{
+    if (lsb % 32 == 0) port[lsb / 32] = v;
+    else put(port, lsb, 32, v);
+}
+template <typename T>
+uint64_t get(const T &port, unsigned lsb, unsigned w)
+{
+    return (static_cast<uint64_t>(port) >> lsb) & (w >= 64 ? ~0ull : ((1ull << w) - 1));
+}
+template <std::size_t N>
+uint64_t get(const VlWide<N> &port, unsigned lsb, unsigned w)
+{
+    uint64_t v = 0;
+    for (unsigned b = 0; b < w; b++) {
+        unsigned bit = lsb + b;
+        v |= static_cast<uint64_t>((port[bit / 32] >> (bit % 32)) & 1u) << b;
+    }
+    return v;
+}
+template <std::size_t N>
+uint32_t get32(const VlWide<N> &port, unsigned lsb)
+{
+    return lsb % 32 == 0 ? port[lsb / 32] : static_cast<uint32_t>(get(port, lsb, 32));
+}
+
+}  // namespace
+
+struct cosim_rtl {
+    virtual ~cosim_rtl() {}
+    cosim_in_t in;
+    uint64_t cycles = 0;
+    virtual void eval() = 0;
+    virtual void tick() = 0;
+    virtual int ph_ready() = 0;
+    virtual int idle() = 0;
+    virtual uint32_t photons_done() = 0;
+    virtual void hp_rdata(preu_hp_t *hp, uint32_t *pixel) = 0;
+    virtual void px_rdata(uint32_t L[3]) = 0;
+    virtual void counters(uint64_t *cnt) = 0;
+    virtual int open_trace(const char *path) = 0;
+    virtual int hp_bank_w() = 0;
+};
+
+namespace {
+
+template <class V, int NP, int HPB>
+struct Rtl : cosim_rtl {
+    std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
+    std::unique_ptr<V> top;
+    std::unique_ptr<VerilatedFstC> tfp;
+    uint64_t time = 0;
+    cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
+
+    Rtl()
+    {
+        // Tracing is compiled in; traceEverOn lets open_trace attach a trace later.
+        ctx->traceEverOn(true);
+        top.reset(new V{ctx.get()});
+        std::memset(&in, 0, sizeof in);
+        std::memset(&applied, 0xff, sizeof applied);
+        top->clk_i = 0;
+        top->rst_ni = 0;
+        apply();
+        top->eval();
+        for (int i = 0; i < 2; i++) { top->clk_i = 1; top->eval(); top->clk_i = 0; top->eval(); }
+        top->rst_ni = 1;
+        top->eval();
+    }
+    ~Rtl() override
+    {
+        if (tfp) tfp->close();
+        top->final();
+    }
+    int open_trace(const char *path) override
+    {
+        tfp.reset(new VerilatedFstC);
+        top->trace(tfp.get(), 99);
+        tfp->open(path);
+        if (!tfp->isOpen()) { tfp.reset(); return -1; }
+        return 0;
+    }
+    void apply()
+    {
+        V &t = *top;
+        t.mode_i = in.mode;
+        t.cnt_en_i = in.cnt_en;
+        t.rad_start_i = in.rad_start;
+        t.ne_i = in.ne;
+        t.n_hit_i = in.n_hit;
+        t.ph_valid_i = in.ph_valid;
+        if (std::memcmp(applied.ph_pos, in.ph_pos, sizeof in.ph_pos) ||
+            std::memcmp(applied.ph_phi, in.ph_phi, sizeof in.ph_phi)) {
+            for (int c = 0; c < 3; c++) {
+                put32(t.ph_data_i, 32 * c, in.ph_pos[c]);
+                put32(t.ph_data_i, 96 + 32 * c, in.ph_phi[c]);
+            }
+            std::memcpy(applied.ph_pos, in.ph_pos, sizeof in.ph_pos);
+            std::memcpy(applied.ph_phi, in.ph_phi, sizeof in.ph_phi);
+        }
+        t.ph_paddr_i = in.ph_paddr;
+        t.ph_n_i = in.ph_n;
+        uint32_t we = 0;
+        for (int j = 0; j < NP; j++) {
+            if (!in.idx_we[j]) continue;
+            we |= 1u << j;
+            put(t.idx_addr_i, j * COSIM_IDXAW, COSIM_IDXAW, in.idx_addr[j]);
+            put(t.idx_data_i, j * COSIM_HPAW, COSIM_HPAW, in.idx_data[j]);
+        }
+        t.idx_we_i = we;
+        t.hp_we_i = in.hp_we;
+        t.hp_re_i = in.hp_re;
+        t.hp_addr_i = in.hp_addr;
+        if (in.hp_we) {
+            const preu_hp_t &h = in.hp_wdata;
+            for (int c = 0; c < 3; c++) {
+                put32(t.hp_wdata_i, 32 * c, h.tau[c]);
+                put32(t.hp_wdata_i, 160 + 32 * c, h.pos[c]);
+                put32(t.hp_wdata_i, 256 + 32 * c, h.f[c]);
+            }
+            put32(t.hp_wdata_i, 96, h.r2);
+            put32(t.hp_wdata_i, 128, h.n);
+            put(t.hp_wdata_i, 352, COSIM_PXAW, in.hp_pixel);
+        }
+        t.px_we_i = in.px_we;
+        t.px_re_i = in.px_re;
+        t.px_addr_i = in.px_addr;
+        if (in.px_we)
+            for (int c = 0; c < 3; c++) put32(t.px_wdata_i, 32 * c, in.px_wdata[c]);
+    }
+    void eval() override
+    {
+        apply();
+        top->eval();
+    }
+    void tick() override
+    {
+        apply();
+        top->eval();
+        if (tfp) tfp->dump(time);
+        time++;
+        top->clk_i = 1;
+        top->eval();
+        if (tfp) tfp->dump(time);
+        time++;
+        top->clk_i = 0;
+        top->eval();
+        cycles++;
+    }
+    int hp_bank_w() override { return HPB; }
+    int ph_ready() override { return top->ph_ready_o; }
+    int idle() override { return top->idle_o; }
+    uint32_t photons_done() override { return top->photons_done_o; }
+    void hp_rdata(preu_hp_t *h, uint32_t *pixel) override
+    {
+        const auto &d = top->hp_rdata_o;
+        for (int c = 0; c < 3; c++) {
+            h->tau[c] = get32(d, 32 * c);
+            h->pos[c] = get32(d, 160 + 32 * c);
+            h->f[c] = get32(d, 256 + 32 * c);
+        }
+        h->r2 = get32(d, 96);
+        h->n = get32(d, 128);
+        *pixel = static_cast<uint32_t>(get(d, 352, COSIM_PXAW));
+    }
+    void px_rdata(uint32_t L[3]) override
+    {
+        for (int c = 0; c < 3; c++) L[c] = get32(top->px_rdata_o, 32 * c);
+    }
+    void counters(uint64_t *cnt) override
+    {
+        for (int k = 0; k < COSIM_NCNT; k++) cnt[k] = 0;
+        for (int k = 0; k < 7 + NP; k++) cnt[k] = get(top->cnt_o, 48 * k, 48);
+    }
+};
+
+}  // namespace
+
+extern "C" {
+
+cosim_rtl_t *cosim_rtl_new(int preu, const char *fst, char *err, size_t errlen)
+{
+    cosim_rtl_t *r = nullptr;
+    switch (preu) {
+#ifdef COSIM_HAVE_P4
+    case 4: r = new Rtl<Vpree_top_p4, 4, COSIM_HPB_4>; break;
+#endif
+#ifdef COSIM_HAVE_P8
+    case 8: r = new Rtl<Vpree_top_p8, 8, COSIM_HPB_8>; break;
+#endif
+#ifdef COSIM_HAVE_P16
+    case 16: r = new Rtl<Vpree_top_p16, 16, COSIM_HPB_16>; break;
+#endif
+    default:
+        std::snprintf(err, errlen, "no pree_top model with %d PREUs in this build", preu);
+        return nullptr;
+    }
+    if (fst && r->open_trace(fst)) {
+        std::snprintf(err, errlen, "%s: cannot open the FST trace", fst);
+        delete r;
+        return nullptr;
+    }
+    return r;
+}
+
+void cosim_rtl_free(cosim_rtl_t *r) { delete r; }
+cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
+void cosim_rtl_eval(cosim_rtl_t *r) { r->eval(); }
+void cosim_rtl_tick(cosim_rtl_t *r) { r->tick(); }
+int cosim_rtl_ph_ready(cosim_rtl_t *r) { return r->ph_ready(); }
+int cosim_rtl_idle(cosim_rtl_t *r) { return r->idle(); }
+uint32_t cosim_rtl_photons_done(cosim_rtl_t *r) { return r->photons_done(); }
+void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hp_t *hp, uint32_t *pixel) { r->hp_rdata(hp, pixel); }
+void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
+void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
+uint64_t cosim_rtl_cycles(cosim_rtl_t *r) { return r->cycles; }
+int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
+
+}  // extern "C"

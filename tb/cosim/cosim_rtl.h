@@ -1,0 +1,73 @@
+/* cosim_rtl.h: a C interface to the Verilated pree_top (rtl/pree_top.v), one model per PREU
+ * count (4, 8, 16), built by mk/cosim.mk with the parameters below.
+ *
+ * API
+ *   cosim_rtl_new(preu, fst, err)  a model in reset state after two reset cycles; fst: FST trace
+ *                                  file or NULL (no tracing). NULL + err when preu is not built
+ *                                  or the trace cannot be opened.
+ *   cosim_rtl_free(r)              close the trace, release the model
+ *   cosim_rtl_in(r)                the input set applied at the next eval/tick (write it)
+ *   cosim_rtl_eval(r)              apply the inputs and settle the combinational logic
+ *   cosim_rtl_tick(r)              apply the inputs, one rising clock edge, settle (traced)
+ *   cosim_rtl_ph_ready/idle/photons_done, cosim_rtl_hp_rdata, cosim_rtl_px_rdata,
+ *   cosim_rtl_counters             read outputs (after eval or tick)
+ *   cosim_rtl_hp_bank_w            the model's HpBankW parameter
+ * Inputs hold their values until changed; none of these can fail after cosim_rtl_new. */
+#ifndef PREE_COSIM_RTL_H
+#define PREE_COSIM_RTL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "preu_fp32.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* pree_top parameters used by the co-simulation builds (mk/cosim.mk passes the same). */
+#define COSIM_HPAW  18   /* up to 262144 hit points */
+#define COSIM_IDXAW 12   /* 4096 index-table entries */
+#define COSIM_PXAW  17   /* up to 131072 pixels */
+#define COSIM_CNTW  16   /* candidates per photon below 65536 */
+#define COSIM_MAX_PREU 16
+#define COSIM_NCNT (7 + COSIM_MAX_PREU)
+
+/* Counter numbers in pree_top's cnt_o. */
+enum { CNT_CYC_UPD = 0, CNT_CYC_RAD, CNT_HAZ, CNT_DUP, CNT_BANK, CNT_ABANK, CNT_STARVE, CNT_OPS0 };
+
+typedef struct {
+    int mode, cnt_en, rad_start;
+    uint32_t ne, n_hit;
+    int ph_valid;
+    uint32_t ph_pos[3], ph_phi[3];
+    uint32_t ph_paddr, ph_n;
+    int idx_we[COSIM_MAX_PREU];
+    uint32_t idx_addr[COSIM_MAX_PREU], idx_data[COSIM_MAX_PREU];
+    int hp_we, hp_re;
+    uint32_t hp_addr, hp_pixel;
+    preu_hp_t hp_wdata;
+    int px_we, px_re;
+    uint32_t px_addr, px_wdata[3];
+} cosim_in_t;
+
+typedef struct cosim_rtl cosim_rtl_t;
+
+cosim_rtl_t *cosim_rtl_new(int preu, const char *fst, char *err, size_t errlen);
+void cosim_rtl_free(cosim_rtl_t *r);
+cosim_in_t *cosim_rtl_in(cosim_rtl_t *r);
+void cosim_rtl_eval(cosim_rtl_t *r);
+void cosim_rtl_tick(cosim_rtl_t *r);
+int cosim_rtl_ph_ready(cosim_rtl_t *r);
+int cosim_rtl_idle(cosim_rtl_t *r);
+uint32_t cosim_rtl_photons_done(cosim_rtl_t *r);
+void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hp_t *hp, uint32_t *pixel);
+void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
+void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
+uint64_t cosim_rtl_cycles(cosim_rtl_t *r);
+int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# level: quick
+# pree_top against the C model (build/cosim/top_bench): random traces, all photons on one hit
+# point, pixels with 40 hit points, idle gaps on the input, unordered candidates (bank
+# conflicts), a small hit-point set (radiance hazards); 4 PREUs here, 8 and 16 in `make sim`.
+set -u
+cd "$(dirname "$0")/../.."
+bench=build/cosim/top_bench
+fail=0
+run() {
+  out=$("$bench" "$@" 2>&1); rc=$?
+  echo "$out" | tail -1
+  if [ $rc -ne 0 ] || ! echo "$out" | tail -1 | grep -q ': PASS$'; then
+    echo "FAIL (rc $rc); reproduce: $bench $*"; echo "$out" | head -20; fail=1
+  fi
+}
+run --preu 4 --scenario random --photons 400
+run --preu 4 --scenario one --photons 200
+run --preu 4 --scenario dense --photons 300
+run --preu 4 --scenario dense --hp 100 --photons 60
+run --preu 4 --scenario mixed --photons 300 --gap 0.3
+run --preu 4 --scenario mixed --photons 300 --no-reorder
+exit $fail

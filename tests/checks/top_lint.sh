@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# level: quick
+# verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16.
+set -u
+cd "$(dirname "$0")/../.."
+srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
+fail=0
+for p in 4 8 16; do
+  cmd="verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$p $srcs"
+  if ! $cmd; then echo "FAIL: $cmd"; fail=1; fi
+done
+exit $fail
