@@ -136,6 +136,11 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         return -1;
     }
     st->threads = T;
+    st->scene_spheres = (unsigned long long)scene->num_spheres;
+    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
+    st->scene_lights = (unsigned long long)scene->num_lights;
+    st->scene_mirror = scene->has_mirror;
+    st->scene_glass = scene->has_glass;
     const int skip = !opt->no_skip && opt->grid == GRID_CELLS;
     const size_t npix = (size_t)opt->width * (size_t)opt->height;
     int rc = -1;

@@ -31,6 +31,9 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
             opt->precision == PRECISION_FP32 ? "fp32" : "double", grid_name(opt->grid),
             (!opt->no_skip && opt->grid == GRID_CELLS) ? "true" : "false", st->threads);
     fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
+    fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
+               "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,
+            st->scene_mirror ? "true" : "false", st->scene_glass ? "true" : "false");
     fprintf(f, "  \"hit_points\": %llu,\n  \"hit_points_zero_weight\": %llu,\n", st->hit_points, st->hit_points_zero_weight);
     fprintf(f, "  \"eye_rays\": %llu,\n  \"glass_splits\": %llu,\n", st->eye_rays, st->glass_splits);
     fprintf(f, "  \"initial_radius\": %.17g,\n  \"safe_radius\": %.17g,\n  \"grid_entries\": %zu,\n",
