@@ -30,7 +30,7 @@ CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS
 LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 
-.PHONY: all deps build run test check bench clean help lint synth sim
+.PHONY: all deps build run test test-prereqs check bench clean help lint synth sim
 all: build
 
 help:
@@ -58,13 +58,22 @@ $(BUILD)/pree: $(BUILD)/model/main.o $(LIBPREE) $(PREE_EXTRA_OBJS)
 
 build: $(DEPS_STAMP) $(BUILD)/pree
 
-run: build
+# Builds run JOBS-parallel (default: all cores); the Verilated models dominate.
+JOBS ?= $(shell nproc)
+PARALLEL := -j$(JOBS)
+
+run: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree
 	@scripts/make-run.sh $(BUILD)/pree $(OUT)
 
-test: $(DEPS_STAMP) $(TEST_PREREQS)
+test-prereqs: $(DEPS_STAMP) $(TEST_PREREQS)
+
+test: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory $(PARALLEL) test-prereqs
 	@scripts/run-tests.sh full
 
-check: $(DEPS_STAMP) $(TEST_PREREQS)
+check: $(DEPS_STAMP)
+	@$(MAKE) --no-print-directory $(PARALLEL) test-prereqs
 	@scripts/run-tests.sh quick
 
 lint: $(DEPS_STAMP) $(LINT_TARGETS)
