@@ -37,6 +37,7 @@
 //   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular
 //   hit points    2^HpBankW banks, each a constant part {pixel, f, pos} (written by the host)
 //                 and a state part {n, r2, tau} (host or update write-back); bank = low bits
+//                 XOR the next HpBankW bits (hp_bank), row = the bits above the low HpBankW
 //   pixels        2^PxBankW banks of 96-bit {b, g, r} sums; bank = low bits of the pixel
 // Host ports (hp_*, px_*): use them only while idle_o is high; read data comes one cycle after
 // the read enable. The index load port writes up to NumPreu entries per cycle, which must lie
@@ -53,7 +54,7 @@
 module pree_top #(
   parameter NumPreu = 4,    // PREUs (a power of two, >= 2)
   parameter HpAW    = 18,   // hit-point address bits
-  parameter HpBankW = 4,    // log2 of the hit-point banks (1 .. HpAW-1)
+  parameter HpBankW = 4,    // log2 of the hit-point banks (1 .. HpAW/2)
   parameter IdxAW   = 12,   // index-table address bits (> log2 NumPreu)
   parameter PxAW    = 17,   // pixel address bits
   parameter PxBankW = 4,    // log2 of the pixel banks (1 .. PxAW-1)
@@ -121,6 +122,22 @@ module pree_top #(
     end
   endgenerate
 
+  // Hit-point bank of an address: the low HpBankW bits XOR the next HpBankW bits, so that hit
+  // points a multiple of 2^HpBankW apart (neighbours one image row apart) still spread over the
+  // banks. The row inside the bank is the address without its low HpBankW bits.
+  function [HpBankW-1:0] hp_bank;
+    input [2*HpBankW-1:0] a;      // the low 2*HpBankW address bits
+    begin
+      hp_bank = a[HpBankW-1:0] ^ a[HpBankW +: HpBankW];
+    end
+  endfunction
+
+  generate
+    if (HpAW < 2 * HpBankW) begin : g_bad_hpbankw
+      pree_top_hpaw_must_be_at_least_twice_hpbankw u_fail ();
+    end
+  endgenerate
+
   genvar gl, gb;
 
   // ===============================================================================================
@@ -171,7 +188,7 @@ module pree_top #(
       a_bank[l*ABANK_W +: ABANK_W] = {ABANK_W{1'b0}};
       if (mode_i) begin
         a_addr[l*AADDR_W +: HpAW]    = ad_addr[l*HpAW +: HpAW];
-        a_bank[l*ABANK_W +: HpBankW] = ad_addr[l*HpAW +: HpBankW];
+        a_bank[l*ABANK_W +: HpBankW] = hp_bank(ad_addr[l*HpAW +: 2*HpBankW]);
       end else begin
         a_addr[l*AADDR_W +: IdxAW]   = af_ref[l*IdxAW +: IdxAW];
         a_bank[l*ABANK_W +: LANE_W]  = af_ref[l*IdxAW +: LANE_W];
@@ -281,7 +298,7 @@ module pree_top #(
       // Bank outputs selected by the bank number (indexed part-selects: one mux each).
       m = {{(32-LANE_W){1'b0}}, b_addr_q[l*AADDR_W +: LANE_W]};
       b_hp[l*HpAW +: HpAW] = idx_rdata[m*HpAW +: HpAW];
-      m = {{(32-HpBankW){1'b0}}, b_addr_q[l*AADDR_W +: HpBankW]};
+      m = {{(32-HpBankW){1'b0}}, hp_bank(b_addr_q[l*AADDR_W +: 2*HpBankW])};
       b_const[l*CONST_W +: CONST_W] = hpc_rdata[m*CONST_W +: CONST_W];
       b_state[l*STATE_W +: STATE_W] = hps_rdata[m*STATE_W +: STATE_W];
       b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
@@ -291,7 +308,7 @@ module pree_top #(
         b_bank[l*BBANK_W +: PxBankW] = b_const[l*CONST_W + 192 +: PxBankW];
       end else begin
         b_key[l*KEY_W +: HpAW]       = b_hp[l*HpAW +: HpAW];
-        b_bank[l*BBANK_W +: HpBankW] = b_hp[l*HpAW +: HpBankW];
+        b_bank[l*BBANK_W +: HpBankW] = hp_bank(b_hp[l*HpAW +: 2*HpBankW]);
       end
     end
   end
@@ -356,7 +373,7 @@ module pree_top #(
   wire [NumPreu*KEY_W-1:0] p_tag, p_ltag;
   wire [NumPreu*96-1:0]    p_tau, p_l;
   wire [NumPreu*32-1:0]    p_r2, p_n;
-  reg  [NumPreu*BBANK_W-1:0] px_rbank_q;
+  reg  [NumPreu*PxBankW-1:0] px_rbank_q;
   wire [PX_BANKS*96-1:0]   px_rdata;
 
   generate
@@ -374,11 +391,11 @@ module pree_top #(
         if (!mode_i) begin
           tag = {KEY_W{1'b0}};
           tag[HpAW-1:0] = c_hp_q[gl*HpAW +: HpAW];
-          bk = {{(32-HpBankW){1'b0}}, c_hp_q[gl*HpAW +: HpBankW]};
+          bk = {{(32-HpBankW){1'b0}}, hp_bank(c_hp_q[gl*HpAW +: 2*HpBankW])};
           hc = hpc_rdata[bk*CONST_W +: 192];
           hs = hps_rdata[bk*STATE_W +: STATE_W];
         end
-        bk = {{(32-PxBankW){1'b0}}, px_rbank_q[gl*BBANK_W +: PxBankW]};
+        bk = {{(32-PxBankW){1'b0}}, px_rbank_q[gl*PxBankW +: PxBankW]};
         li = px_rdata[bk*96 +: 96];
       end
       assign p_valid[gl] = mode_i ? b_iss[gl] : c_v_q[gl];
@@ -398,8 +415,7 @@ module pree_top #(
   always @(posedge clk_i) begin : px_rbank
     integer l;
     for (l = 0; l < NumPreu; l = l + 1)
-      if (p_lreq[l]) px_rbank_q[l*BBANK_W +: BBANK_W] <= {{(BBANK_W-PxBankW){1'b0}},
-                                                          p_ltag[l*KEY_W +: PxBankW]};
+      if (p_lreq[l]) px_rbank_q[l*PxBankW +: PxBankW] <= p_ltag[l*KEY_W +: PxBankW];
   end
 
   // ===============================================================================================
@@ -417,26 +433,26 @@ module pree_top #(
         re = 1'b0; raddr = {HP_ROW_W{1'b0}};
         wec = 1'b0; wes = 1'b0; waddr = {HP_ROW_W{1'b0}}; wstate = {STATE_W{1'b0}};
         // Reads: host, update issue (B), radiance read (A).
-        if (hp_re_i && hp_addr_i[HpBankW-1:0] == BANK) begin
+        if (hp_re_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK) begin
           re = 1'b1; raddr = hp_addr_i[HpAW-1:HpBankW];
         end
         for (j = 0; j < NumPreu; j = j + 1) begin
-          if (!mode_i && b_iss[j] && b_hp[j*HpAW +: HpBankW] == BANK) begin
+          if (!mode_i && b_iss[j] && hp_bank(b_hp[j*HpAW +: 2*HpBankW]) == BANK) begin
             re = 1'b1; raddr = raddr | b_hp[j*HpAW + HpBankW +: HP_ROW_W];
           end
-          if (mode_i && a_rd[j] && ad_addr[j*HpAW +: HpBankW] == BANK) begin
+          if (mode_i && a_rd[j] && hp_bank(ad_addr[j*HpAW +: 2*HpBankW]) == BANK) begin
             re = 1'b1; raddr = raddr | ad_addr[j*HpAW + HpBankW +: HP_ROW_W];
           end
         end
         // Writes: host (both parts), update write-back of accepted photons (state).
-        if (hp_we_i && hp_addr_i[HpBankW-1:0] == BANK) begin
+        if (hp_we_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK) begin
           wec = 1'b1; wes = 1'b1; waddr = hp_addr_i[HpAW-1:HpBankW];
           wstate = hp_wdata_i[0 +: STATE_W];
         end
         // Write-back: the (one) lane whose accepted result belongs to this bank.
         wl = -1;
         for (j = 0; j < NumPreu; j = j + 1)
-          if (!mode_i && p_vout[j] && p_acc[j] && p_tag[j*KEY_W +: HpBankW] == BANK) wl = j;
+          if (!mode_i && p_vout[j] && p_acc[j] && hp_bank(p_tag[j*KEY_W +: 2*HpBankW]) == BANK) wl = j;
         if (wl >= 0) begin
           wes    = 1'b1;
           waddr  = p_tag[wl*KEY_W + HpBankW +: HP_ROW_W];
@@ -453,7 +469,7 @@ module pree_top #(
   endgenerate
 
   always @(posedge clk_i) begin
-    if (hp_re_i) hp_hbank_q <= hp_addr_i[HpBankW-1:0];
+    if (hp_re_i) hp_hbank_q <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
   end
 
   reg [CONST_W+STATE_W-1:0] hp_rdata;

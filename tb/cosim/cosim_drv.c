@@ -114,16 +114,21 @@ static void pump(cosim_drv_t *d)
 
 /* Order a photon's candidates: each next one, where possible, in a bank none of the last
  * NumPreu-1 operations used. */
+static int hp_bank(const cosim_drv_t *d, uint32_t a)
+{
+    /* rtl/pree_top.v hp_bank(): the low HpBankW bits XOR the next HpBankW bits. */
+    return (int)((a ^ (a >> d->opt.hp_bank_w)) & ((1u << d->opt.hp_bank_w) - 1));
+}
+
 static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
 {
     const int np = d->opt.preu;
-    const uint32_t mask = (1u << d->opt.hp_bank_w) - 1;
     memcpy(d->cand, hps, n * sizeof *hps);
     for (size_t k = 0; k < n; k++) {
         size_t pick = k;
         if (d->opt.reorder) {
             for (size_t c = k; c < n; c++) {
-                int bank = (int)(d->cand[c] & mask), clash = 0;
+                int bank = hp_bank(d, d->cand[c]), clash = 0;
                 for (int r = 0; r < d->nrecent; r++) clash |= d->recent[r] == bank;
                 if (!clash) { pick = c; break; }
             }
@@ -135,7 +140,7 @@ static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
                 memmove(d->recent, d->recent + 1, (size_t)(np - 2) * sizeof *d->recent);
                 d->nrecent--;
             }
-            d->recent[d->nrecent++] = (int)(d->cand[k] & mask);
+            d->recent[d->nrecent++] = hp_bank(d, d->cand[k]);
         }
     }
 }

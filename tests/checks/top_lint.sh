@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# level: quick
 # verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16.
+# (Full level: it also lints the PREU and fp32 units as instantiated under the top.)
 set -u
 cd "$(dirname "$0")/../.."
 srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
