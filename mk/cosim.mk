@@ -19,15 +19,16 @@ COSIM_PREUS  := 4 8 16
 COSIM_RTL    := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
                 rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v)
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
-# Banks: hit points 2^(log2 NumPreu + 4) (few conflicts once the host orders candidates), pixels
-# 2^(log2 NumPreu + 2). The model directory names carry them, so a change never reuses a model.
+# Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels
+# 2^(log2 NumPreu + 2). The model directory names carry them (and a version of the bank hash),
+# so a change never reuses a stale model.
 COSIM_HPB_4 := 6
 COSIM_HPB_8 := 7
 COSIM_HPB_16 := 8
 COSIM_PXB_4 := 4
 COSIM_PXB_8 := 5
 COSIM_PXB_16 := 6
-COSIM_MDIR    = $(COSIM_DIR)/vl_p$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+COSIM_MDIR    = $(COSIM_DIR)/vl2_p$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
 COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
                 -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1))
 COSIM_LIBS   := $(foreach p,$(COSIM_PREUS),$(call COSIM_MDIR,$(p))/Vpree_top_p$(p)__ALL.a)
