@@ -543,14 +543,12 @@ module pree_top #(
     integer l;
     cause = 3'd0;
     found = 1'b0;
-    if (b_iss != {NumPreu{1'b1}}) begin
-      cause = b_short_q ? 3'd5 : 3'd6;
-      for (l = 0; l < NumPreu; l = l + 1)
-        if (!found && b_pend_q[l] && !b_iss[l]) begin
-          found = 1'b1;
-          cause = b_haz[l] ? 3'd2 : b_dup[l] ? 3'd3 : 3'd4;
-        end
-    end
+    for (l = 0; l < NumPreu; l = l + 1)
+      if (!found && b_pend_q[l] && !b_iss[l]) begin
+        found = 1'b1;
+        cause = b_haz[l] ? 3'd2 : b_dup[l] ? 3'd3 : 3'd4;
+      end
+    if (b_iss != {NumPreu{1'b1}} && !found) cause = b_short_q ? 3'd5 : 3'd6;
   end
 
   always @(posedge clk_i or negedge rst_ni) begin : counters

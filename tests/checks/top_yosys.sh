@@ -5,7 +5,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
-cmd="read_verilog -Irtl $srcs; chparam -set NumPreu 4 -set HpAW 10 -set HpBankW 4 -set IdxAW 8 -set PxAW 8 -set PxBankW 2 pree_top; hierarchy -check -top pree_top; proc; flatten; opt_clean; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$sr; check -assert"
+cmd="read_verilog -Irtl $srcs; chparam -set NumPreu 4 -set HpAW 10 -set HpBankW 4 -set IdxAW 8 -set PxAW 8 -set PxBankW 2 pree_top; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$sr; check -assert"
 mkdir -p build/cosim
 if ! yosys -q -l build/cosim/top_yosys.log -p "$cmd" >/dev/null; then
   echo "FAIL (log build/cosim/top_yosys.log); reproduce: yosys -p '$cmd'"; tail -15 build/cosim/top_yosys.log; exit 1
