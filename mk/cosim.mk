@@ -3,8 +3,9 @@
 #
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
-#   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation, 4 PREUs, then
-#                      8 and 16 (figures in $(COSIM_DIR)/full_p*.json)
+#   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation for the PREU
+#                      counts in SIM_FULL_PREUS (default 4 8; about 3 and 9 CPU minutes; 16 takes
+#                      about 40), figures in $(COSIM_DIR)/full_p*.json
 #   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
@@ -89,8 +90,9 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree
 	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_p$$p.json; done
 
 # Whole frame: cornell3 320x240, 768k photons.
+SIM_FULL_PREUS ?= 4 8
 sim-full: $(BUILD)/pree
-	@set -e; for p in $(COSIM_PREUS); do \
+	@set -e; for p in $(SIM_FULL_PREUS); do \
 	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json"; \
 	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --quiet \
 	    --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json; cat $(COSIM_DIR)/full_p$$p.json; done
