@@ -240,7 +240,8 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
 
     /* Radiance evaluation. */
     t = omp_get_wtime();
-    if (radiance_evaluate(&res->hp, opt->precision, st->photons_emitted, skip, res->rgb, npix, &st->radiance_skipped)) {
+    if (radiance_evaluate_preu(&res->hp, opt->precision, st->photons_emitted, skip, opt->preu ? opt->preu : 4,
+                               res->rgb, npix, &st->radiance_skipped)) {
         snprintf(err, errlen, "out of memory in radiance evaluation");
         goto done;
     }

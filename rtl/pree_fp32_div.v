@@ -40,13 +40,13 @@ module pree_fp32_div #(
   // Per-stage pipeline word: remainder, quotient, divisor, exponent, sign, special flag and value.
   localparam W       = 25 + QW + 24 + 10 + 1 + 1 + 32;
 
-  // Quotient bits completed at the end of stage k (k = 0 .. Stages).
+  // Quotient bits completed at the end of stage s (s = 0 .. Stages).
   function integer bits_done;
-    input integer k;
+    input integer s;
     begin
-      bits_done = (k * 32 + Stages / 2) / Stages - 3;
-      if (k == 0 || bits_done < 0) bits_done = 0;
-      if (k == Stages || bits_done > QW) bits_done = QW;
+      bits_done = (s * 32 + Stages / 2) / Stages - 3;
+      if (s == 0 || bits_done < 0) bits_done = 0;
+      if (s == Stages || bits_done > QW) bits_done = QW;
     end
   endfunction
 
