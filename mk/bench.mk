@@ -1,8 +1,12 @@
 # make bench: speed, memory, and run time against error. Figures go to out/bench/.
-# Fragments of other areas add their own benchmark targets to BENCH_TARGETS.
+# Engine speed per grid and thread count, every scene, and run time against error (a plot).
 BENCH_DIR := $(OUT)/bench
-.PHONY: bench bench-engine bench-convergence
-bench: bench-engine bench-convergence $(BENCH_TARGETS)
+.PHONY: bench bench-engine bench-convergence bench-scenes
+# The RTL's own figures come from `make ctrl-util` (dispatcher utilization) and
+# `make sim-full` (whole-frame co-simulation), which take longer.
+bench: bench-engine bench-scenes bench-convergence
+bench-scenes: build
+	@scripts/bench-scenes.sh
 bench-engine: build
 	@scripts/bench-engine.sh $(BUILD)/pree $(BENCH_DIR)
 bench-convergence: build
