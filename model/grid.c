@@ -163,6 +163,20 @@ static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
     return 1;
 }
 
+/* The range of cells that hit point p's safe-radius box touches. */
+static void cell_box(const grid_t *g, const hp_hot_t *p, double rs, int64_t a[3], int64_t b[3])
+{
+    cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+    cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+}
+
+/* Whether GRID_CELLS lists hit point i: all of them, or those of non-zero weight. */
+static int listed(const hitpoints_t *h, size_t i, int include_zero)
+{
+    const vec3 w = h->weight[i];
+    return include_zero || w.x != 0 || w.y != 0 || w.z != 0;
+}
+
 static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
 {
     vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
@@ -189,12 +203,10 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     /* Table of distinct cells: size a power of two at least twice an upper bound. */
     size_t bound = 0;
     for (size_t i = 0; i < h->n; i++) {
-        const vec3 w = h->weight[i];
-        if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) continue;
+        if (!listed(h, i, include_zero)) continue;
         int64_t a[3], b[3];
         const hp_hot_t *p = &h->hot[i];
-        cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
-        cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+        cell_box(g, p, rs, a, b);
         bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
     }
     /* Count the distinct cells in a scratch table, then size the real one to twice that,
@@ -206,12 +218,10 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     memset(keys, 0xFF, scratch_size * sizeof *keys);
     size_t distinct = 0;
     for (size_t i = 0; i < h->n; i++) {
-        const vec3 w = h->weight[i];
-        if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) continue;
+        if (!listed(h, i, include_zero)) continue;
         const hp_hot_t *p = &h->hot[i];
         int64_t a[3], b[3];
-        cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
-        cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+        cell_box(g, p, rs, a, b);
         for (int64_t iz = a[2]; iz <= b[2]; iz++)
             for (int64_t iy = a[1]; iy <= b[1]; iy++)
                 for (int64_t ix = a[0]; ix <= b[0]; ix++) {
@@ -232,16 +242,14 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     g->zero_weight_skipped = 0;
     for (int pass = 0; pass < 2; pass++) {
         for (size_t i = 0; i < h->n; i++) {
-            const vec3 w = h->weight[i];
-            if (!include_zero && w.x == 0 && w.y == 0 && w.z == 0) {
+            if (!listed(h, i, include_zero)) {
                 if (pass == 0) g->zero_weight_skipped++;
                 continue;
             }
             grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
             const hp_hot_t *p = &h->hot[i];
             int64_t a[3], b[3];
-            cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
-            cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+            cell_box(g, p, rs, a, b);
             for (int64_t iz = a[2]; iz <= b[2]; iz++)
                 for (int64_t iy = a[1]; iy <= b[1]; iy++)
                     for (int64_t ix = a[0]; ix <= b[0]; ix++) {
