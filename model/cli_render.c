@@ -28,6 +28,8 @@ static void render_usage(FILE *f)
         "  --precision P          double (the reference) or fp32 (the PREE datapath's arithmetic)\n"
         "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
         "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
+        "  --scan S               bucket (default: a block's candidates bucket by bucket, then applied in\n"
+        "                         photon order) or photon (photon by photon; the oracle); same bits\n"
         "  --no-skip              disable the skips (zero-weight hit points, empty cells, far candidates)\n"
         "  --preu P               fp32: the PREE's PREU count (4, 8 or 16, default 4), which sets the\n"
         "                         radiance pass's per-pixel order (docs/pree_top.md)\n"
@@ -71,6 +73,12 @@ int pree_cmd_render(int argc, char **argv)
             else if (!strcmp(s, "smallppm")) opt.grid = GRID_SMALLPPM;
             else if (!strcmp(s, "brute")) opt.grid = GRID_BRUTE;
             else return cli_error(&a, "--grid: '%s' is not cells, smallppm or brute", s);
+        } else if (!strcmp(arg, "--scan")) {
+            const char *s = cli_value(&a, arg);
+            if (!s) return 2;
+            if (!strcmp(s, "bucket")) opt.scan = SCAN_BUCKET;
+            else if (!strcmp(s, "photon")) opt.scan = SCAN_PHOTON;
+            else return cli_error(&a, "--scan: '%s' is not bucket or photon", s);
         } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
         else if (!strcmp(arg, "--quiet")) opt.progress = 0;
         else if (!strcmp(arg, "--out")) {

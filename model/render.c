@@ -10,11 +10,13 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <unistd.h>
+#include "hp_order.h"
 #include "photon_pass.h"
 #include "radiance.h"
 #include "render.h"
+#include "update_batch.h"
 
-#define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
+#define PHOTON_BLOCK 128000u  /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
 
 static long peak_rss_kb(void)
@@ -149,6 +151,10 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     block_buffers_t *bb = calloc(1, sizeof *bb);
     res->rgb = calloc(npix * 3, sizeof *res->rgb);
     tracer_t *tr = NULL;
+    uint32_t *perm = NULL;
+    update_batch_t batch;
+    memset(&batch, 0, sizeof batch);
+    update_scratch_t *scratch = NULL;
     if (!bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto done; }
     res->width = opt->width;
     res->height = opt->height;
@@ -174,12 +180,16 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
     if (init_state(&res->hp, opt->precision, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, T, !skip, err, errlen)) goto done;
-    st->r_safe = grid.r_safe;
     if (opt->begin && opt->begin(opt->sink->user, &res->hp, render_emitted(opt->photons))) {
         snprintf(err, errlen, "the co-simulation could not start");
         goto done;
     }
+    /* The photon pass holds the hit points in spatial order (model/hp_order.c). */
+    perm = hp_order_spatial(&res->hp, opt->width, T, st->r0);
+    if (!perm || hp_order_apply(&res->hp, perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+    if (opt->sink) opt->sink->addr = perm;
+    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, T, !skip, err, errlen)) goto done;
+    st->r_safe = grid.r_safe;
     for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
     st->sec_grid = omp_get_wtime() - t;
 
@@ -187,7 +197,8 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     const uint64_t emitted_target = render_emitted(opt->photons);
     uint64_t done_photons = 0;
     update_stats_t *ust = calloc((size_t)T, sizeof *ust);
-    if (!ust) { snprintf(err, errlen, "out of memory"); goto done; }
+    scratch = calloc((size_t)T, sizeof *scratch);
+    if (!ust || !scratch) { snprintf(err, errlen, "out of memory"); goto done; }
     const double t_photons = omp_get_wtime();
     int interrupted = 0, last_decile = 0;
     while (done_photons < emitted_target && res->hp.n) {
@@ -201,11 +212,25 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         }
         st->sec_trace += omp_get_wtime() - t;
         t = omp_get_wtime();
+        if (opt->sink || opt->scan == SCAN_PHOTON) {
 #pragma omp parallel num_threads(T)
-        {
-            const int p = omp_get_thread_num();
-            for (unsigned c = 0; c < TRACE_CHUNKS; c++)
-                update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p], opt->sink);
+            {
+                const int p = omp_get_thread_num();
+                for (unsigned c = 0; c < TRACE_CHUNKS; c++)
+                    update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p], opt->sink);
+            }
+        } else {
+            int failed = update_batch_prepare(&batch, bb->chunk, TRACE_CHUNKS, grid.num_buckets);
+#pragma omp parallel num_threads(T) reduction(| : failed)
+            if (!failed) {
+                const int p = omp_get_thread_num();
+                failed |= update_batch_part(&res->hp, &grid, p, opt->precision, skip, &batch, &ust[p], &scratch[p]);
+            }
+            if (failed) {
+                snprintf(err, errlen, "out of memory in the photon pass");
+                free(ust);
+                goto done;
+            }
         }
         if (opt->sink && opt->sink->failed) {
             snprintf(err, errlen, "the co-simulation stopped");
@@ -237,6 +262,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     st->photon_hits_no_cell = bb->no_cell;
     st->photon_hits += bb->no_cell;
     st->photons_emitted = res->hp.n ? done_photons : emitted_target;
+    if (hp_order_restore(&res->hp, perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
 
     /* Radiance evaluation. */
     t = omp_get_wtime();
@@ -254,6 +280,12 @@ done:
         free(bb);
     }
     grid_free(&grid);
+    free(perm);
+    update_batch_free(&batch);
+    if (scratch)
+        for (int p = 0; p < T; p++) update_batch_scratch_free(&scratch[p]);
+    free(scratch);
+    if (opt->sink) opt->sink->addr = NULL;
     tracer_destroy(tr);
     st->sec_total = omp_get_wtime() - t_start;
     st->peak_rss_kb = peak_rss_kb();

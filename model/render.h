@@ -15,6 +15,8 @@
 #include "scene.h"
 #include "update.h"
 
+typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
+
 typedef struct {
     int width, height;
     uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
@@ -22,6 +24,7 @@ typedef struct {
     grid_kind_t grid;
     int threads;             /* 0: OpenMP's default */
     int no_skip;             /* 1: disable the skips (for proving them harmless) */
+    update_scan_t scan;      /* SCAN_BUCKET (default): update_batch.c; SCAN_PHOTON: update_part, the oracle */
     int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */

@@ -55,7 +55,7 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
         }
         if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
-        if (sink) sink->buf[streamed++] = e->hp;
+        if (sink) sink->buf[streamed++] = sink->addr ? sink->addr[e->hp] : e->hp;
         float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (!(d2 <= fp32_from_bits(h->r2_f32[e->hp]))) continue;

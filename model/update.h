@@ -30,6 +30,8 @@ typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
 typedef struct {
     int (*fn)(void *user, const photon_hit_t *hit, const preu_photon_t *ph32, const uint32_t *hps, size_t n);
     void *user;
+    const uint32_t *addr; /* set by the render: hit-point address (pixel-order index) of each
+                           * photon-pass index (model/hp_order.h) */
     uint32_t *buf;      /* scratch, grown as needed */
     size_t cap;
     int failed;

@@ -1,0 +1,105 @@
+/* hp_order.c: a spatial order of the hit points for the photon pass.
+ *
+ * The eye pass stores hit points in pixel order, so a photon's candidates (spatial neighbours)
+ * lie scattered over the state arrays and every radius read and accepted update is a cache
+ * miss. During the photon pass the hit points are held in the order of the owning part
+ * (grid_owner), then the Morton code of their position, then their index; afterwards they
+ * return to pixel order. Each hit point's own sequence of updates is the same in any order,
+ * so results are unchanged to the bit. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "grid.h"
+#include "hp_order.h"
+
+#define MORTON_BITS 21
+
+/* Spread the low 21 bits of v to every third bit. */
+static uint64_t spread3(uint64_t v)
+{
+    v &= 0x1FFFFFull;
+    v = (v | v << 32) & 0x001F00000000FFFFull;
+    v = (v | v << 16) & 0x001F0000FF0000FFull;
+    v = (v | v << 8) & 0x100F00F00F00F00Full;
+    v = (v | v << 4) & 0x10C30C30C30C30C3ull;
+    v = (v | v << 2) & 0x1249249249249249ull;
+    return v;
+}
+
+static uint32_t quantize(double x, double lo, double scale)
+{
+    double q = (x - lo) * scale;
+    if (!(q > 0)) return 0;
+    if (q >= (double)((1u << MORTON_BITS) - 1)) return (1u << MORTON_BITS) - 1;
+    return (uint32_t)q;
+}
+
+typedef struct { uint64_t key; uint32_t part, index; } sort_item_t;
+
+static int by_part_key_index(const void *a, const void *b)
+{
+    const sort_item_t *x = a, *y = b;
+    if (x->part != y->part) return x->part < y->part ? -1 : 1;
+    if (x->key != y->key) return x->key < y->key ? -1 : 1;
+    return x->index < y->index ? -1 : (x->index > y->index);
+}
+
+uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, double cell)
+{
+    const size_t n = h->n;
+    uint32_t *perm = malloc((n ? n : 1) * sizeof *perm);
+    sort_item_t *items = malloc((n ? n : 1) * sizeof *items);
+    if (!perm || !items) { free(perm); free(items); return NULL; }
+    double lo[3] = {INFINITY, INFINITY, INFINITY};
+    for (size_t i = 0; i < n; i++) {
+        lo[0] = fmin(lo[0], h->hot[i].px);
+        lo[1] = fmin(lo[1], h->hot[i].py);
+        lo[2] = fmin(lo[2], h->hot[i].pz);
+    }
+    const double scale = cell > 0 ? 1.0 / cell : 1.0;
+    for (size_t i = 0; i < n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        uint64_t key = spread3(quantize(p->px, lo[0], scale)) | spread3(quantize(p->py, lo[1], scale)) << 1 |
+                       spread3(quantize(p->pz, lo[2], scale)) << 2;
+        items[i] = (sort_item_t){key, (uint32_t)grid_owner(h, i, width, num_parts), (uint32_t)i};
+    }
+    qsort(items, n, sizeof *items, by_part_key_index);
+    for (size_t k = 0; k < n; k++) perm[k] = items[k].index;
+    free(items);
+    return perm;
+}
+
+/* Replace *arr (n elements of size sz) by its gathered (new[k] = old[perm[k]]) or scattered
+ * (new[perm[k]] = old[k]) copy. */
+static int permute(void **arr, size_t sz, size_t n, size_t cap, const uint32_t *perm, int scatter)
+{
+    if (!*arr) return 0;
+    unsigned char *dst = malloc((cap ? cap : 1) * sz);
+    if (!dst) return -1;
+    const unsigned char *src = *arr;
+    for (size_t k = 0; k < n; k++) {
+        if (scatter) memcpy(dst + (size_t)perm[k] * sz, src + k * sz, sz);
+        else memcpy(dst + k * sz, src + (size_t)perm[k] * sz, sz);
+    }
+    free(*arr);
+    *arr = dst;
+    return 0;
+}
+
+static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
+{
+    /* fp32 and r2_f32 are sized n (allocated by the render), the others cap. */
+    int rc = 0;
+    rc |= permute((void **)&h->hot, sizeof *h->hot, h->n, h->cap, perm, scatter);
+    rc |= permute((void **)&h->weight, sizeof *h->weight, h->n, h->cap, perm, scatter);
+    rc |= permute((void **)&h->flux, sizeof *h->flux, h->n, h->cap, perm, scatter);
+    rc |= permute((void **)&h->r2, sizeof *h->r2, h->n, h->cap, perm, scatter);
+    rc |= permute((void **)&h->pixel, sizeof *h->pixel, h->n, h->cap, perm, scatter);
+    rc |= permute((void **)&h->fp32, sizeof *h->fp32, h->n, h->n, perm, scatter);
+    rc |= permute((void **)&h->r2_f32, sizeof *h->r2_f32, h->n, h->n, perm, scatter);
+    return rc ? -1 : 0;
+}
+
+int hp_order_apply(hitpoints_t *h, const uint32_t *perm) { return permute_all(h, perm, 0); }
+
+int hp_order_restore(hitpoints_t *h, const uint32_t *perm) { return permute_all(h, perm, 1); }

@@ -1,0 +1,200 @@
+/* update_batch.c: the photon pass's update of a whole block of photon hits in two phases.
+ *
+ * Phase 1 (screen) groups the block's hits by grid bucket and tests every candidate of a
+ * bucket against all of its hits while the bucket's entries and radii sit in cache. It changes
+ * nothing: it counts the candidates and normal tests exactly as the photon-major scan does, and
+ * keeps the candidates whose distance passes against the radius at the start of the block. As
+ * radii only shrink (double: r2 * g with g < 1; binary32: the rounded product is <= r2), every
+ * candidate that the photon-major scan would accept is kept.
+ * Phase 2 (apply) replays the kept candidates in photon order against the current radius, with
+ * the same distance value the photon-major scan computes, so every hit point receives the same
+ * updates in the same order: the result is identical to the bit (tests/checks/engine_scan_order.sh). */
+#include <stdlib.h>
+#include <string.h>
+#include "update_batch.h"
+
+#define RADIX_BITS 11
+#define RADIX_SIZE (1u << RADIX_BITS)
+
+static int grow(void **p, size_t *cap, size_t need, size_t sz)
+{
+    if (need <= *cap) return 0;
+    size_t c = *cap ? *cap : 1024;
+    while (c < need) c *= 2;
+    void *q = realloc(*p, c * sz);
+    if (!q) return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+void update_batch_free(update_batch_t *b)
+{
+    free(b->hit);
+    free(b->key);
+    free(b->tmp);
+    free(b->sorted);
+    memset(b, 0, sizeof *b);
+}
+
+int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigned nchunks, size_t num_buckets)
+{
+    size_t n = 0;
+    for (unsigned c = 0; c < nchunks; c++) n += chunks[c].n;
+    if (grow((void **)&b->hit, &b->hit_cap, n, sizeof *b->hit) ||
+        grow((void **)&b->key, &b->key_cap, n, sizeof *b->key) ||
+        grow((void **)&b->tmp, &b->tmp_cap, n, sizeof *b->tmp))
+        return -1;
+    /* Keys: bucket in the high half, hit index (photon order) in the low half. */
+    size_t m = 0, k = 0;
+    for (unsigned c = 0; c < nchunks; c++)
+        for (size_t i = 0; i < chunks[c].n; i++, k++) {
+            const photon_hit_t *ph = &chunks[c].hits[i];
+            b->hit[k] = ph;
+            if (ph->bucket != GRID_NO_BUCKET) b->key[m++] = (uint64_t)ph->bucket << 32 | k;
+        }
+    b->n = n;
+    b->n_keyed = m;
+    /* Stable LSD radix sort on the bucket bits only. */
+    unsigned bits = 0;
+    while (bits < 32 && ((size_t)1 << bits) < num_buckets) bits++;
+    uint32_t hist[RADIX_SIZE];
+    for (unsigned shift = 32; shift < 32 + bits; shift += RADIX_BITS) {
+        memset(hist, 0, sizeof hist);
+        for (size_t i = 0; i < m; i++) hist[(b->key[i] >> shift) & (RADIX_SIZE - 1)]++;
+        uint32_t sum = 0;
+        for (unsigned d = 0; d < RADIX_SIZE; d++) { uint32_t c = hist[d]; hist[d] = sum; sum += c; }
+        for (size_t i = 0; i < m; i++) b->tmp[hist[(b->key[i] >> shift) & (RADIX_SIZE - 1)]++] = b->key[i];
+        uint64_t *t = b->key; b->key = b->tmp; b->tmp = t;
+        size_t tc = b->key_cap; b->key_cap = b->tmp_cap; b->tmp_cap = tc;
+    }
+    /* Gather the hits in key order: independent loads, which the processor overlaps. */
+    if (grow((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;
+    for (size_t i = 0; i < m; i++) {
+        const uint32_t hit = (uint32_t)b->key[i];
+        const photon_hit_t *ph = b->hit[hit];
+        b->sorted[i] = (batch_hit_t){ph->x.x, ph->x.y, ph->x.z, ph->n.x, ph->n.y, ph->n.z, hit, (uint32_t)(b->key[i] >> 32)};
+    }
+    return 0;
+}
+
+/* A kept candidate: hit index in the block, hit-point index, and its distance squared
+ * (double mode) or binary32 distance squared (fp32 mode). */
+typedef struct { uint32_t hit, hp; double v2; } kept_t;
+
+void update_batch_scratch_free(update_scratch_t *s)
+{
+    free(s->kept);
+    free(s->sorted);
+    free(s->start);
+    memset(s, 0, sizeof *s);
+}
+
+static int keep(update_scratch_t *s, uint32_t hit, uint32_t hp, double v2)
+{
+    if (s->n_kept == s->kept_cap && grow(&s->kept, &s->kept_cap, s->n_kept + 1, sizeof(kept_t))) return -1;
+    ((kept_t *)s->kept)[s->n_kept++] = (kept_t){hit, hp, v2};
+    return 0;
+}
+
+/* Phase 1 for one hit against its bucket's entries (double mode). */
+static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
+                         const grid_entry_t *cand, size_t count, update_stats_t *st, update_scratch_t *s)
+{
+    const double x = ph->x, y = ph->y, z = ph->z;
+    const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
+    const uint32_t hit = ph->hit;
+    for (size_t c = 0; c < count; c++) {
+        const grid_entry_t *e = &cand[c];
+        double vx = e->px - x, vy = e->py - y, vz = e->pz - z;
+        double v2 = vx * vx + vy * vy + vz * vz;
+        if (skip_radius && v2 > rs2) { st->skipped_radius++; continue; }
+        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        st->normal_passed++;
+        if (v2 <= h->r2[e->hp] && keep(s, hit, e->hp, v2)) return -1;
+    }
+    return 0;
+}
+
+/* Phase 1 for one hit (fp32 mode): the host's tests in double, the PREU's distance in binary32
+ * (the same expressions as update.c's photon-major scan). */
+static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
+                       const grid_entry_t *cand, size_t count, update_stats_t *st, update_scratch_t *s)
+{
+    const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
+    const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
+    const uint32_t hit = ph->hit;
+    for (size_t c = 0; c < count; c++) {
+        const grid_entry_t *e = &cand[c];
+        if (skip_radius) {
+            double vx = e->px - ph->x, vy = e->py - ph->y, vz = e->pz - ph->z;
+            if (vx * vx + vy * vy + vz * vz > rs2) { st->skipped_radius++; continue; }
+        }
+        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        st->normal_passed++;
+        float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
+        float d2 = (dx * dx + dy * dy) + dz * dz;
+        if (d2 <= fp32_from_bits(h->r2_f32[e->hp]) && keep(s, hit, e->hp, d2)) return -1;
+    }
+    return 0;
+}
+
+/* Group the kept candidates by hit (counting sort; photon order, stable within a hit). */
+static int group_by_hit(update_scratch_t *s, size_t n_hits)
+{
+    if (grow(&s->sorted, &s->sorted_cap, s->n_kept, sizeof(kept_t)) ||
+        grow((void **)&s->start, &s->start_cap, n_hits + 1, sizeof *s->start))
+        return -1;
+    const kept_t *k = s->kept;
+    kept_t *out = s->sorted;
+    memset(s->start, 0, (n_hits + 1) * sizeof *s->start);
+    for (size_t i = 0; i < s->n_kept; i++) s->start[k[i].hit + 1]++;
+    for (size_t i = 0; i < n_hits; i++) s->start[i + 1] += s->start[i];
+    for (size_t i = 0; i < s->n_kept; i++) out[s->start[k[i].hit]++] = k[i];
+    return 0;
+}
+
+int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
+                      const update_batch_t *b, update_stats_t *st, update_scratch_t *s)
+{
+    update_stats_t t = *st;
+    const double rs2 = g->r_safe * g->r_safe;
+    s->n_kept = 0;
+    /* Phase 1: bucket by bucket. */
+    const batch_hit_t *sh = b->sorted;
+    for (size_t i = 0; i < b->n_keyed;) {
+        const uint32_t bucket = sh[i].bucket;
+        size_t end = i + 1;
+        while (end < b->n_keyed && sh[end].bucket == bucket) end++;
+        size_t count;
+        const grid_entry_t *cand = grid_bucket_entries(g, p, bucket, &count);
+        t.candidates += count * (end - i);
+        if (count) {
+            for (size_t j = i; j < end; j++) {
+                int rc = prec == PRECISION_DOUBLE ? screen_double(h, rs2, skip_radius, &sh[j], cand, count, &t, s)
+                                                  : screen_fp32(h, rs2, skip_radius, &sh[j], cand, count, &t, s);
+                if (rc) return -1;
+            }
+        }
+        i = end;
+    }
+    /* Phase 2: photon order, the current radius decides. */
+    if (group_by_hit(s, b->n)) return -1;
+    const kept_t *k = s->sorted;
+    for (size_t i = 0; i < s->n_kept; i++) {
+        const photon_hit_t *ph = b->hit[k[i].hit];
+        const uint32_t e = k[i].hp;
+        if (prec == PRECISION_DOUBLE) {
+            if (!(k[i].v2 <= h->r2[e])) continue;
+            update_accept_double(h, e, ph->flux);
+        } else {
+            if (!((float)k[i].v2 <= fp32_from_bits(h->r2_f32[e]))) continue;
+            const preu_photon_t ph32 = update_photon_fp32(ph);
+            preu_update_accepted(&h->fp32[e], &ph32);
+            h->r2_f32[e] = h->fp32[e].r2;
+        }
+        t.accepted++;
+    }
+    *st = t;
+    return 0;
+}

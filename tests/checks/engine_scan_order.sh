@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The bucket-major update (--scan bucket, the default: model/update_batch.c) against the
+# photon-major oracle (--scan photon): the same image bits, final hit-point state and counts,
+# for every grid, both precisions, 1 and 2 threads, and a triangle-mesh scene with glass.
+# level: quick
+. "$(dirname "$0")/../lib/check.sh"
+hashes() { echo "$(json "$1" image_hash)/$(json "$1" state_hash)/$(json "$1" hpuo_candidates)/$(json "$1" hpuo_normal_passed)/$(json "$1" hpuo_accepted)"; }
+for scene in cornell3 cornell-water; do
+  for prec in double fp32; do
+    for grid in cells smallppm brute; do
+      size="--width 80 --height 60 --photons 40000"
+      [ $grid = brute ] && size="--width 40 --height 30 --photons 8000"
+      run "$PREE" render "$ROOT/scenes/$scene" $size --precision $prec --grid $grid --threads 1 \
+          --scan photon --out "$TMP/p.ppm" --stats "$TMP/p.json" --quiet
+      ref=$(hashes "$TMP/p.json")
+      for t in 1 2; do
+        run "$PREE" render "$ROOT/scenes/$scene" $size --precision $prec --grid $grid --threads $t \
+            --scan bucket --out "$TMP/b.ppm" --stats "$TMP/b.json" --quiet
+        expect_eq "$scene $prec $grid threads=$t bucket = photon" "$(hashes "$TMP/b.json")" "$ref"
+      done
+    done
+  done
+done
