@@ -230,8 +230,9 @@ module pree_top #(
   assign photons_done_o = photons_done_q;
 
   // ===============================================================================================
-  // Index table: NumPreu banks; bank = address mod NumPreu.
-  wire [NumPreu*HpAW-1:0] idx_rdata;
+  // Index table: NumPreu banks; bank = address mod NumPreu. The bank outputs are an array, so
+  // that a lane's selection is an NumPreu:1 multiplexer on an LANE_W-bit index.
+  wire [HpAW-1:0] idx_rd [0:NumPreu-1];
 
   generate
     for (gb = 0; gb < NumPreu; gb = gb + 1) begin : g_idx
@@ -257,7 +258,7 @@ module pree_top #(
       end
       pree_ram_sdp #(.Width(HpAW), .AddrW(IDX_ROW_W)) u_ram (
         .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(idx_rdata[gb*HpAW +: HpAW]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(idx_rd[gb]));
     end
   endgenerate
 
@@ -283,29 +284,58 @@ module pree_top #(
     end
   end
 
-  // Hit-point memory read outputs (per bank) and the B lanes' keys.
-  wire [HP_BANKS*CONST_W-1:0] hpc_rdata;
-  wire [HP_BANKS*STATE_W-1:0] hps_rdata;
-  reg  [NumPreu*HpAW-1:0]     b_hp;     // update: hit-point address from the index table
+  // Bank outputs as arrays (one word per bank), read with narrow indices: each lane's selection
+  // is a 2^HpBankW:1 (hit points), NumPreu:1 (index table) or 2^PxBankW:1 (pixels) multiplexer.
+  wire [CONST_W-1:0] hpc_rd [0:HP_BANKS-1];
+  wire [STATE_W-1:0] hps_rd [0:HP_BANKS-1];
+  wire [95:0]        px_rd  [0:PX_BANKS-1];
+
+  // Each lane's hit-point read: update, the issue in B (address from the index table); radiance,
+  // the read in A (ADISO's address). hsel_q holds the bank a lane read last, so that the lane's
+  // data (radiance: in B; update: in C) is selected by a registered bank number. Lane 0 also
+  // carries the host's reads (hp_re_i, only while idle): hp_rdata_o is lane 0's selection.
+  reg  [NumPreu*HpAW-1:0]    b_hp;     // update: the B lanes' hit-point addresses (index table)
+  reg  [NumPreu-1:0]         hr_re;
+  reg  [NumPreu*HpAW-1:0]    hr_addr;
+  reg  [NumPreu*HpBankW-1:0] hr_bank;
+  reg  [NumPreu*HpBankW-1:0] hsel_q;
+  wire [NumPreu*PxAW-1:0]    l_pix;    // the pixel of each lane's selected hit point
+
+  always @* begin : hp_lane_rd
+    integer l;
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      if (mode_i) begin
+        hr_re[l]                 = a_rd[l];
+        hr_addr[l*HpAW +: HpAW]  = ad_addr[l*HpAW +: HpAW];
+      end else begin
+        hr_re[l]                 = b_iss[l];
+        hr_addr[l*HpAW +: HpAW]  = b_hp[l*HpAW +: HpAW];
+      end
+      hr_bank[l*HpBankW +: HpBankW] = hp_bank(hr_addr[l*HpAW +: 2*HpBankW]);
+    end
+  end
+
+  always @(posedge clk_i) begin : hp_lane_sel
+    integer l;
+    for (l = 0; l < NumPreu; l = l + 1)
+      if (hr_re[l])                hsel_q[l*HpBankW +: HpBankW] <= hr_bank[l*HpBankW +: HpBankW];
+      else if (l == 0 && hp_re_i) hsel_q[l*HpBankW +: HpBankW] <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
+  end
+
+  // The B lanes' keys: update, the hit-point address read from the index table; radiance, the
+  // pixel of the hit point read in A.
   reg  [NumPreu*KEY_W-1:0]    b_key;
   reg  [NumPreu*BBANK_W-1:0]  b_bank;
-  reg  [NumPreu*CONST_W-1:0]  b_const;  // radiance: the lane's hit-point constant part
-  reg  [NumPreu*STATE_W-1:0]  b_state;  // radiance: the lane's hit-point state part
 
   always @* begin : b_lanes
-    integer l, m;
+    integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      // Bank outputs selected by the bank number (indexed part-selects: one mux each).
-      m = {{(32-LANE_W){1'b0}}, b_addr_q[l*AADDR_W +: LANE_W]};
-      b_hp[l*HpAW +: HpAW] = idx_rdata[m*HpAW +: HpAW];
-      m = {{(32-HpBankW){1'b0}}, hp_bank(b_addr_q[l*AADDR_W +: 2*HpBankW])};
-      b_const[l*CONST_W +: CONST_W] = hpc_rdata[m*CONST_W +: CONST_W];
-      b_state[l*STATE_W +: STATE_W] = hps_rdata[m*STATE_W +: STATE_W];
+      b_hp[l*HpAW +: HpAW]          = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
       b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       if (mode_i) begin
-        b_key[l*KEY_W +: PxAW]       = b_const[l*CONST_W + 192 +: PxAW];
-        b_bank[l*BBANK_W +: PxBankW] = b_const[l*CONST_W + 192 +: PxBankW];
+        b_key[l*KEY_W +: PxAW]       = l_pix[l*PxAW +: PxAW];
+        b_bank[l*BBANK_W +: PxBankW] = l_pix[l*PxAW +: PxBankW];
       end else begin
         b_key[l*KEY_W +: HpAW]       = b_hp[l*HpAW +: HpAW];
         b_bank[l*BBANK_W +: HpBankW] = hp_bank(b_hp[l*HpAW +: 2*HpBankW]);
@@ -374,29 +404,30 @@ module pree_top #(
   wire [NumPreu*96-1:0]    p_tau, p_l;
   wire [NumPreu*32-1:0]    p_r2, p_n;
   reg  [NumPreu*PxBankW-1:0] px_rbank_q;
-  wire [PX_BANKS*96-1:0]   px_rdata;
+  // Write-back words per lane, selected per bank by the lane number. The host's writes (only
+  // while idle, when no PREU writes back) go through lane 0's word.
+  wire [NumPreu-1:0]         wb_hp_en, wb_px_en;
+  wire [NumPreu*HpBankW-1:0] wb_hp_bank;
+  wire [STATE_W-1:0]         wb_hp_state [0:NumPreu-1];
+  wire [HP_ROW_W-1:0]        wb_hp_row   [0:NumPreu-1];
+  wire [95:0]                wb_px_sum   [0:NumPreu-1];
+  wire [PX_ROW_W-1:0]        wb_px_row   [0:NumPreu-1];
 
   generate
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
-      // The lane's hit-point data: radiance from the bank B addresses, update from C's bank.
-      reg [191:0]       hc;      // {f, pos}
-      reg [STATE_W-1:0] hs;
-      reg [KEY_W-1:0]   tag;
-      reg [95:0]        li;
-      integer bk;
-      always @* begin
-        hc  = b_const[gl*CONST_W +: 192];
-        hs  = b_state[gl*STATE_W +: STATE_W];
-        tag = b_key[gl*KEY_W +: KEY_W];
-        if (!mode_i) begin
-          tag = {KEY_W{1'b0}};
-          tag[HpAW-1:0] = c_hp_q[gl*HpAW +: HpAW];
-          bk = {{(32-HpBankW){1'b0}}, hp_bank(c_hp_q[gl*HpAW +: 2*HpBankW])};
-          hc = hpc_rdata[bk*CONST_W +: 192];
-          hs = hps_rdata[bk*STATE_W +: STATE_W];
-        end
-        bk = {{(32-PxBankW){1'b0}}, px_rbank_q[gl*PxBankW +: PxBankW]};
-        li = px_rdata[bk*96 +: 96];
+      // The lane's hit-point data from the bank it read last (radiance: in A, update: in B).
+      wire [HpBankW-1:0] hsel = hsel_q[gl*HpBankW +: HpBankW];
+      wire [CONST_W-1:0] hc   = hpc_rd[hsel];     // {pixel, f, pos}
+      wire [STATE_W-1:0] hs   = hps_rd[hsel];
+      wire [95:0]        li   = px_rd[px_rbank_q[gl*PxBankW +: PxBankW]];
+      wire [KEY_W-1:0]   tag;
+      wire               host_hp = (gl == 0) && hp_we_i;
+      wire               host_px = (gl == 0) && px_we_i;
+      assign l_pix[gl*PxAW +: PxAW] = hc[192 +: PxAW];
+      if (KEY_W > HpAW) begin : g_tag_pad
+        assign tag = mode_i ? b_key[gl*KEY_W +: KEY_W] : {{(KEY_W-HpAW){1'b0}}, c_hp_q[gl*HpAW +: HpAW]};
+      end else begin : g_tag
+        assign tag = mode_i ? b_key[gl*KEY_W +: KEY_W] : c_hp_q[gl*HpAW +: HpAW];
       end
       assign p_valid[gl] = mode_i ? b_iss[gl] : c_v_q[gl];
 
@@ -409,6 +440,16 @@ module pree_top #(
         .l_i(li), .valid_o(p_vout[gl]), .tag_o(p_tag[gl*KEY_W +: KEY_W]),
         .accept_o(p_acc[gl]), .tau_o(p_tau[gl*96 +: 96]), .r2_o(p_r2[gl*32 +: 32]),
         .n_o(p_n[gl*32 +: 32]), .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
+
+      // Write-back: update, the accepted hit-point state; radiance, the pixel sum.
+      assign wb_hp_en[gl] = !mode_i && p_vout[gl] && p_acc[gl];
+      assign wb_hp_bank[gl*HpBankW +: HpBankW] = hp_bank(p_tag[gl*KEY_W +: 2*HpBankW]);
+      assign wb_hp_state[gl] = host_hp ? hp_wdata_i[0 +: STATE_W]
+                                       : {p_n[gl*32 +: 32], p_r2[gl*32 +: 32], p_tau[gl*96 +: 96]};
+      assign wb_hp_row[gl]   = host_hp ? hp_addr_i[HpAW-1:HpBankW] : p_tag[gl*KEY_W + HpBankW +: HP_ROW_W];
+      assign wb_px_en[gl]    = mode_i && p_vout[gl];
+      assign wb_px_sum[gl]   = host_px ? px_wdata_i : p_l[gl*96 +: 96];
+      assign wb_px_row[gl]   = host_px ? px_addr_i[PxAW-1:PxBankW] : p_tag[gl*KEY_W + PxBankW +: PX_ROW_W];
     end
   endgenerate
 
@@ -420,65 +461,47 @@ module pree_top #(
 
   // ===============================================================================================
   // Hit-point memory: HP_BANKS banks of a constant and a state RAM.
-  reg [HpBankW-1:0] hp_hbank_q;   // bank of the host's read
-
   generate
     for (gb = 0; gb < HP_BANKS; gb = gb + 1) begin : g_hp
       localparam [HpBankW-1:0] BANK = gb;
       reg                re, wec, wes;
-      reg [HP_ROW_W-1:0] raddr, waddr;
-      reg [STATE_W-1:0]  wstate;
-      integer j, wl;
+      reg [HP_ROW_W-1:0] raddr;
+      reg                hit;          // a lane writes back into this bank
+      reg [LANE_W-1:0]   wl;           // the (one) lane that does; 0 otherwise (the host's word)
+      integer j;
       always @* begin
+        // Reads: host, then the lanes (update: B issue; radiance: A read).
         re = 1'b0; raddr = {HP_ROW_W{1'b0}};
-        wec = 1'b0; wes = 1'b0; waddr = {HP_ROW_W{1'b0}}; wstate = {STATE_W{1'b0}};
-        // Reads: host, update issue (B), radiance read (A).
         if (hp_re_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK) begin
           re = 1'b1; raddr = hp_addr_i[HpAW-1:HpBankW];
         end
-        for (j = 0; j < NumPreu; j = j + 1) begin
-          if (!mode_i && b_iss[j] && hp_bank(b_hp[j*HpAW +: 2*HpBankW]) == BANK) begin
-            re = 1'b1; raddr = raddr | b_hp[j*HpAW + HpBankW +: HP_ROW_W];
-          end
-          if (mode_i && a_rd[j] && hp_bank(ad_addr[j*HpAW +: 2*HpBankW]) == BANK) begin
-            re = 1'b1; raddr = raddr | ad_addr[j*HpAW + HpBankW +: HP_ROW_W];
-          end
-        end
-        // Writes: host (both parts), update write-back of accepted photons (state).
-        if (hp_we_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK) begin
-          wec = 1'b1; wes = 1'b1; waddr = hp_addr_i[HpAW-1:HpBankW];
-          wstate = hp_wdata_i[0 +: STATE_W];
-        end
-        // Write-back: the (one) lane whose accepted result belongs to this bank.
-        wl = -1;
         for (j = 0; j < NumPreu; j = j + 1)
-          if (!mode_i && p_vout[j] && p_acc[j] && hp_bank(p_tag[j*KEY_W +: 2*HpBankW]) == BANK) wl = j;
-        if (wl >= 0) begin
-          wes    = 1'b1;
-          waddr  = p_tag[wl*KEY_W + HpBankW +: HP_ROW_W];
-          wstate = {p_n[wl*32 +: 32], p_r2[wl*32 +: 32], p_tau[wl*96 +: 96]};
-        end
+          if (hr_re[j] && hr_bank[j*HpBankW +: HpBankW] == BANK) begin
+            re = 1'b1; raddr = raddr | hr_addr[j*HpAW + HpBankW +: HP_ROW_W];
+          end
+        // Writes: host (both parts), update write-back of accepted photons (state).
+        wec = hp_we_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK;
+        hit = 1'b0; wl = {LANE_W{1'b0}};
+        for (j = 0; j < NumPreu; j = j + 1)
+          if (wb_hp_en[j] && wb_hp_bank[j*HpBankW +: HpBankW] == BANK) begin
+            hit = 1'b1; wl = j[LANE_W-1:0];
+          end
+        wes = wec | hit;
       end
+      wire [HP_ROW_W-1:0] waddr  = wb_hp_row[wl];
+      wire [STATE_W-1:0]  wstate = wb_hp_state[wl];
       pree_ram_sdp #(.Width(CONST_W), .AddrW(HP_ROW_W)) u_const (
         .clk_i(clk_i), .we_i(wec), .waddr_i(waddr), .wdata_i(hp_wdata_i[STATE_W +: CONST_W]),
-        .re_i(re), .raddr_i(raddr), .rdata_o(hpc_rdata[gb*CONST_W +: CONST_W]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(hpc_rd[gb]));
       pree_ram_sdp #(.Width(STATE_W), .AddrW(HP_ROW_W)) u_state (
         .clk_i(clk_i), .we_i(wes), .waddr_i(waddr), .wdata_i(wstate),
-        .re_i(re), .raddr_i(raddr), .rdata_o(hps_rdata[gb*STATE_W +: STATE_W]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(hps_rd[gb]));
     end
   endgenerate
 
-  always @(posedge clk_i) begin
-    if (hp_re_i) hp_hbank_q <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
-  end
-
-  reg [CONST_W+STATE_W-1:0] hp_rdata;
-  always @* begin : hp_host_rd
-    integer m;
-    m = {{(32-HpBankW){1'b0}}, hp_hbank_q};
-    hp_rdata = {hpc_rdata[m*CONST_W +: CONST_W], hps_rdata[m*STATE_W +: STATE_W]};
-  end
-  assign hp_rdata_o = hp_rdata;
+  // Host read: lane 0's selection (its bank register follows hp_re_i while idle).
+  wire [HpBankW-1:0] hp_hsel = hsel_q[0 +: HpBankW];
+  assign hp_rdata_o = {hpc_rd[hp_hsel], hps_rd[hp_hsel]};
 
   // ===============================================================================================
   // Pixel memory: PX_BANKS banks of {b, g, r}.
@@ -488,49 +511,38 @@ module pree_top #(
     for (gb = 0; gb < PX_BANKS; gb = gb + 1) begin : g_px
       localparam [PxBankW-1:0] BANK = gb;
       reg                re, we;
-      reg [PX_ROW_W-1:0] raddr, waddr;
-      reg [95:0]         wdata;
-      integer j, wl;
+      reg [PX_ROW_W-1:0] raddr;
+      reg [LANE_W-1:0]   wl;           // the (one) lane writing back here; 0: the host's word
+      integer j;
       always @* begin
-        wl = -1;
         re = 1'b0; raddr = {PX_ROW_W{1'b0}};
-        we = 1'b0; waddr = {PX_ROW_W{1'b0}}; wdata = 96'd0;
         if (px_re_i && px_addr_i[PxBankW-1:0] == BANK) begin
           re = 1'b1; raddr = px_addr_i[PxAW-1:PxBankW];
         end
-        if (px_we_i && px_addr_i[PxBankW-1:0] == BANK) begin
-          we = 1'b1; waddr = px_addr_i[PxAW-1:PxBankW]; wdata = px_wdata_i;
-        end
+        we = px_we_i && px_addr_i[PxBankW-1:0] == BANK;
+        wl = {LANE_W{1'b0}};
         for (j = 0; j < NumPreu; j = j + 1) begin
           if (p_lreq[j] && p_ltag[j*KEY_W +: PxBankW] == BANK) begin
             re = 1'b1; raddr = raddr | p_ltag[j*KEY_W + PxBankW +: PX_ROW_W];
           end
-          if (mode_i && p_vout[j] && p_tag[j*KEY_W +: PxBankW] == BANK) wl = j;
-        end
-        // Radiance write-back: the (one) lane whose pixel sum belongs to this bank.
-        if (wl >= 0) begin
-          we    = 1'b1;
-          waddr = p_tag[wl*KEY_W + PxBankW +: PX_ROW_W];
-          wdata = p_l[wl*96 +: 96];
+          // Radiance write-back: the (one) lane whose pixel sum belongs to this bank.
+          if (wb_px_en[j] && p_tag[j*KEY_W +: PxBankW] == BANK) begin
+            we = 1'b1; wl = j[LANE_W-1:0];
+          end
         end
       end
+      wire [PX_ROW_W-1:0] waddr = wb_px_row[wl];
+      wire [95:0]         wdata = wb_px_sum[wl];
       pree_ram_sdp #(.Width(96), .AddrW(PX_ROW_W)) u_ram (
         .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(px_rdata[gb*96 +: 96]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(px_rd[gb]));
     end
   endgenerate
 
   always @(posedge clk_i) begin
     if (px_re_i) px_hbank_q <= px_addr_i[PxBankW-1:0];
   end
-
-  reg [95:0] px_rdata_host;
-  always @* begin : px_host_rd
-    integer m;
-    m = {{(32-PxBankW){1'b0}}, px_hbank_q};
-    px_rdata_host = px_rdata[m*96 +: 96];
-  end
-  assign px_rdata_o = px_rdata_host;
+  assign px_rdata_o = px_rd[px_hbank_q];
 
   // ===============================================================================================
   // Idle and counters.
