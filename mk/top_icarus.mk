@@ -1,0 +1,124 @@
+# Icarus bench of the PREE top (rtl/pree_top.v): tb/cosim/top_tb.v plays the host protocol over
+# vectors from tb/cosim/top_vecgen.c (the fp32 model of libpree) and compares every hit-point
+# and pixel word. Small memories so that Icarus runs it in seconds; docs/pree_top.md,
+# "Icarus bench".
+#
+#   make sim-top-icarus          every run below (part of `make sim`), then the mutants
+#   make sim-top-icarus-mutants  copies of pree_top.v with one hazard rule broken each: the bench
+#                                must fail them with mismatches
+# Products in $(BUILD)/top_icarus: top_vecgen, one .vvp per configuration, vectors per run.
+
+TOPIV_DIR  := $(BUILD)/top_icarus
+TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
+              rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v)
+TOPIV_RTL_SUB := $(filter-out rtl/pree_top.v,$(TOPIV_RTL))
+TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel
+TOPIV_IVERILOG := iverilog -g2005 -Wall -DPREE_ASSERT -Irtl -s top_tb
+
+# Configurations: pree_top parameters (bench side) and the matching vecgen geometry.
+# HpAW/IdxAW/PxAW as the vectors were written; HpBankW/PxBankW are the bench's choice.
+TOPIV_CFGS := p4 p8 p16
+TOPIV_GEOM_p4  := --preu 4 --hp-aw 10 --idx-aw 7 --px-aw 9
+TOPIV_GEOM_p8  := --preu 8 --hp-aw 11 --idx-aw 8 --px-aw 10
+TOPIV_GEOM_p16 := --preu 16 --hp-aw 11 --idx-aw 8 --px-aw 10
+TOPIV_PAR_p4   := -P top_tb.NumPreu=4 -P top_tb.HpAW=10 -P top_tb.HpBankW=3 -P top_tb.IdxAW=7 -P top_tb.PxAW=9 -P top_tb.PxBankW=2
+TOPIV_PAR_p8   := -P top_tb.NumPreu=8 -P top_tb.HpAW=11 -P top_tb.HpBankW=4 -P top_tb.IdxAW=8 -P top_tb.PxAW=10 -P top_tb.PxBankW=3
+TOPIV_PAR_p16  := -P top_tb.NumPreu=16 -P top_tb.HpAW=11 -P top_tb.HpBankW=5 -P top_tb.IdxAW=8 -P top_tb.PxAW=10 -P top_tb.PxBankW=4
+
+# Runs: configuration, vecgen scenario arguments, bench plusargs (gap percent, seed).
+TOPIV_RUNS := p4_random p4_one p4_dense p4_mixed p4_abank p8_random p8_dense p16_random
+TOPIV_CFG_p4_random  := p4
+TOPIV_ARG_p4_random  := --scenario random --photons 30 --hp 200 --seed 1
+TOPIV_PLUS_p4_random := +gap=20 +seed=1
+TOPIV_CFG_p4_one     := p4
+TOPIV_ARG_p4_one     := --scenario one --photons 100 --hp 100 --seed 2
+TOPIV_PLUS_p4_one    := +gap=0 +seed=2
+TOPIV_CFG_p4_dense   := p4
+TOPIV_ARG_p4_dense   := --scenario dense --photons 16 --hp 240 --seed 3
+TOPIV_PLUS_p4_dense  := +gap=10 +seed=3
+TOPIV_CFG_p4_mixed   := p4
+TOPIV_ARG_p4_mixed   := --scenario mixed --photons 24 --hp 120 --seed 4
+TOPIV_PLUS_p4_mixed  := +gap=40 +seed=4
+TOPIV_CFG_p4_abank   := p4
+TOPIV_ARG_p4_abank   := --scenario random --photons 30 --hp 200 --place random --seed 5
+TOPIV_PLUS_p4_abank  := +gap=0 +seed=5
+TOPIV_CFG_p8_random  := p8
+TOPIV_ARG_p8_random  := --scenario random --photons 24 --hp 300 --seed 6
+TOPIV_PLUS_p8_random := +gap=20 +seed=6
+TOPIV_CFG_p8_dense   := p8
+TOPIV_ARG_p8_dense   := --scenario dense --photons 12 --hp 320 --seed 7
+TOPIV_PLUS_p8_dense  := +gap=10 +seed=7
+TOPIV_CFG_p16_random := p16
+TOPIV_ARG_p16_random := --scenario random --photons 10 --hp 300 --seed 8
+TOPIV_PLUS_p16_random := +gap=20 +seed=8
+
+# Mutants: name, sed expression on rtl/pree_top.v, the run that must catch it.
+TOPIV_MUTANTS := nohaz nodup
+TOPIV_SED_nohaz := s/b_haz\[l\] = 1'b1;/b_haz[l] = 1'b0;/
+TOPIV_RUN_nohaz := p4_one
+TOPIV_SED_nodup := s/b_dup\[l\] = 1'b1;/b_dup[l] = 1'b0;/
+TOPIV_RUN_nodup := p4_one
+
+TOPIV_VVPS    := $(TOPIV_CFGS:%=$(TOPIV_DIR)/top_tb_%.vvp)
+TOPIV_VECS    := $(TOPIV_RUNS:%=$(TOPIV_DIR)/%.meta)
+TOPIV_MUTVVPS := $(TOPIV_MUTANTS:%=$(TOPIV_DIR)/mut_%.vvp)
+
+TEST_PREREQS += $(TOPIV_DIR)/top_vecgen $(TOPIV_VVPS) $(TOPIV_VECS) $(TOPIV_MUTVVPS)
+SIM_TARGETS  += sim-top-icarus
+
+.PHONY: sim-top-icarus sim-top-icarus-runs sim-top-icarus-mutants
+
+# The vector writer: the fp32 PREU model and the radiance order of libpree's objects.
+$(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c $(BUILD)/model/preu_fp32.o $(BUILD)/model/adiso_order.o
+	@mkdir -p $(@D)
+	$(CC) $(TOPIV_CFLAGS) $^ -o $@ -lm
+
+define TOPIV_CFG_RULE
+$(TOPIV_DIR)/top_tb_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(1)) -o $$@ tb/cosim/top_tb.v $(TOPIV_RTL)
+endef
+define TOPIV_RUN_RULE
+$(TOPIV_DIR)/$(1).meta: $(TOPIV_DIR)/top_vecgen mk/top_icarus.mk
+	$(TOPIV_DIR)/top_vecgen $(TOPIV_GEOM_$(TOPIV_CFG_$(1))) $(TOPIV_ARG_$(1)) $(TOPIV_DIR)/$(1) >$(TOPIV_DIR)/$(1).vecgen.txt
+endef
+# A mutant: pree_top.v with one edit (the rule fails when the edit no longer applies).
+define TOPIV_MUT_RULE
+$(TOPIV_DIR)/mut_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	sed "$(TOPIV_SED_$(1))" rtl/pree_top.v >$(TOPIV_DIR)/mut_$(1)_pree_top.v
+	@if cmp -s rtl/pree_top.v $(TOPIV_DIR)/mut_$(1)_pree_top.v; then \
+	  echo "mutant $(1): the edit '$(TOPIV_SED_$(1))' no longer applies to rtl/pree_top.v"; exit 1; fi
+	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(TOPIV_CFG_$(TOPIV_RUN_$(1)))) -o $$@ tb/cosim/top_tb.v \
+	  $(TOPIV_DIR)/mut_$(1)_pree_top.v $(TOPIV_RTL_SUB)
+endef
+$(foreach c,$(TOPIV_CFGS),$(eval $(call TOPIV_CFG_RULE,$(c))))
+$(foreach r,$(TOPIV_RUNS),$(eval $(call TOPIV_RUN_RULE,$(r))))
+$(foreach m,$(TOPIV_MUTANTS),$(eval $(call TOPIV_MUT_RULE,$(m))))
+
+sim-top-icarus: sim-top-icarus-runs sim-top-icarus-mutants
+
+# Every run; all of them even after a failure, then the verdict.
+sim-top-icarus-runs: $(TOPIV_VVPS) $(TOPIV_VECS)
+	@fail=0; \
+	$(foreach r,$(TOPIV_RUNS),\
+	  if vvp -N $(TOPIV_DIR)/top_tb_$(TOPIV_CFG_$(r)).vvp +vec=$(TOPIV_DIR)/$(r) $(TOPIV_PLUS_$(r)) \
+	       >$(TOPIV_DIR)/$(r).log 2>&1 && tail -1 $(TOPIV_DIR)/$(r).log | grep -q '^top_tb: PASS$$'; then \
+	    echo "$(r): $$(tail -2 $(TOPIV_DIR)/$(r).log | head -1)"; \
+	  else tail -15 $(TOPIV_DIR)/$(r).log; \
+	    echo "$(r): FAIL; reproduce: vvp -N $(TOPIV_DIR)/top_tb_$(TOPIV_CFG_$(r)).vvp +vec=$(TOPIV_DIR)/$(r) $(TOPIV_PLUS_$(r))"; \
+	    fail=1; fi;) \
+	exit $$fail
+
+# Each mutant must fail its run with hit-point or pixel mismatches (not a time-out or assertion).
+sim-top-icarus-mutants: $(TOPIV_MUTVVPS) $(TOPIV_VECS)
+	@fail=0; \
+	$(foreach m,$(TOPIV_MUTANTS),\
+	  if vvp -N $(TOPIV_DIR)/mut_$(m).vvp +vec=$(TOPIV_DIR)/$(TOPIV_RUN_$(m)) $(TOPIV_PLUS_$(TOPIV_RUN_$(m))) \
+	       >$(TOPIV_DIR)/mut_$(m).log 2>&1; then \
+	    echo "mutant $(m): NOT detected by run $(TOPIV_RUN_$(m)) (log $(TOPIV_DIR)/mut_$(m).log)"; fail=1; \
+	  elif grep -q '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log && grep -q 'top_tb: FAIL' $(TOPIV_DIR)/mut_$(m).log; then \
+	    echo "mutant $(m): detected by run $(TOPIV_RUN_$(m)): $$(grep -c '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log) mismatch lines, first: $$(grep -m1 '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log)"; \
+	  else tail -5 $(TOPIV_DIR)/mut_$(m).log; \
+	    echo "mutant $(m): failed, but not by a mismatch (log $(TOPIV_DIR)/mut_$(m).log)"; fail=1; fi;) \
+	exit $$fail

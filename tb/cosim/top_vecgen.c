@@ -1,0 +1,183 @@
+/* top_vecgen.c: writes the vector files of the Icarus bench of pree_top (tb/cosim/top_tb.v):
+ * hit points to load, the photon stream with its index-table entries, and the expected hit-point
+ * memory and pixel words. The expectations come from the fp32 PREU model (model/preu_fp32.h)
+ * applied in photon order and, for the pixels, in the radiance issue order of
+ * model/adiso_order.h, as tb/cosim/top_bench.c does for the Verilated top.
+ *
+ * usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario S] [--photons N]
+ *                   [--hp N] [--seed S] [--place packed|random] OUT
+ *   scenarios: random (1..40 random distinct candidates, a few photons with none),
+ *              one (every photon on hit point 0 only), dense (pixels of 40 hit points, photons
+ *              on neighbourhoods of 80), mixed (random, every fourth photon also on hit point 0)
+ *   place:     packed (docs/pree_top.md "Host protocol": p_k = p_(k-1) - N^P_k mod P, no stage-A
+ *              bank conflict), random (0..2P-1 entries of random padding: stage-A conflicts)
+ * Files (one $readmemh word per line, fields most significant first, all hex):
+ *   OUT.meta  16 x 32 bits: nhp, npix, photons, entries, ne, operations, P, A, I, X, 0...
+ *   OUT.hp    per hit point, 384 bits: pixel, f b g r, pos z y x, n, r2, tau b g r
+ *             (the low PxAW + 352 bits are pree_top's hp_wdata_i)
+ *   OUT.ph    per photon, 288 bits: end of its entries in OUT.idx, p_addr, N^P, phi b g r, pos z y x
+ *   OUT.idx   per index entry in write order, 96 bits: photons that must be done before it is
+ *             written (photons with N^P > 0, in order), index address, hit-point address
+ *   OUT.hpx   expected hit-point memory after the update pass, layout of OUT.hp
+ *   OUT.px    expected pixel sums after the radiance pass, 96 bits: b g r
+ * Prints one summary line. Exit status 0, 1 on an I/O error, 2 on a usage error. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "adiso_order.h"
+#include "preu_fp32.h"
+
+#define MAX_CAND 64
+
+static uint64_t rng_state;
+static uint32_t rnd(void)
+{
+    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
+    return (uint32_t)(rng_state >> 33);
+}
+static uint32_t frand_bits(float lo, float hi)
+{
+    return fp32_to_bits(lo + (hi - lo) * (float)(rnd() & 0xffffff) / 16777216.0f);
+}
+
+static FILE *open_out(const char *base, const char *ext)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s.%s", base, ext);
+    FILE *f = fopen(path, "w");
+    if (!f) perror(path);
+    return f;
+}
+
+static void put_hp(FILE *f, const preu_hp_t *h, uint32_t pixel)
+{
+    fprintf(f, "%08x%08x%08x%08x%08x%08x%08x%08x%08x%08x%08x%08x\n", pixel, h->f[2], h->f[1], h->f[0],
+            h->pos[2], h->pos[1], h->pos[0], h->n, h->r2, h->tau[2], h->tau[1], h->tau[0]);
+}
+
+int main(int argc, char **argv)
+{
+    int preu = 4, hp_aw = 10, idx_aw = 8, px_aw = 9, photons = 300, nhp = 0, place_random = 0;
+    const char *scenario = "random", *out = NULL;
+    uint64_t seed = 1;
+    for (int i = 1; i < argc; i++) {
+        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (o[0] != '-') { out = o; continue; }
+        if (!v) { fprintf(stderr, "top_vecgen: %s needs a value\n", o); return 2; }
+        i++;
+        if (!strcmp(o, "--preu")) preu = atoi(v);
+        else if (!strcmp(o, "--hp-aw")) hp_aw = atoi(v);
+        else if (!strcmp(o, "--idx-aw")) idx_aw = atoi(v);
+        else if (!strcmp(o, "--px-aw")) px_aw = atoi(v);
+        else if (!strcmp(o, "--scenario")) scenario = v;
+        else if (!strcmp(o, "--photons")) photons = atoi(v);
+        else if (!strcmp(o, "--hp")) nhp = atoi(v);
+        else if (!strcmp(o, "--seed")) seed = strtoull(v, NULL, 0);
+        else if (!strcmp(o, "--place")) place_random = !strcmp(v, "random");
+        else { fprintf(stderr, "top_vecgen: unknown option %s\n", o); return 2; }
+    }
+    const int one = !strcmp(scenario, "one"), dense = !strcmp(scenario, "dense");
+    const int mixed = !strcmp(scenario, "mixed"), random_sc = !strcmp(scenario, "random");
+    if (!out || !(one || dense || mixed || random_sc) || preu < 2 || preu > 64 || (preu & (preu - 1)) ||
+        hp_aw < 4 || hp_aw > 24 || idx_aw < 6 || idx_aw > 16 || px_aw < 2 || px_aw > 24 || photons < 1) {
+        fprintf(stderr, "usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario "
+                        "random|one|dense|mixed] [--photons N] [--hp N] [--seed S] [--place packed|random] OUT\n");
+        return 2;
+    }
+    const uint32_t depth = 1u << idx_aw;
+    if (nhp <= 0) nhp = (1 << hp_aw) - (1 << hp_aw) / 8;   /* leave some addresses unused */
+    const int per_px = dense ? 40 : 3;
+    const int npix = (nhp + per_px - 1) / per_px;
+    if (nhp > (1 << hp_aw) || npix > (1 << px_aw) || MAX_CAND + 2 * (uint32_t)preu > depth) {
+        fprintf(stderr, "top_vecgen: %d hit points / %d pixels / %d-entry photons do not fit\n", nhp, npix, MAX_CAND);
+        return 2;
+    }
+    rng_state = seed * 0x9E3779B97F4A7C15ull + 11;
+
+    FILE *fhp = open_out(out, "hp"), *fph = open_out(out, "ph"), *fidx = open_out(out, "idx");
+    FILE *fhpx = open_out(out, "hpx"), *fpx = open_out(out, "px"), *fmeta = open_out(out, "meta");
+    preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp);
+    uint64_t *start = malloc((size_t)photons * sizeof *start);   /* absolute entry of each sent photon */
+    uint32_t *order = malloc((size_t)nhp * sizeof *order);
+    uint32_t *L = calloc((size_t)npix * 3, sizeof *L);
+    if (!fhp || !fph || !fidx || !fhpx || !fpx || !fmeta || !hp || !start || !order || !L) return 1;
+
+    /* Hit points in the unit cube, per_px consecutive ones per pixel; "one": a radius covering it. */
+    for (int i = 0; i < nhp; i++) {
+        for (int c = 0; c < 3; c++) {
+            hp[i].pos[c] = frand_bits(0, 1);
+            hp[i].f[c] = frand_bits(0, 1);
+        }
+        hp[i].r2 = one ? fp32_to_bits(4.0f) : frand_bits(0.01f, 0.2f);
+        put_hp(fhp, &hp[i], (uint32_t)(i / per_px));
+    }
+
+    /* Photons: model update in photon order; index entries placed in the circular table. */
+    uint64_t alloc_end = 0, prev_p = 0, entries = 0, ops = 0;
+    int sent = 0, oldest = 0;
+    for (int p = 0; p < photons; p++) {
+        preu_photon_t ph;
+        for (int c = 0; c < 3; c++) { ph.pos[c] = frand_bits(0, 1); ph.phi[c] = frand_bits(0, 2); }
+        uint32_t cand[MAX_CAND];
+        size_t n = 0;
+        if (one) {
+            cand[n++] = 0;
+        } else if (!(random_sc && rnd() % 32 == 0)) {   /* random: about 3% photons without candidates */
+            size_t want = dense ? 1 + rnd() % 60 : 1 + rnd() % 40;
+            uint32_t base = dense ? rnd() % (uint32_t)nhp : 0;
+            while (n < want && n < (size_t)nhp) {
+                uint32_t h = dense ? (base + rnd() % 80) % (uint32_t)nhp : rnd() % (uint32_t)nhp;
+                int dup = 0;
+                for (size_t k = 0; k < n; k++) dup |= cand[k] == h;
+                if (!dup) cand[n++] = h;
+            }
+            if (mixed && p % 4 == 0) {
+                int has0 = 0;
+                for (size_t k = 0; k < n; k++) has0 |= cand[k] == 0;
+                if (!has0) cand[n++] = 0;
+            }
+        }
+        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph);
+        uint64_t pa = 0;
+        if (n) {
+            if (place_random) {
+                pa = alloc_end + rnd() % (2u * (uint32_t)preu);
+            } else {
+                uint64_t target = (prev_p + (uint64_t)preu * MAX_CAND - n) % (uint64_t)preu;
+                pa = alloc_end + (target + (uint64_t)preu - alloc_end % (uint64_t)preu) % (uint64_t)preu;
+            }
+            /* Entries pa .. pa+n-1 reuse those of photons starting before pa + n - depth. */
+            while (oldest < sent && start[oldest] + depth < pa + n) oldest++;
+            /* The k-th operation AFTSO-HpUOC emits reads entry pa + n - 1 - k. */
+            for (size_t k = 0; k < n; k++)
+                fprintf(fidx, "%08x%08x%08x\n", (unsigned)oldest, (unsigned)((pa + n - 1 - k) & (depth - 1)), cand[k]);
+            start[sent++] = pa;
+            alloc_end = pa + n;
+            prev_p = pa;
+            entries += n;
+            ops += n;
+        }
+        fprintf(fph, "%08x%08x%08x%08x%08x%08x%08x%08x%08x\n", (unsigned)entries, (unsigned)(pa & (depth - 1)),
+                (unsigned)n, ph.phi[2], ph.phi[1], ph.phi[0], ph.pos[2], ph.pos[1], ph.pos[0]);
+    }
+    for (int i = 0; i < nhp; i++) put_hp(fhpx, &hp[i], (uint32_t)(i / per_px));
+
+    /* Radiance: each pixel accumulated from +0 in the hardware's issue order. */
+    const uint32_t ne = preu_n_emitted((uint64_t)photons);
+    if (adiso_order((uint32_t)nhp, preu, 12, order)) { fprintf(stderr, "top_vecgen: adiso_order failed\n"); return 2; }
+    for (int k = 0; k < nhp; k++) preu_radiance(L + 3 * (size_t)(order[k] / (uint32_t)per_px), &hp[order[k]], ne);
+    for (int j = 0; j < npix; j++) fprintf(fpx, "%08x%08x%08x\n", L[3 * j + 2], L[3 * j + 1], L[3 * j]);
+
+    const uint32_t meta[16] = {(uint32_t)nhp, (uint32_t)npix, (uint32_t)photons, (uint32_t)entries, ne,
+                               (uint32_t)ops, (uint32_t)preu, (uint32_t)hp_aw, (uint32_t)idx_aw, (uint32_t)px_aw};
+    for (int k = 0; k < 16; k++) fprintf(fmeta, "%08x\n", meta[k]);
+    int bad = 0;
+    FILE *all[] = {fhp, fph, fidx, fhpx, fpx, fmeta};
+    for (size_t k = 0; k < sizeof all / sizeof *all; k++) bad |= fclose(all[k]) != 0;
+    if (bad) { perror("top_vecgen"); return 1; }
+    printf("top_vecgen preu=%d scenario=%s place=%s photons=%d sent=%d hp=%d pixels=%d entries=%llu ops=%llu\n",
+           preu, scenario, place_random ? "random" : "packed", photons, sent, nhp, npix,
+           (unsigned long long)entries, (unsigned long long)ops);
+    free(hp); free(start); free(order); free(L);
+    return 0;
+}

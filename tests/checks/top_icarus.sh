@@ -1,0 +1,14 @@
+#!/usr/bin/env bash
+# level: quick
+# pree_top under Icarus (tb/cosim/top_tb.v over tb/cosim/top_vecgen.c vectors): the host protocol
+# with random, one-hit-point, dense-pixel, mixed and misplaced-index runs for 4, 8 and 16 PREUs,
+# every hit-point and pixel word against the fp32 model; then the mutants of pree_top.v (hazard
+# stall off, same-cycle duplicate check off) must fail with mismatches. Runs and mutants are
+# listed in mk/top_icarus.mk (make sim-top-icarus).
+set -u
+cd "$(dirname "$0")/../.."
+build=${BUILD:-build}
+if ! make -s BUILD="$build" sim-top-icarus; then
+  echo "FAIL; reproduce: make BUILD=$build sim-top-icarus"
+  exit 1
+fi
