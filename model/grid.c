@@ -92,8 +92,12 @@ static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t er
 {
     for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
     part->num_entries = part->start[buckets];
-    part->entries = malloc((part->num_entries + 1) * sizeof *part->entries);
-    if (!part->entries) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    const size_t n = part->num_entries + 1;
+    double *base = malloc(n * (6 * sizeof(double) + sizeof(uint32_t)));
+    if (!base) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    part->px = base; part->py = base + n; part->pz = base + 2 * n;
+    part->nx = base + 3 * n; part->ny = base + 4 * n; part->nz = base + 5 * n;
+    part->hp = (uint32_t *)(base + 6 * n);
     return 0;
 }
 
@@ -133,7 +137,7 @@ static int build_smallppm(grid_t *g, const hitpoints_t *h, int width, char *err,
                     for (uint32_t ix = r.lo[0]; ix <= r.hi[0]; ix++) {
                         size_t b = smallppm_bucket(ix, iy, iz, nb);
                         if (pass == 0) part->start[b + 1]++;
-                        else part->entries[--part->start[b + 1]].hp = (uint32_t)k;
+                        else part->hp[--part->start[b + 1]] = (uint32_t)k;
                     }
         }
         if (pass == 0) {
@@ -256,7 +260,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
                         uint64_t key = cell_key(ix, iy, iz);
                         size_t s = find_slot(keys, mask, key);
                         if (pass == 0) { keys[s] = key; part->start[s + 1]++; }
-                        else part->entries[part->start[s]++].hp = (uint32_t)i;
+                        else part->hp[part->start[s]++] = (uint32_t)i;
                     }
         }
         for (int p = 0; p < g->num_parts; p++) {
@@ -283,7 +287,7 @@ static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, si
     }
     for (size_t i = 0; i < h->n; i++) {
         grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
-        part->entries[part->num_entries++].hp = (uint32_t)i;
+        part->hp[part->num_entries++] = (uint32_t)i;
     }
     return 0;
 }
@@ -294,11 +298,9 @@ static void fill_entries(grid_t *g, const hitpoints_t *h)
     for (int p = 0; p < g->num_parts; p++) {
         grid_part_t *part = &g->parts[p];
         for (size_t k = 0; k < part->num_entries; k++) {
-            grid_entry_t *e = &part->entries[k];
-            const hp_hot_t *hp = &h->hot[e->hp];
-            e->px = hp->px; e->py = hp->py; e->pz = hp->pz;
-            e->nx = hp->nx; e->ny = hp->ny; e->nz = hp->nz;
-            e->pad = 0;
+            const hp_hot_t *hp = &h->hot[part->hp[k]];
+            part->px[k] = hp->px; part->py[k] = hp->py; part->pz[k] = hp->pz;
+            part->nx[k] = hp->nx; part->ny[k] = hp->ny; part->nz[k] = hp->nz;
         }
     }
 }
@@ -333,7 +335,7 @@ void grid_free(grid_t *g)
         if (g->kind == GRID_CELLS && g->num_parts > 0) free(g->parts[0].keys);
         for (int p = 0; p < g->num_parts; p++) {
             free(g->parts[p].start);
-            free(g->parts[p].entries);
+            free(g->parts[p].px);
         }
     }
     free(g->parts);

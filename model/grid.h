@@ -25,21 +25,24 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 #define GRID_CELL_FACTOR 2.0
 #define GRID_NO_BUCKET ((uint32_t)0xFFFFFFFFu)
 
-/* One candidate: a copy of the hit point's geometry, so that scanning a bucket reads memory
- * in sequence; the changing radius stays in the hit points' compact r2 array. */
+/* A part's entries (candidates) as arrays: entry k is a copy of hit point hp[k]'s geometry, so
+ * that scanning a bucket reads memory in sequence (and in SIMD lanes); the changing radius stays
+ * in the hit points' compact r2 array. One allocation, based at px. */
 typedef struct {
-    double px, py, pz;   /* position */
-    double nx, ny, nz;   /* outward normal */
-    uint32_t hp;         /* hit-point index */
-    uint32_t pad;
-} grid_entry_t;
-
-typedef struct {
-    uint32_t *start;       /* bucket b's entries are entries[start[b] .. start[b+1]) */
-    grid_entry_t *entries;
+    uint32_t *start;       /* bucket b's entries are [start[b] .. start[b+1]) */
+    double *px, *py, *pz;  /* position */
+    double *nx, *ny, *nz;  /* outward normal */
+    uint32_t *hp;          /* hit-point index */
     uint64_t *keys;        /* GRID_CELLS: packed cell key per bucket (open addressing) */
     size_t num_entries;
 } grid_part_t;
+
+/* One bucket's candidates in one part: count entries from each pointer. */
+typedef struct {
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    const uint32_t *hp;
+    size_t count;
+} grid_cands_t;
 
 typedef struct {
     grid_kind_t kind;
@@ -79,13 +82,14 @@ void grid_free(grid_t *g);
  * can be near x (GRID_CELLS only: an empty cell). */
 uint32_t grid_bucket(const grid_t *g, vec3 x);
 
-/* Part p's candidates in bucket b (not GRID_NO_BUCKET): *count entries, NULL when none. */
-static inline const grid_entry_t *grid_bucket_entries(const grid_t *g, int p, uint32_t b, size_t *count)
+/* Part p's candidates in bucket b (not GRID_NO_BUCKET). */
+static inline grid_cands_t grid_bucket_cands(const grid_t *g, int p, uint32_t b)
 {
     const grid_part_t *part = &g->parts[p];
-    *count = part->start[b + 1] - part->start[b];
-    return *count ? part->entries + part->start[b] : NULL;
+    const size_t k = part->start[b];
+    grid_cands_t c = {part->px + k, part->py + k, part->pz + k, part->nx + k, part->ny + k, part->nz + k,
+                      part->hp + k, part->start[b + 1] - k};
+    return c;
 }
-
 
 #endif

@@ -9,22 +9,21 @@
 
 /* Double mode: the reference program's tests, normal first, then distance. */
 static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
-                        const grid_entry_t *cand, size_t count, update_stats_t *s)
+                        const grid_cands_t *e, update_stats_t *s)
 {
     const double rs2 = g->r_safe * g->r_safe;
     const double x = ph->x.x, y = ph->x.y, z = ph->x.z;
     const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
-    for (size_t c = 0; c < count; c++) {
-        const grid_entry_t *e = &cand[c];
-        if (c + RADIUS_AHEAD < count) __builtin_prefetch(&h->r2[cand[c + RADIUS_AHEAD].hp]);
-        double vx = e->px - x, vy = e->py - y, vz = e->pz - z;
+    for (size_t c = 0; c < e->count; c++) {
+        if (c + RADIUS_AHEAD < e->count) __builtin_prefetch(&h->r2[e->hp[c + RADIUS_AHEAD]]);
+        double vx = e->px[c] - x, vy = e->py[c] - y, vz = e->pz[c] - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         /* Radii only shrink: a candidate beyond the safe initial radius never accepts. */
         if (skip_radius && v2 > rs2) { s->skipped_radius++; continue; }
-        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
-        if (v2 <= h->r2[e->hp]) {
-            update_accept_double(h, e->hp, ph->flux);
+        if (v2 <= h->r2[e->hp[c]]) {
+            update_accept_double(h, e->hp[c], ph->flux);
             s->accepted++;
         }
     }
@@ -34,8 +33,9 @@ static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const
  * distance test reads the entry's position rounded to binary32 (= the PREU's stored
  * position) and the compact copy of the PREU's r2, as preu_update_inline does. */
 static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
-                      const grid_entry_t *cand, size_t count, update_stats_t *s, update_sink_t *sink)
+                      const grid_cands_t *e, update_stats_t *s, update_sink_t *sink)
 {
+    const size_t count = e->count;
     size_t streamed = 0;
     if (sink && sink->cap < count) {
         uint32_t *b = realloc(sink->buf, count * sizeof *b);
@@ -48,19 +48,19 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
     const float fx = fp32_from_bits(ph32.pos[0]), fy = fp32_from_bits(ph32.pos[1]), fz = fp32_from_bits(ph32.pos[2]);
     const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
     for (size_t c = 0; c < count; c++) {
-        const grid_entry_t *e = &cand[c];
         if (skip_radius) {
-            double vx = e->px - ph->x.x, vy = e->py - ph->x.y, vz = e->pz - ph->x.z;
+            double vx = e->px[c] - ph->x.x, vy = e->py[c] - ph->x.y, vz = e->pz[c] - ph->x.z;
             if (vx * vx + vy * vy + vz * vz > rs2) { s->skipped_radius++; continue; }
         }
-        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
-        if (sink) sink->buf[streamed++] = sink->addr ? sink->addr[e->hp] : e->hp;
-        float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
+        const uint32_t hp = e->hp[c];
+        if (sink) sink->buf[streamed++] = sink->addr ? sink->addr[hp] : hp;
+        float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
-        if (!(d2 <= fp32_from_bits(h->r2_f32[e->hp]))) continue;
-        preu_update_accepted(&h->fp32[e->hp], &ph32);
-        h->r2_f32[e->hp] = h->fp32[e->hp].r2;
+        if (!(d2 <= fp32_from_bits(h->r2_f32[hp]))) continue;
+        preu_update_accepted(&h->fp32[hp], &ph32);
+        h->r2_f32[hp] = h->fp32[hp].r2;
         s->accepted++;
     }
     if (sink && !sink->failed && sink->fn(sink->user, ph, &ph32, sink->buf, streamed)) sink->failed = 1;
@@ -70,21 +70,23 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
  * radii prefetched: the loop is bound by memory latency, not arithmetic. */
 #define LOOKAHEAD 8
 
-typedef struct { const grid_entry_t *cand; size_t count; } lookup_t;
+typedef grid_cands_t lookup_t;
 
 static inline lookup_t lookup(const grid_t *g, int p, const photon_hit_t *ph)
 {
-    lookup_t l = {NULL, 0};
-    if (ph->bucket != GRID_NO_BUCKET) l.cand = grid_bucket_entries(g, p, ph->bucket, &l.count);
-    return l;
+    if (ph->bucket != GRID_NO_BUCKET) return grid_bucket_cands(g, p, ph->bucket);
+    lookup_t none = {0};
+    return none;
 }
 
 static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const lookup_t *l)
 {
-    for (size_t c = 0; c < l->count && c < 4; c++) {
-        __builtin_prefetch(&l->cand[c]);
-        if (prec == PRECISION_DOUBLE) __builtin_prefetch(&h->r2[l->cand[c].hp]);
-    }
+    if (!l->count) return;
+    __builtin_prefetch(l->px);
+    __builtin_prefetch(l->nx);
+    __builtin_prefetch(l->hp);
+    for (size_t c = 0; c < l->count && c < 4; c++)
+        if (prec == PRECISION_DOUBLE) __builtin_prefetch(&h->r2[l->hp[c]]);
 }
 
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
@@ -94,7 +96,7 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
     lookup_t ring[LOOKAHEAD];
     for (size_t k = 0; k < n && k < LOOKAHEAD; k++) {
         ring[k] = lookup(g, p, &hits[k]);
-        if (ring[k].count) __builtin_prefetch(ring[k].cand);
+        if (ring[k].count) __builtin_prefetch(ring[k].px);
     }
     for (size_t k = 0; k < n; k++) {
         lookup_t cur = ring[k % LOOKAHEAD];
@@ -103,11 +105,9 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
             *next = lookup(g, p, &hits[k + LOOKAHEAD]);
             prefetch_lookup(h, prec, next);
         }
-        const grid_entry_t *cand = cur.cand;
-        size_t count = cur.count;
-        s.candidates += count;
-        if (prec == PRECISION_DOUBLE) { if (count) scan_double(h, g, p, skip_radius, &hits[k], cand, count, &s); }
-        else scan_fp32(h, g, p, skip_radius, &hits[k], cand, count, &s, sink);
+        s.candidates += cur.count;
+        if (prec == PRECISION_DOUBLE) { if (cur.count) scan_double(h, g, p, skip_radius, &hits[k], &cur, &s); }
+        else scan_fp32(h, g, p, skip_radius, &hits[k], &cur, &s, sink);
     }
     *st = s;
 }

@@ -9,6 +9,7 @@
  * Phase 2 (apply) replays the kept candidates in photon order against the current radius, with
  * the same distance value the photon-major scan computes, so every hit point receives the same
  * updates in the same order: the result is identical to the bit (tests/checks/engine_scan_order.sh). */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include "update_batch.h"
@@ -97,44 +98,88 @@ static int keep(update_scratch_t *s, uint32_t hit, uint32_t hp, double v2)
     return 0;
 }
 
-/* Phase 1 for one hit against its bucket's entries (double mode). */
+/* Phase 1 for one hit against its bucket's entries (double mode), entries [c0, count). */
 static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                         const grid_entry_t *cand, size_t count, update_stats_t *st, update_scratch_t *s)
+                         const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s)
 {
     const double x = ph->x, y = ph->y, z = ph->z;
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
-    const uint32_t hit = ph->hit;
-    for (size_t c = 0; c < count; c++) {
-        const grid_entry_t *e = &cand[c];
-        double vx = e->px - x, vy = e->py - y, vz = e->pz - z;
+    for (size_t c = c0; c < e->count; c++) {
+        double vx = e->px[c] - x, vy = e->py[c] - y, vz = e->pz[c] - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         if (skip_radius && v2 > rs2) { st->skipped_radius++; continue; }
-        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         st->normal_passed++;
-        if (v2 <= h->r2[e->hp] && keep(s, hit, e->hp, v2)) return -1;
+        if (v2 <= h->r2[e->hp[c]] && keep(s, ph->hit, e->hp[c], v2)) return -1;
     }
     return 0;
 }
 
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAVE_SCREEN_AVX2 1
+/* The same tests four entries at a time. Every lane computes the scalar expressions with the
+ * same operations in the same order (separate IEEE multiplies and adds, no fused ones), and the
+ * ordered comparisons are false for NaN exactly like the scalar ones; kept candidates come out
+ * in entry order. */
+__attribute__((target("avx2,popcnt")))
+static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
+                              const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
+{
+    const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
+    const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
+    const __m256d far_lim = _mm256_set1_pd(skip_radius ? rs2 : INFINITY);
+    const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
+    unsigned long long skipped = 0, passed = 0;
+    size_t c = 0;
+    for (; c + 4 <= e->count; c += 4) {
+        __m256d vx = _mm256_sub_pd(_mm256_loadu_pd(e->px + c), x);
+        __m256d vy = _mm256_sub_pd(_mm256_loadu_pd(e->py + c), y);
+        __m256d vz = _mm256_sub_pd(_mm256_loadu_pd(e->pz + c), z);
+        __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(vz, vz));
+        __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
+                                                  _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
+                                    _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
+        __m256d far = _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ);
+        __m256d pass = _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ));
+        const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
+        skipped += (unsigned)__builtin_popcount((unsigned)mf);
+        passed += (unsigned)__builtin_popcount((unsigned)mp);
+        if (!mp) continue;
+        __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
+        __m256d r2 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), h->r2, idx, pass, 8);
+        int ma = _mm256_movemask_pd(_mm256_and_pd(pass, _mm256_cmp_pd(v2, r2, _CMP_LE_OQ)));
+        if (!ma) continue;
+        double v2s[4];
+        _mm256_storeu_pd(v2s, v2);
+        for (; ma; ma &= ma - 1) {
+            const int l = __builtin_ctz((unsigned)ma);
+            if (keep(s, ph->hit, e->hp[c + l], v2s[l])) return -1;
+        }
+    }
+    st->skipped_radius += skipped;
+    st->normal_passed += passed;
+    return screen_double(h, rs2, skip_radius, ph, e, c, st, s);
+}
+#endif
+
 /* Phase 1 for one hit (fp32 mode): the host's tests in double, the PREU's distance in binary32
  * (the same expressions as update.c's photon-major scan). */
 static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_entry_t *cand, size_t count, update_stats_t *st, update_scratch_t *s)
+                       const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
 {
     const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
-    const uint32_t hit = ph->hit;
-    for (size_t c = 0; c < count; c++) {
-        const grid_entry_t *e = &cand[c];
+    for (size_t c = 0; c < e->count; c++) {
         if (skip_radius) {
-            double vx = e->px - ph->x, vy = e->py - ph->y, vz = e->pz - ph->z;
+            double vx = e->px[c] - ph->x, vy = e->py[c] - ph->y, vz = e->pz[c] - ph->z;
             if (vx * vx + vy * vy + vz * vz > rs2) { st->skipped_radius++; continue; }
         }
-        if (!(e->nx * nx + e->ny * ny + e->nz * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         st->normal_passed++;
-        float dx = (float)e->px - fx, dy = (float)e->py - fy, dz = (float)e->pz - fz;
+        float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
-        if (d2 <= fp32_from_bits(h->r2_f32[e->hp]) && keep(s, hit, e->hp, d2)) return -1;
+        if (d2 <= fp32_from_bits(h->r2_f32[e->hp[c]]) && keep(s, ph->hit, e->hp[c], d2)) return -1;
     }
     return 0;
 }
@@ -162,17 +207,23 @@ int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, 
     s->n_kept = 0;
     /* Phase 1: bucket by bucket. */
     const batch_hit_t *sh = b->sorted;
+#ifdef HAVE_SCREEN_AVX2
+    const int avx2 = !getenv("PREE_NO_AVX2") && __builtin_cpu_supports("avx2");
+#endif
     for (size_t i = 0; i < b->n_keyed;) {
         const uint32_t bucket = sh[i].bucket;
         size_t end = i + 1;
         while (end < b->n_keyed && sh[end].bucket == bucket) end++;
-        size_t count;
-        const grid_entry_t *cand = grid_bucket_entries(g, p, bucket, &count);
-        t.candidates += count * (end - i);
-        if (count) {
+        const grid_cands_t cand = grid_bucket_cands(g, p, bucket);
+        t.candidates += cand.count * (end - i);
+        if (cand.count) {
             for (size_t j = i; j < end; j++) {
-                int rc = prec == PRECISION_DOUBLE ? screen_double(h, rs2, skip_radius, &sh[j], cand, count, &t, s)
-                                                  : screen_fp32(h, rs2, skip_radius, &sh[j], cand, count, &t, s);
+                int rc;
+                if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, &t, s);
+#ifdef HAVE_SCREEN_AVX2
+                else if (avx2) rc = screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s);
+#endif
+                else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s);
                 if (rc) return -1;
             }
         }

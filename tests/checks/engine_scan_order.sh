@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The bucket-major update (--scan bucket, the default: model/update_batch.c) against the
 # photon-major oracle (--scan photon): the same image bits, final hit-point state and counts,
-# for every grid, both precisions, 1 and 2 threads, and a triangle-mesh scene with glass.
+# for every grid, both precisions, 1 and 2 threads, with and without the AVX2 screening
+# (PREE_NO_AVX2=1), and a triangle-mesh scene with glass.
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 hashes() { echo "$(json "$1" image_hash)/$(json "$1" state_hash)/$(json "$1" hpuo_candidates)/$(json "$1" hpuo_normal_passed)/$(json "$1" hpuo_accepted)"; }
@@ -18,6 +19,10 @@ for scene in cornell3 cornell-water; do
             --scan bucket --out "$TMP/b.ppm" --stats "$TMP/b.json" --quiet
         expect_eq "$scene $prec $grid threads=$t bucket = photon" "$(hashes "$TMP/b.json")" "$ref"
       done
+      # The scalar screening (what runs without AVX2) against the same oracle.
+      run env PREE_NO_AVX2=1 "$PREE" render "$ROOT/scenes/$scene" $size --precision $prec --grid $grid \
+          --threads 2 --scan bucket --out "$TMP/s.ppm" --stats "$TMP/s.json" --quiet
+      expect_eq "$scene $prec $grid scalar bucket = photon" "$(hashes "$TMP/s.json")" "$ref"
     done
   done
 done
