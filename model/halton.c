@@ -8,18 +8,28 @@ static const int halton_primes[HALTON_DIMENSIONS] = {
     137, 139, 149, 151, 157, 163, 167, 173, 179, 181, 191, 193, 197, 199, 211, 223,
     227, 229, 233, 239, 241, 251, 257, 263, 269, 271, 277, 281, 283};
 
+/* k / p for k < 2^32 as the high half of k * (floor(2^64 / p) + 1): the product exceeds
+ * 2^64 k / p by less than k / 2^64 < 2^-32, and the fractional part of k / p is at most
+ * 1 - 1/p with p < 2^9, so the floor is exact. */
+static inline uint32_t div_prime(uint32_t k, uint64_t magic)
+{
+    return (uint32_t)(((unsigned __int128)k * magic) >> 64);
+}
+
 double halton(int b, long long j)
 {
     const int p = halton_primes[b];
     const double f = 1.0 / (double)p;
     double h = 0.0, fct = f;
     if (j >= 0 && j <= 0xFFFFFFFFll) {
-        /* The same digits with 32-bit division, several times faster than 64-bit. */
-        uint32_t k = (uint32_t)j, up = (uint32_t)p;
+        /* The same digits without a division instruction. */
+        const uint32_t up = (uint32_t)p;
+        const uint64_t magic = UINT64_MAX / up + 1;
+        uint32_t k = (uint32_t)j;
         while (k > 0) {
-            uint32_t digit = k % up;
+            uint32_t q = div_prime(k, magic), digit = k - q * up;
             h += (double)(digit == 0 ? 0 : up - digit) * fct;
-            k /= up;
+            k = q;
             fct *= f;
         }
         return h;
