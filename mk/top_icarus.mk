@@ -43,21 +43,27 @@ TOPIV_CFG_p4_abank   := p4
 TOPIV_ARG_p4_abank   := --scenario random --photons 30 --hp 200 --place random --seed 5
 TOPIV_PLUS_p4_abank  := +gap=0 +seed=5
 TOPIV_CFG_p8_random  := p8
-TOPIV_ARG_p8_random  := --scenario random --photons 24 --hp 300 --seed 6
+TOPIV_ARG_p8_random  := --scenario random --photons 16 --hp 200 --seed 6
 TOPIV_PLUS_p8_random := +gap=20 +seed=6
 TOPIV_CFG_p8_dense   := p8
-TOPIV_ARG_p8_dense   := --scenario dense --photons 12 --hp 320 --seed 7
+TOPIV_ARG_p8_dense   := --scenario dense --photons 8 --hp 240 --seed 7
 TOPIV_PLUS_p8_dense  := +gap=10 +seed=7
 TOPIV_CFG_p16_random := p16
-TOPIV_ARG_p16_random := --scenario random --photons 10 --hp 300 --seed 8
+TOPIV_ARG_p16_random := --scenario random --photons 10 --hp 160 --seed 8
 TOPIV_PLUS_p16_random := +gap=20 +seed=8
 
 # Mutants: name, sed expression on rtl/pree_top.v, the run that must catch it.
-TOPIV_MUTANTS := nohaz nodup
-TOPIV_SED_nohaz := s/b_haz\[l\] = 1'b1;/b_haz[l] = 1'b0;/
-TOPIV_RUN_nohaz := p4_one
-TOPIV_SED_nodup := s/b_dup\[l\] = 1'b1;/b_dup[l] = 1'b0;/
-TOPIV_RUN_nodup := p4_one
+TOPIV_MUTANTS := nohaz nodup noaconf nobconf winrad
+TOPIV_SED_nohaz   := s/b_haz\[l\] = 1'b1;/b_haz[l] = 1'b0;/
+TOPIV_RUN_nohaz   := p4_one
+TOPIV_SED_nodup   := s/b_dup\[l\] = 1'b1;/b_dup[l] = 1'b0;/
+TOPIV_RUN_nodup   := p4_one
+TOPIV_SED_noaconf := s/a_conf\[l\] = 1'b1;/a_conf[l] = 1'b0;/
+TOPIV_RUN_noaconf := p4_abank
+TOPIV_SED_nobconf := s/b_bcf\[l\] = 1'b1;/b_bcf[l] = 1'b0;/
+TOPIV_RUN_nobconf := p4_random
+TOPIV_SED_winrad  := s/WIN_RAD   = 3;/WIN_RAD   = 2;/
+TOPIV_RUN_winrad  := p4_dense
 
 TOPIV_VVPS    := $(TOPIV_CFGS:%=$(TOPIV_DIR)/top_tb_%.vvp)
 TOPIV_VECS    := $(TOPIV_RUNS:%=$(TOPIV_DIR)/%.meta)

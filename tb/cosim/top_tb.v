@@ -74,7 +74,7 @@ module top_tb;
     .px_rdata_o(px_rdata), .cnt_o(cnt));
 
   integer nhp, npix, nph, nent, nops, seed, gap, i, j, cyc, errors, hp_err, px_err;
-  integer e_head, p_head, e_lim, upd_cycles;
+  integer e_head, p_head, e_lim, upd_cycles, held;
   reg     stop, take;
   reg [NumPreu-1:0] used;
   reg [95:0]  ent;
@@ -158,7 +158,7 @@ module top_tb;
 
     // 2. Update pass: index entries and photons.
     cnt_en = 1'b1;
-    e_head = 0; p_head = 0; cyc = 0;
+    e_head = 0; p_head = 0; cyc = 0; held = 0;
     while (p_head < nph) begin
       // Index writes: entries in order, in distinct banks, once their old photons are done;
       // sometimes fewer than NumPreu on purpose.
@@ -176,6 +176,7 @@ module top_tb;
             idx_data[j*HpAW +: HpAW] = ent[0 +: HpAW];
             e_head = e_head + 1;
           end else begin
+            if (ent[95:64] > photons_done) held = held + 1;
             stop = 1'b1;
           end
         end
@@ -259,8 +260,8 @@ module top_tb;
       errors = errors + 1;
     end
     errors = errors + hp_err + px_err;
-    $display("top_tb preu=%0d hp=%0d photons=%0d ops=%0d: update %0d cycles (util %0d%%; short cycles haz %0d dup %0d bank %0d abank %0d starve %0d), radiance %0d cycles (haz %0d dup %0d bank %0d abank %0d starve %0d); mismatches: hit points %0d, pixels %0d",
-             NumPreu, nhp, nph, nops, upd_cycles, upd_cycles ? ops_upd * 100 / (NumPreu * upd_cycles) : 0,
+    $display("top_tb preu=%0d hp=%0d photons=%0d ops=%0d (index writes held for photons_done: %0d cycles): update %0d cycles (util %0d%%; short cycles haz %0d dup %0d bank %0d abank %0d starve %0d), radiance %0d cycles (haz %0d dup %0d bank %0d abank %0d starve %0d); mismatches: hit points %0d, pixels %0d",
+             NumPreu, nhp, nph, nops, held, upd_cycles, upd_cycles ? ops_upd * 100 / (NumPreu * upd_cycles) : 0,
              cnt_upd[2*48 +: 48], cnt_upd[3*48 +: 48], cnt_upd[4*48 +: 48], cnt_upd[5*48 +: 48],
              cnt_upd[6*48 +: 48], rad_count(1), rad_count(2), rad_count(3), rad_count(4), rad_count(5),
              rad_count(6), hp_err, px_err);
