@@ -3,12 +3,17 @@
  * applied in photon order; the expected pixels from the same model in the radiance issue order
  * of model/adiso_order.h. Compares every word and prints the first mismatches.
  *
- * usage: top_bench [--preu 4|8|16] [--scenario random|one|dense|mixed] [--photons N]
+ * usage: top_bench [--preu 4|8|16] [--scenario random|one|dense|mixed|abank] [--photons N]
  *                  [--hp N] [--gap P] [--no-reorder] [--seed S] [--trace FILE.fst]
  *   random  photons with 1..40 random distinct candidates among --hp hit points
  *   one     every photon hits hit point 0 (and nothing else): in-flight hazards every cycle
  *   dense   few pixels with dozens of hit points each, photons on small neighbourhoods
  *   mixed   random, with every fourth photon also on hit point 0
+ *   abank   random, streamed by this file's own host (misplaced_stream) with the index entries
+ *           misplaced on purpose: 0..2P-1 entries of random padding between photons instead of
+ *           the driver's p_k = p_(k-1) - N^P_k (mod P), so that an offer spanning two photons
+ *           reads one index bank twice (stage-A bank conflicts in update mode). The results
+ *           must stay bit-exact and the abank counter must be non-zero.
  * Exit status 0 when every word matches, 1 on a mismatch, 2 on a usage error. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -24,6 +29,104 @@ static uint32_t rnd(void)
 }
 static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(rnd() & 0xffffff) / 16777216.0f; }
 static uint32_t fb(float x) { return fp32_to_bits(x); }
+
+#define MAX_CAND 64
+#define IDX_DEPTH (1u << COSIM_IDXAW)
+
+/* The abank scenario's photon stream: index entries in write order, each with the count of
+ * photons that must be done (photons_done_o) before it overwrites their entries, and photons
+ * with the end of their entries in that order. */
+typedef struct {
+    uint32_t *e_addr, *e_hp, *e_need;
+    size_t ne;
+    preu_photon_t *ph;
+    uint32_t *p_addr, *p_n;
+    size_t *p_eend;
+    uint64_t *p_start;          /* absolute index-table position of each photon's first entry */
+    size_t nph, oldest;
+    uint64_t alloc_end;
+} mis_stream_t;
+
+static int mis_init(mis_stream_t *m, size_t photons)
+{
+    memset(m, 0, sizeof *m);
+    size_t pe = photons ? photons : 1, ee = pe * MAX_CAND;
+    m->e_addr = malloc(ee * sizeof *m->e_addr);
+    m->e_hp = malloc(ee * sizeof *m->e_hp);
+    m->e_need = malloc(ee * sizeof *m->e_need);
+    m->ph = malloc(pe * sizeof *m->ph);
+    m->p_addr = malloc(pe * sizeof *m->p_addr);
+    m->p_n = malloc(pe * sizeof *m->p_n);
+    m->p_eend = malloc(pe * sizeof *m->p_eend);
+    m->p_start = malloc(pe * sizeof *m->p_start);
+    return m->e_addr && m->e_hp && m->e_need && m->ph && m->p_addr && m->p_n && m->p_eend && m->p_start ? 0 : -1;
+}
+
+static void mis_free(mis_stream_t *m)
+{
+    free(m->e_addr); free(m->e_hp); free(m->e_need); free(m->ph);
+    free(m->p_addr); free(m->p_n); free(m->p_eend); free(m->p_start);
+}
+
+/* Place one photon at a random padding of 0..2P-1 entries after the previous one. */
+static void mis_add(mis_stream_t *m, int preu, const preu_photon_t *ph, const uint32_t *cand, size_t n)
+{
+    if (n == 0) return;   /* dropped by the PREE anyway: not sent */
+    uint64_t p = m->alloc_end + rnd() % (2u * (uint32_t)preu);
+    /* Entries p .. p+n-1 overwrite those of every photon that starts before p + n - depth. */
+    while (m->oldest < m->nph && m->p_start[m->oldest] + IDX_DEPTH < p + n) m->oldest++;
+    for (size_t k = 0; k < n; k++) {   /* the k-th operation reads entry p + n - 1 - k */
+        m->e_addr[m->ne] = (uint32_t)((p + n - 1 - k) & (IDX_DEPTH - 1));
+        m->e_hp[m->ne] = cand[k];
+        m->e_need[m->ne] = (uint32_t)m->oldest;
+        m->ne++;
+    }
+    m->ph[m->nph] = *ph;
+    m->p_addr[m->nph] = (uint32_t)(p & (IDX_DEPTH - 1));
+    m->p_n[m->nph] = (uint32_t)n;
+    m->p_eend[m->nph] = m->ne;
+    m->p_start[m->nph] = p;
+    m->nph++;
+    m->alloc_end = p + n;
+}
+
+/* Stream it into the RTL (docs/pree_top.md, "Host protocol"): each cycle up to P entries in
+ * order, in distinct banks, once their photons_done condition holds; the head photon once its
+ * entries are written, except in random gaps. Leaves the photon input idle afterwards. */
+static int misplaced_stream(cosim_rtl_t *rtl, const mis_stream_t *m, int preu, double gap)
+{
+    cosim_in_t *in = cosim_rtl_in(rtl);
+    size_t e = 0, p = 0;
+    uint64_t guard = 0;
+    int ready = cosim_rtl_ph_ready(rtl);
+    in->cnt_en = 1;
+    while (p < m->nph) {
+        uint32_t done = cosim_rtl_photons_done(rtl), used = 0;
+        int nw = 0;
+        while (nw < preu && e < m->ne && m->e_need[e] <= done && !(used & 1u << (m->e_addr[e] % (uint32_t)preu))) {
+            used |= 1u << (m->e_addr[e] % (uint32_t)preu);
+            in->idx_we[nw] = 1;
+            in->idx_addr[nw] = m->e_addr[e];
+            in->idx_data[nw] = m->e_hp[e];
+            nw++;
+            e++;
+        }
+        for (int j = nw; j < preu; j++) in->idx_we[j] = 0;
+        in->ph_valid = m->p_eend[p] <= e && !(gap > 0 && (double)rnd() / 2147483648.0 < gap);
+        memcpy(in->ph_pos, m->ph[p].pos, sizeof in->ph_pos);
+        memcpy(in->ph_phi, m->ph[p].phi, sizeof in->ph_phi);
+        in->ph_paddr = m->p_addr[p];
+        in->ph_n = m->p_n[p];
+        int take = in->ph_valid && ready;   /* ph_ready_o depends on the state only */
+        cosim_rtl_tick(rtl);
+        ready = cosim_rtl_ph_ready(rtl);
+        if (take) p++;
+        if (++guard > 100000000ull) return -1;
+    }
+    in->ph_valid = 0;
+    for (int j = 0; j < preu; j++) in->idx_we[j] = 0;
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -46,9 +149,11 @@ int main(int argc, char **argv)
         else { fprintf(stderr, "top_bench: unknown option %s\n", o); return 2; }
     }
     int one = !strcmp(scenario, "one"), dense = !strcmp(scenario, "dense"), mixed = !strcmp(scenario, "mixed");
-    if (!one && !dense && !mixed && strcmp(scenario, "random")) { fprintf(stderr, "top_bench: unknown scenario %s\n", scenario); return 2; }
+    int abank = !strcmp(scenario, "abank");
+    if (!one && !dense && !mixed && !abank && strcmp(scenario, "random")) { fprintf(stderr, "top_bench: unknown scenario %s\n", scenario); return 2; }
     if (nhp < 1 || nhp > (1 << COSIM_HPAW) || photons < 0) { fprintf(stderr, "top_bench: bad sizes\n"); return 2; }
     rng_state = seed * 0x9E3779B97F4A7C15ull + 7;
+    if (abank) reorder = 0;   /* its own host streams the candidates as drawn */
 
     char err[256];
     cosim_rtl_t *rtl = cosim_rtl_new(preu, trace, err, sizeof err);
@@ -61,7 +166,9 @@ int main(int argc, char **argv)
     const int npix = (nhp + per_px - 1) / per_px;
     preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp), *init = calloc((size_t)nhp, sizeof *init);
     int32_t *pixel = calloc((size_t)nhp, sizeof *pixel);
-    uint32_t *cand = malloc(64 * sizeof *cand);
+    uint32_t *cand = malloc(MAX_CAND * sizeof *cand);
+    mis_stream_t mis;
+    if (abank && mis_init(&mis, (size_t)photons)) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
     for (int i = 0; i < nhp; i++) {
         for (int c = 0; c < 3; c++) {
             hp[i].pos[c] = fb(frand(0, 1));
@@ -99,7 +206,13 @@ int main(int argc, char **argv)
             }
         }
         for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph);
-        if (cosim_drv_photon(drv, &ph, cand, n)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
+        if (abank) mis_add(&mis, preu, &ph, cand, n);
+        else if (cosim_drv_photon(drv, &ph, cand, n)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
+    }
+    uint64_t sent = cosim_drv_ops_sent(drv);
+    if (abank) {
+        if (misplaced_stream(rtl, &mis, preu, gap)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
+        sent = mis.ne;
     }
     if (cosim_drv_drain(drv)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
     uint64_t cnt[COSIM_NCNT];
@@ -136,9 +249,13 @@ int main(int argc, char **argv)
     uint64_t ops = 0, rops = 0;
     for (int l = 0; l < preu; l++) { ops += cnt[CNT_OPS0 + l]; rops += cnt2[CNT_OPS0 + l]; }
     rops -= ops;
-    if (ops != cosim_drv_ops_sent(drv) || rops != (uint64_t)nhp) {
+    if (ops != sent || rops != (uint64_t)nhp) {
         printf("MISMATCH operation counts: update %llu (sent %llu), radiance %llu (hit points %d)\n",
-               (unsigned long long)ops, (unsigned long long)cosim_drv_ops_sent(drv), (unsigned long long)rops, nhp);
+               (unsigned long long)ops, (unsigned long long)sent, (unsigned long long)rops, nhp);
+        bad++;
+    }
+    if (abank && cnt[CNT_ABANK] == 0) {
+        printf("MISMATCH abank: misplaced index entries caused no stage-A bank conflict in update mode\n");
         bad++;
     }
     printf("top_bench preu=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
@@ -153,6 +270,7 @@ int main(int argc, char **argv)
            (unsigned long long)(cnt2[CNT_BANK] - cnt[CNT_BANK]), (unsigned long long)(cnt2[CNT_ABANK] - cnt[CNT_ABANK]),
            (unsigned long long)(cnt2[CNT_STARVE] - cnt[CNT_STARVE]), bad ? "FAIL" : "PASS");
     free(order); free(Lm); free(Lr); free(hp); free(init); free(pixel); free(cand);
+    if (abank) mis_free(&mis);
     cosim_drv_free(drv);
     cosim_rtl_free(rtl);
     return bad ? 1 : 0;

@@ -2,10 +2,12 @@
 # level: quick
 # pree_top against the C model (build/cosim/top_bench): random traces, all photons on one hit
 # point, pixels with 40 hit points, idle gaps on the input, unordered candidates (bank
-# conflicts), a small hit-point set (radiance hazards); 4 PREUs here, 8 and 16 in `make sim`.
+# conflicts), a small hit-point set (radiance hazards), index entries misplaced on purpose (stage-A
+# bank conflicts in update mode; the bench also requires its abank counter to be non-zero);
+# 4 PREUs here, 8 and 16 in `make sim`.
 set -u
 cd "$(dirname "$0")/../.."
-bench=build/cosim/top_bench
+bench=${BUILD:-build}/cosim/top_bench
 fail=0
 run() {
   out=$("$bench" "$@" 2>&1); rc=$?
@@ -20,4 +22,6 @@ run --preu 4 --scenario dense --photons 300
 run --preu 4 --scenario dense --hp 100 --photons 60
 run --preu 4 --scenario mixed --photons 300 --gap 0.3
 run --preu 4 --scenario mixed --photons 300 --no-reorder
+run --preu 4 --scenario abank --photons 300
+run --preu 4 --scenario abank --photons 300 --gap 0.3 --seed 2
 exit $fail
