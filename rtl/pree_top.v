@@ -240,6 +240,7 @@ module pree_top #(
       reg                 re, we;
       reg [IDX_ROW_W-1:0] raddr, waddr;
       reg [HpAW-1:0]      wdata;
+      wire [HpAW-1:0]     rdata;
       integer j;
       always @* begin
         re = 1'b0; raddr = {IDX_ROW_W{1'b0}};
@@ -258,7 +259,8 @@ module pree_top #(
       end
       pree_ram_sdp #(.Width(HpAW), .AddrW(IDX_ROW_W)) u_ram (
         .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(idx_rd[gb]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(rdata));
+      assign idx_rd[gb] = rdata;
     end
   endgenerate
 
@@ -286,6 +288,8 @@ module pree_top #(
 
   // Bank outputs as arrays (one word per bank), read with narrow indices: each lane's selection
   // is a 2^HpBankW:1 (hit points), NumPreu:1 (index table) or 2^PxBankW:1 (pixels) multiplexer.
+  // RAM ports drive plain wires that are then assigned to the array words (Yosys re-derives,
+  // and renames, a module whose cell ports drive array words directly).
   wire [CONST_W-1:0] hpc_rd [0:HP_BANKS-1];
   wire [STATE_W-1:0] hps_rd [0:HP_BANKS-1];
   wire [95:0]        px_rd  [0:PX_BANKS-1];
@@ -490,12 +494,16 @@ module pree_top #(
       end
       wire [HP_ROW_W-1:0] waddr  = wb_hp_row[wl];
       wire [STATE_W-1:0]  wstate = wb_hp_state[wl];
+      wire [CONST_W-1:0]  rconst;
+      wire [STATE_W-1:0]  rstate;
       pree_ram_sdp #(.Width(CONST_W), .AddrW(HP_ROW_W)) u_const (
         .clk_i(clk_i), .we_i(wec), .waddr_i(waddr), .wdata_i(hp_wdata_i[STATE_W +: CONST_W]),
-        .re_i(re), .raddr_i(raddr), .rdata_o(hpc_rd[gb]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(rconst));
       pree_ram_sdp #(.Width(STATE_W), .AddrW(HP_ROW_W)) u_state (
         .clk_i(clk_i), .we_i(wes), .waddr_i(waddr), .wdata_i(wstate),
-        .re_i(re), .raddr_i(raddr), .rdata_o(hps_rd[gb]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(rstate));
+      assign hpc_rd[gb] = rconst;
+      assign hps_rd[gb] = rstate;
     end
   endgenerate
 
@@ -533,9 +541,11 @@ module pree_top #(
       end
       wire [PX_ROW_W-1:0] waddr = wb_px_row[wl];
       wire [95:0]         wdata = wb_px_sum[wl];
+      wire [95:0]         rdata;
       pree_ram_sdp #(.Width(96), .AddrW(PX_ROW_W)) u_ram (
         .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(px_rd[gb]));
+        .re_i(re), .raddr_i(raddr), .rdata_o(rdata));
+      assign px_rd[gb] = rdata;
     end
   endgenerate
 
