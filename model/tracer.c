@@ -5,13 +5,14 @@
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include "sphere_group.h"
 #include "tracer.h"
 
 /* Scenes with at most this many spheres keep them all in one Embree primitive whose callback
  * tests each in index order: with so few, the BVH culls little and every extra primitive
  * costs a callback. Larger sets get one primitive per sphere. The result is the same either
  * way: the closest hit is chosen by exact (t, index). */
-#define SPHERE_GROUP_MAX 16
 
 struct tracer {
     RTCDevice device;
@@ -19,6 +20,7 @@ struct tracer {
     const scene_t *src;
     unsigned sphere_geom;     /* Embree geometry id of the sphere set, or RTC_INVALID_GEOMETRY_ID */
     int spheres_per_prim;     /* num_spheres when grouped, else 1 */
+    sphere_group_t group;     /* the grouped spheres, tested together */
     unsigned *mesh_of_geom;   /* geometry id -> mesh index */
     unsigned num_geoms;
     double build_seconds;
@@ -76,8 +78,11 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
     const tracer_t *tr = args->geometryUserPtr;
     struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;   /* N == 1: rtcIntersect1 */
     const int first = (int)args->primID * tr->spheres_per_prim;
+    double tg[SPHERE_GROUP_MAX];
+    const int grouped = tr->spheres_per_prim > 1;
+    if (grouped) sphere_group_t_all(&tr->group, ctx->o, ctx->d, TRACER_EPSILON, tg);
     for (int id = first; id < first + tr->spheres_per_prim; id++) {
-        double t = sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
+        double t = grouped ? tg[id] : sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
         if (t == 0) continue;
         if (!(t < ctx->best_t || (t == ctx->best_t && id < ctx->best_sphere))) continue;
         /* A triangle already committed closer (float t) wins. */
@@ -85,7 +90,13 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
         ctx->best_t = t;
         ctx->best_sphere = id;
         float tf = (float)t;
-        if ((double)tf < t) tf = nextafterf(tf, FLT_MAX);
+        if ((double)tf < t && tf < FLT_MAX) {
+            /* The next float up (t > 0): nextafterf(tf, FLT_MAX) without the call. */
+            uint32_t bits;
+            memcpy(&bits, &tf, sizeof bits);
+            bits++;
+            memcpy(&tf, &bits, sizeof tf);
+        }
         rh->ray.tfar = tf;
         rh->hit.geomID = args->geomID;
         rh->hit.primID = args->primID;
@@ -111,6 +122,7 @@ static int add_spheres(tracer_t *tr, char *err, size_t errlen)
     if (!g) { snprintf(err, errlen, "embree: cannot create the sphere geometry"); return -1; }
     const int n = tr->src->num_spheres;
     tr->spheres_per_prim = n <= SPHERE_GROUP_MAX ? n : 1;
+    if (tr->spheres_per_prim > 1) sphere_group_init(&tr->group, tr->src->spheres, n);
     rtcSetGeometryUserPrimitiveCount(g, (unsigned)(n / tr->spheres_per_prim));
     rtcSetGeometryUserData(g, tr);
     rtcSetGeometryBoundsFunction(g, sphere_bounds, NULL);

@@ -1,0 +1,38 @@
+/* sphere_group.h: the reference program's ray-sphere test for a small set of spheres at once.
+ * Every sphere's t (or 0 for a miss) is computed with exactly the operations of the scalar test
+ * (sphere_group_t_scalar), in AVX2 lanes where the processor has them: the same bits. */
+#ifndef PREE_SPHERE_GROUP_H
+#define PREE_SPHERE_GROUP_H
+
+#include "scene.h"
+
+#define SPHERE_GROUP_MAX 16
+
+typedef struct {
+    int n;                                   /* spheres */
+    double cx[SPHERE_GROUP_MAX], cy[SPHERE_GROUP_MAX], cz[SPHERE_GROUP_MAX];
+    double rr[SPHERE_GROUP_MAX];             /* radius * radius; -inf pads to a multiple of 4 */
+    int avx2;                                /* use the AVX2 path */
+} sphere_group_t;
+
+/* Fill g from spheres[0..n), n <= SPHERE_GROUP_MAX. */
+void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n);
+
+/* t[i] for every sphere i of the group: the nearest intersection beyond eps, or 0. */
+void sphere_group_t_all(const sphere_group_t *g, vec3 o, vec3 d, double eps, double t[SPHERE_GROUP_MAX]);
+
+/* The scalar test for one sphere (centre c, squared radius rr). */
+static inline double sphere_group_t_scalar(double cx, double cy, double cz, double rr, vec3 o, vec3 d, double eps)
+{
+    const double opx = cx - o.x, opy = cy - o.y, opz = cz - o.z;
+    const double b = opx * d.x + opy * d.y + opz * d.z;
+    double det = b * b - (opx * opx + opy * opy + opz * opz) + rr;
+    if (det < 0) return 0;
+    det = sqrt(det);
+    double t = b - det;
+    if (t > eps) return t;
+    t = b + det;
+    return t > eps ? t : 0;
+}
+
+#endif
