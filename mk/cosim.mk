@@ -37,7 +37,8 @@ COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -I$(VERILATOR_ROOT_DIR)/include -I$(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
-COSIM_OBJS   := $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(COSIM_DIR)/cosim_main.o
+COSIM_OBJS   := $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(COSIM_DIR)/cosim_main.o \
+                $(COSIM_DIR)/cosim_sched.o $(COSIM_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Itb/cosim
 
@@ -75,8 +76,11 @@ $(COSIM_DIR)/%.o: tb/cosim/%.c tb/cosim/cosim_drv.h tb/cosim/cosim_rtl.h | $(DEP
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
-$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(LIBPREE)
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o \
+                $(COSIM_DIR)/cosim_sched.o $(COSIM_DIR)/cosim_shadow.o $(LIBPREE)
 	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
+# The host's photon scheduler (cosim_sched.h, cosim_shadow.h; cosim_drv.h includes the first).
+$(filter-out $(COSIM_DIR)/cosim_rtl.o,$(COSIM_OBJS)) $(COSIM_DIR)/top_bench.o: tb/cosim/cosim_sched.h tb/cosim/cosim_shadow.h
 
 # Simulation: the bench's traces, then the reduced co-simulation.
 COSIM_SMALL := scenes/cornell3 --width 64 --height 48 --photons 20000 --quiet

@@ -4,10 +4,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "cosim_sched.h"
 
 #define IDX_DEPTH (1u << COSIM_IDXAW)
 #define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
-#define PQ_CAP    64u                  /* queued photons (power of two) */
+#define PQ_CAP    128u                 /* queued photons (power of two) */
 #define AQ_CAP    (2u * IDX_DEPTH)     /* allocated, unretired photons (power of two) */
 #define MAX_CAND  (IDX_DEPTH / 2)      /* candidates of one photon */
 
@@ -35,7 +36,11 @@ struct cosim_drv {
     int recent[COSIM_MAX_PREU];        /* hit-point banks of the last NumPreu-1 operations */
     int nrecent;
     uint32_t *cand;                    /* reorder scratch */
+    cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
+    int started;                       /* a photon has been offered */
 };
+
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p);
 
 static uint64_t next_rand(cosim_drv_t *d)
 {
@@ -54,12 +59,19 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->opt = *opt;
     d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
     d->ready = cosim_rtl_ph_ready(rtl);
+    if (opt->schedule) {
+        cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
+                                 .reorder = opt->reorder, .window = opt->window};
+        d->sched = cosim_sched_new(&so, emit, d);
+        if (!d->sched) { cosim_drv_free(d); return NULL; }
+    }
     return d;
 }
 
 void cosim_drv_free(cosim_drv_t *d)
 {
     if (!d) return;
+    cosim_sched_free(d->sched);
     free(d->cand);
     free(d);
 }
@@ -97,7 +109,13 @@ static void pump(cosim_drv_t *d)
     if (d->pq_head != d->pq_tail) {
         const photon_entry_t *p = &d->pq[d->pq_head & (PQ_CAP - 1)];
         int gap = d->opt.gap > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.gap;
-        if (p->widx_end <= d->iq_head && !gap) {
+        /* Scheduled stream: the first photon waits until every queued entry is written, so that
+         * the load port (NumPreu entries a cycle, the RTL's rate at full utilization) starts
+         * with a lead and the RTL then takes each photon in the cycle the scheduler's model
+         * took it (a constant offset). */
+        int lead = !d->sched || d->started || d->iq_head == d->iq_tail;
+        if (p->widx_end <= d->iq_head && lead && !gap) {
+            d->started = 1;
             in->ph_valid = 1;
             memcpy(in->ph_pos, p->ph.pos, sizeof in->ph_pos);
             memcpy(in->ph_phi, p->ph.phi, sizeof in->ph_phi);
@@ -145,15 +163,11 @@ static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
     }
 }
 
-int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
+/* Place one photon (candidates in d->cand, in stream order) in the index table, queue its
+ * entries and itself, and clock the model while the queues are long. Returns its p. */
+static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
 {
-    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
-    if (n > MAX_CAND) {
-        snprintf(d->err, sizeof d->err, "a photon with %zu candidates (at most %u)", n, MAX_CAND);
-        return -1;
-    }
     const uint32_t np = (uint32_t)d->opt.preu;
-    reorder(d, hps, n);
     /* Place it: p = prev_p - n (mod NumPreu), at or after the end of the last photon. */
     uint64_t target = (d->prev_p + (uint64_t)np * MAX_CAND - n) % np;
     uint64_t p = d->alloc_end + (target + np - d->alloc_end % np) % np;
@@ -182,11 +196,48 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
     d->ops += n;
     d->in->cnt_en = 1;
     while (d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) pump(d);
+    return p;
+}
+
+/* The scheduler's way out: candidates already in their stream order. */
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p)
+{
+    cosim_drv_t *d = user;
+    memcpy(d->cand, hps, n * sizeof *hps);
+    *p = (uint32_t)(send(d, ph, n) & (IDX_DEPTH - 1));
+    return 0;
+}
+
+int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
+{
+    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
+    if (n > MAX_CAND) {
+        snprintf(d->err, sizeof d->err, "a photon with %zu candidates (at most %u)", n, MAX_CAND);
+        return -1;
+    }
+    if (d->sched) {
+        if (cosim_sched_add(d->sched, ph, hps, (uint32_t)n) == 0) return 0;
+        snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
+        return -1;
+    }
+    reorder(d, hps, n);
+    send(d, ph, n);
+    return 0;
+}
+
+int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
+{
+    if (!d->sched) return -1;
+    cosim_sched_stats(d->sched, st);
     return 0;
 }
 
 int cosim_drv_drain(cosim_drv_t *d)
 {
+    if (d->sched && cosim_sched_flush(d->sched)) {
+        snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
+        return -1;
+    }
     uint64_t guard = 0;
     while (d->pq_head != d->pq_tail || d->iq_head != d->iq_tail) {
         pump(d);

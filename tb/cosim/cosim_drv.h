@@ -9,11 +9,14 @@
  *   cosim_drv_photon(d, ph, hps, n)  queue one photon hit with its candidate hit points, in
  *                                 photon order; clocks the model as far as needed to keep the
  *                                 queues short. Returns 0, or -1 with a message in d->err.
+ *                                 With schedule set, the photon goes to the scheduler
+ *                                 (cosim_sched.h), which picks the stream order.
  *   cosim_drv_drain(d)            send everything queued and wait until the PREE is idle
  *   cosim_drv_read_hp(d, i, hp, pixel)  read hit point i back (one model cycle)
  *   cosim_drv_radiance(d, n_hit, ne, npix, L)  clear npix pixels, run the radiance pass over
  *                                 [0, n_hit) with N_emitted = ne, read the pixels into L
  *   cosim_drv_counters(d, cnt)    pree_top's counters now
+ *   cosim_drv_sched_stats(d, st)  the scheduler's figures (-1 when not scheduling)
  *
  * Index table use (docs/pree_top.md, "Host protocol"): photon k's N^P entries sit at
  * p_k .. p_k + N^P - 1 (mod 2^IdxAW), with p_k chosen so that the refs AFTSO-HpUOC emits are
@@ -28,11 +31,14 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "cosim_rtl.h"
+#include "cosim_sched.h"
 
 typedef struct {
     int preu;          /* PREUs of the model */
     int hp_bank_w;     /* log2 of its hit-point banks */
     int reorder;       /* 1: order each photon's candidates for distinct banks */
+    int schedule;      /* 1: photon order chosen by cosim_sched.h; 0: photon order */
+    int window;        /* the scheduler's pending photons */
     double gap;        /* probability of an idle cycle on the photon input (0: none) */
     uint64_t seed;     /* for the gaps */
 } cosim_drv_opts_t;
@@ -50,5 +56,6 @@ void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hp_t *hp, uint32_t *pixe
 void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);
 uint64_t cosim_drv_ops_sent(const cosim_drv_t *d);
+int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st);
 
 #endif

@@ -51,6 +51,9 @@ static void cosim_usage(FILE *f)
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
         "  --no-reference         skip the double render (no SSIM/SNR)\n"
         "  --no-reorder           stream each photon's candidates in the engine's order\n"
+        "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
+        "                         reorders photons that share no hit point, against stalls)\n"
+        "  --window W             photons the scheduler holds pending (default 128)\n"
         "  --gap P                idle cycles on the photon input with probability P\n"
         "  --quiet                no progress on stderr\n");
 }
@@ -95,7 +98,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, threads = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a = {argc, argv, 1, "cosim"};
@@ -127,6 +130,8 @@ int pree_cmd_cosim(int argc, char **argv)
         } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
         else if (!strcmp(arg, "--no-reference")) reference = 0;
         else if (!strcmp(arg, "--no-reorder")) reorder = 0;
+        else if (!strcmp(arg, "--no-schedule")) schedule = 0;
+        else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
         else if (!strcmp(arg, "--quiet")) opt.progress = 0;
         else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
         else if (!strcmp(arg, "--out")) {
@@ -147,7 +152,8 @@ int pree_cmd_cosim(int argc, char **argv)
 
     cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, trace_path, err, sizeof err);
     if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
-    cosim_drv_opts_t dopt = {.preu = opt.preu, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder, .gap = gap, .seed = 1};
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
+                              .schedule = schedule, .window = window, .gap = gap, .seed = 1};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     update_sink_t sink = {.fn = on_hit, .user = &ctx};
@@ -259,6 +265,16 @@ int pree_cmd_cosim(int argc, char **argv)
                 scene_path, opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
         fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
                 np, reorder ? "true" : "false", gap, res.hp.n);
+        cosim_sched_stats_t ss;
+        if (cosim_drv_sched_stats(ctx.drv, &ss) == 0) {
+            fprintf(f, "  \"schedule\": {\"window\": %d, \"photons\": %llu, \"photons_moved\": %llu,\n", window,
+                    (unsigned long long)ss.photons, (unsigned long long)ss.moved);
+            fprintf(f, "    \"model_cycles\": %llu, \"model_short_cycles_by_cause\": {", (unsigned long long)ss.cnt[CNT_CYC_UPD]);
+            for (int k = 0; k < 5; k++) fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)ss.cnt[CNT_HAZ + k]);
+            fprintf(f, "}},\n");
+        } else {
+            fprintf(f, "  \"schedule\": null,\n");
+        }
         fprintf(f, "  \"photon_hits_streamed\": %llu,\n  \"photon_hits_without_operations\": %llu,\n",
                 ctx.photons_sent, ctx.photons_empty);
         fprintf(f, "  \"hp_words_differing\": %llu,\n  \"hp_points_differing\": %llu,\n  \"image_words_differing\": %llu,\n",

@@ -1,0 +1,261 @@
+/* cosim_sched.c: the co-simulation host's photon scheduler (see cosim_sched.h). */
+#include "cosim_sched.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include "cosim_shadow.h"
+
+#define CAND_BITS   16                 /* a pending candidate's code: slot << CAND_BITS | k */
+#define SCAN_PHOTONS 48                /* eligible photons scored per choice at most */
+#define SCAN_CANDS  64                 /* candidates tried per position of one photon at most */
+#define NEVER       (-((int64_t)1 << 40))
+
+typedef struct {
+    preu_photon_t ph;
+    uint32_t *hp;                      /* candidates (distinct hit points) */
+    int32_t *link;                     /* next pending code on the same hit point, or -1 */
+    uint32_t n, cap;
+    int deps;                          /* hit points on which an older pending photon comes first */
+} slot_t;
+
+struct cosim_sched {
+    cosim_sched_opts_t opt;
+    cosim_sched_emit_fn emit;
+    void *user;
+    cosim_shadow_t *sh;
+    slot_t *slot;
+    int *order, count;                 /* pending slots, oldest first */
+    int *free_slot, nfree;
+    int32_t *fifo_head, *fifo_tail;    /* per hit point: pending codes in photon order */
+    int64_t *last;                     /* per hit point: latest (predicted) issue cycle */
+    uint32_t tail[COSIM_MAX_PREU];     /* hit points of the last NumPreu operations streamed */
+    int tail_pos;
+    uint32_t *ord, *best_ord;          /* scratch: a candidate order, the best one so far */
+    uint32_t scratch_cap;
+    int64_t reserve;                   /* buffered operations wanted behind a new photon */
+    uint64_t photons, moved;
+};
+
+cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_fn emit, void *user)
+{
+    cosim_sched_t *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    s->opt = *opt;
+    if (s->opt.window < 1) s->opt.window = 1;
+    if (s->opt.window > (1 << (31 - CAND_BITS)) - 1) s->opt.window = (1 << (31 - CAND_BITS)) - 1;
+    s->emit = emit;
+    s->user = user;
+    s->reserve = 2 * (int64_t)opt->preu;
+    const size_t nhp = (size_t)1 << COSIM_HPAW, w = (size_t)s->opt.window;
+    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w);
+    s->slot = calloc(w, sizeof *s->slot);
+    s->order = malloc(w * sizeof *s->order);
+    s->free_slot = malloc(w * sizeof *s->free_slot);
+    s->fifo_head = malloc(nhp * sizeof *s->fifo_head);
+    s->fifo_tail = malloc(nhp * sizeof *s->fifo_tail);
+    s->last = malloc(nhp * sizeof *s->last);
+    if (!s->sh || !s->slot || !s->order || !s->free_slot || !s->fifo_head || !s->fifo_tail || !s->last) {
+        cosim_sched_free(s);
+        return NULL;
+    }
+    for (size_t h = 0; h < nhp; h++) { s->fifo_head[h] = s->fifo_tail[h] = -1; s->last[h] = NEVER; }
+    for (int i = 0; i < s->opt.window; i++) s->free_slot[i] = s->opt.window - 1 - i;
+    s->nfree = s->opt.window;
+    return s;
+}
+
+void cosim_sched_free(cosim_sched_t *s)
+{
+    if (!s) return;
+    if (s->slot)
+        for (int i = 0; i < s->opt.window; i++) { free(s->slot[i].hp); free(s->slot[i].link); }
+    free(s->slot);
+    free(s->order);
+    free(s->free_slot);
+    free(s->fifo_head);
+    free(s->fifo_tail);
+    free(s->last);
+    free(s->ord);
+    free(s->best_ord);
+    cosim_shadow_free(s->sh);
+    free(s);
+}
+
+void cosim_sched_stats(const cosim_sched_t *s, cosim_sched_stats_t *st)
+{
+    st->photons = s->photons;
+    st->moved = s->moved;
+    memcpy(st->cnt, s->sh->cnt, sizeof st->cnt);
+}
+
+/* Cost, in lane-cycles, of issuing hit point h in cycle c beside the banks gb[0..ng). */
+static int64_t op_cost(const cosim_sched_t *s, uint32_t h, int64_t c, const uint32_t *gb, int ng)
+{
+    const int64_t np = s->opt.preu;
+    int64_t cost = 0, d = c - s->last[h];
+    if (d <= SHADOW_WIN) cost += np * (d < 0 ? SHADOW_WIN + 1 : SHADOW_WIN + 1 - d);
+    uint32_t b = cosim_hp_bank(h, s->opt.hp_bank_w);
+    for (int i = 0; i < ng; i++)
+        if (gb[i] == b) { cost += np; break; }
+    return cost;
+}
+
+/* Score photon sl streamed behind L buffered operations whose first issues in cycle base;
+ * writes its candidate order to s->ord. */
+static int64_t score(cosim_sched_t *s, const slot_t *sl, int64_t L, int64_t base)
+{
+    const int np = s->opt.preu;
+    uint32_t gb[COSIM_MAX_PREU];
+    int ng = 0;
+    /* The last L mod NumPreu operations streamed share the photon's first issue cycle. */
+    for (int i = (int)(L % np); i > 0; i--)
+        gb[ng++] = cosim_hp_bank(s->tail[(s->tail_pos + np - i) % np], s->opt.hp_bank_w);
+    memcpy(s->ord, sl->hp, sl->n * sizeof *s->ord);
+    int64_t cost = 0;
+    for (uint32_t k = 0; k < sl->n; k++) {
+        int64_t q = L + (int64_t)k, c = base + q / np;
+        if (q % np == 0) ng = 0;
+        uint32_t pick = k;
+        int64_t best = op_cost(s, s->ord[k], c, gb, ng);
+        if (s->opt.reorder)
+            for (uint32_t j = k + 1; best && j < sl->n && j < k + SCAN_CANDS; j++) {
+                int64_t cj = op_cost(s, s->ord[j], c, gb, ng);
+                if (cj < best) { best = cj; pick = j; }
+            }
+        uint32_t t = s->ord[k]; s->ord[k] = s->ord[pick]; s->ord[pick] = t;
+        gb[ng++] = cosim_hp_bank(s->ord[k], s->opt.hp_bank_w);
+        cost += best;
+    }
+    /* Lanes left empty in the first cycle, then a shortfall below the reserve (weighted less). */
+    int64_t have = L + (int64_t)sl->n;
+    if (have < np) cost += 4 * (np - have);
+    if (have < s->reserve) cost += s->reserve - have;
+    return cost;
+}
+
+static int grow_scratch(cosim_sched_t *s, uint32_t n)
+{
+    if (n <= s->scratch_cap) return 0;
+    uint32_t cap = s->scratch_cap ? s->scratch_cap : 64;
+    while (cap < n) cap *= 2;
+    uint32_t *a = realloc(s->ord, cap * sizeof *a);
+    if (!a) return -1;
+    s->ord = a;
+    uint32_t *b = realloc(s->best_ord, cap * sizeof *b);
+    if (!b) return -1;
+    s->best_ord = b;
+    s->scratch_cap = cap;
+    return 0;
+}
+
+/* Choose, send and retire one pending photon; the shadow model is in its combinational phase.
+ * Returns 0 or -1; *n_out and *p_out describe the photon taken. */
+static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
+{
+    const int np = s->opt.preu;
+    const int64_t L = (int64_t)cosim_shadow_leftover(s->sh);
+    const int64_t base = (int64_t)s->sh->t + 2 + s->sh->stall;
+    int best = -1, scanned = 0;
+    int64_t best_cost = 0;
+    for (int i = 0; i < s->count; i++) {
+        const slot_t *sl = &s->slot[s->order[i]];
+        if (sl->deps) continue;
+        int64_t cost = score(s, sl, L, base);
+        if (best < 0 || cost < best_cost) {
+            best = i;
+            best_cost = cost;
+            uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t;
+        }
+        if (cost == 0 || ++scanned >= SCAN_PHOTONS) break;
+    }
+    /* The oldest pending photon is always eligible, so best >= 0. */
+    const int si = s->order[best];
+    slot_t *sl = &s->slot[si];
+    uint32_t p = 0;
+    if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, &p)) return -1;
+    cosim_shadow_write_idx(s->sh, p, s->best_ord, sl->n);
+    /* Predicted issue cycles, and the tail of the stream. */
+    for (uint32_t k = 0; k < sl->n; k++) {
+        uint32_t h = s->best_ord[k];
+        int64_t c = base + (L + (int64_t)k) / np;
+        if (c > s->last[h]) s->last[h] = c;
+        s->tail[s->tail_pos] = h;
+        s->tail_pos = (s->tail_pos + 1) % np;
+    }
+    /* Leave the hit points' FIFOs: the next photon on each may become eligible. */
+    for (uint32_t k = 0; k < sl->n; k++) {
+        uint32_t h = sl->hp[k];
+        int32_t next = sl->link[k];
+        s->fifo_head[h] = next;
+        if (next < 0) s->fifo_tail[h] = -1;
+        else s->slot[next >> CAND_BITS].deps--;
+    }
+    s->moved += best != 0;
+    s->photons++;
+    memmove(s->order + best, s->order + best + 1, (size_t)(s->count - best - 1) * sizeof *s->order);
+    s->count--;
+    s->free_slot[s->nfree++] = si;
+    *n_out = sl->n;
+    *p_out = p;
+    return 0;
+}
+
+/* One cycle of the shadow model, taking a pending photon when it is ready. */
+static int step(cosim_sched_t *s)
+{
+    uint32_t n = 0, p = 0;
+    int take = cosim_shadow_eval(s->sh) && s->count > 0;
+    if (take && take_one(s, &n, &p)) return -1;
+    const int64_t t = (int64_t)s->sh->t;
+    cosim_shadow_edge(s->sh, take, n, p);
+    for (int i = 0; i < s->sh->n_iss; i++)
+        if (s->last[s->sh->iss_hp[i]] < t) s->last[s->sh->iss_hp[i]] = t;
+    return 0;
+}
+
+int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *hps, uint32_t n)
+{
+    if (n == 0) return 0;
+    if (n >= (1u << CAND_BITS) || grow_scratch(s, n)) return -1;
+    while (s->count == s->opt.window)
+        if (step(s)) return -1;
+    const int si = s->free_slot[--s->nfree];
+    slot_t *sl = &s->slot[si];
+    if (n > sl->cap) {
+        uint32_t *hp = realloc(sl->hp, n * sizeof *hp);
+        if (!hp) { s->nfree++; return -1; }
+        sl->hp = hp;
+        int32_t *link = realloc(sl->link, n * sizeof *link);
+        if (!link) { s->nfree++; return -1; }
+        sl->link = link;
+        sl->cap = n;
+    }
+    sl->ph = *ph;
+    sl->n = n;
+    sl->deps = 0;
+    memcpy(sl->hp, hps, n * sizeof *hps);
+    for (uint32_t k = 0; k < n; k++) {
+        uint32_t h = hps[k];
+        int32_t code = (int32_t)((uint32_t)si << CAND_BITS | k);
+        sl->link[k] = -1;
+        if (s->fifo_tail[h] < 0) s->fifo_head[h] = code;
+        else {
+            int32_t tl = s->fifo_tail[h];
+            s->slot[tl >> CAND_BITS].link[tl & ((1 << CAND_BITS) - 1)] = code;
+            sl->deps++;
+        }
+        s->fifo_tail[h] = code;
+    }
+    s->order[s->count++] = si;
+    return 0;
+}
+
+int cosim_sched_flush(cosim_sched_t *s)
+{
+    while (s->count > 0)
+        if (step(s)) return -1;
+    /* Run the model dry so that its counters cover the whole stream. */
+    while (!cosim_shadow_idle(s->sh))
+        if (step(s)) return -1;
+    return 0;
+}

@@ -1,0 +1,58 @@
+/* cosim_sched.h: the co-simulation host's photon scheduler. It holds a window of pending photons
+ * (in the engine's photon order) and decides the order in which they, and each photon's
+ * candidates, are streamed to pree_top, so that the RTL issues NumPreu operations a cycle
+ * without stalls where the window allows it.
+ *
+ * What keeps the result bit-identical: per hit point, updates happen in photon order. A photon
+ * is eligible only when no older pending photon shares a hit point with it (a FIFO of pending
+ * photons per hit point); photons that share none may be swapped, and the order of one
+ * photon's candidates never matters (they are distinct hit points).
+ *
+ * How it chooses: a cycle model of the top's issue path (cosim_shadow.h) runs ahead of the RTL
+ * on the scheduled stream. In each cycle in which it takes a photon (ph_ready_o), the scheduler
+ * predicts where the operations of a candidate photon would issue (behind the operations
+ * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
+ * hit point issued or predicted within the last 11 cycles), hit-point bank clashes within an
+ * issue cycle, lanes left empty (starvation) and a shortfall of buffered operations below a
+ * reserve. The photon's candidates are ordered greedily against the same costs. The oldest
+ * eligible photon with no cost is taken, else the cheapest of the first few eligible ones.
+ * Everything is integer arithmetic: deterministic.
+ *
+ * API
+ *   cosim_sched_new(opt, emit, user)  emit(user, ph, hps, n, &p) sends one photon (hps in the
+ *                            chosen order) and returns 0 with its first index entry in p, or -1
+ *   cosim_sched_free(s)
+ *   cosim_sched_add(s, ph, hps, n)  one photon hit (n >= 1) in photon order; emits as the window
+ *                            fills. Returns 0 or -1 (out of memory, or emit failed).
+ *   cosim_sched_flush(s)     emit everything pending
+ *   cosim_sched_stats(s, st) photons moved (sent while an older one waited) and the model's
+ *                            predicted counters */
+#ifndef PREE_COSIM_SCHED_H
+#define PREE_COSIM_SCHED_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "cosim_rtl.h"
+
+typedef struct {
+    int preu, hp_bank_w;
+    int reorder;       /* 1: order each photon's candidates too */
+    int window;        /* pending photons held (>= 1) */
+} cosim_sched_opts_t;
+
+typedef struct {
+    uint64_t photons, moved;
+    uint64_t cnt[COSIM_NCNT];   /* the cycle model's counters (cosim_rtl.h CNT_*) */
+} cosim_sched_stats_t;
+
+typedef int (*cosim_sched_emit_fn)(void *user, const preu_photon_t *ph, const uint32_t *hps,
+                                   uint32_t n, uint32_t *p);
+typedef struct cosim_sched cosim_sched_t;
+
+cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_fn emit, void *user);
+void cosim_sched_free(cosim_sched_t *s);
+int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *hps, uint32_t n);
+int cosim_sched_flush(cosim_sched_t *s);
+void cosim_sched_stats(const cosim_sched_t *s, cosim_sched_stats_t *st);
+
+#endif

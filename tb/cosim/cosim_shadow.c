@@ -1,0 +1,158 @@
+/* cosim_shadow.c: cycle model of pree_top's update issue path (see cosim_shadow.h). Each block
+ * names the RTL block it mirrors. */
+#include "cosim_shadow.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#define IDX_MASK ((1u << COSIM_IDXAW) - 1u)
+
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w)
+{
+    cosim_shadow_t *s = calloc(1, sizeof *s);
+    if (!s) return NULL;
+    s->inf_cnt = calloc(1u << COSIM_HPAW, 1);
+    if (!s->inf_cnt) { free(s); return NULL; }
+    s->preu = preu;
+    s->hp_bank_w = hp_bank_w;
+    return s;
+}
+
+void cosim_shadow_free(cosim_shadow_t *s)
+{
+    if (!s) return;
+    free(s->inf_cnt);
+    free(s);
+}
+
+void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n)
+{
+    for (uint32_t k = 0; k < n; k++) s->idx[(p + n - 1u - k) & IDX_MASK] = hps[k];
+}
+
+int cosim_shadow_eval(cosim_shadow_t *s)
+{
+    const int np = s->preu;
+    const uint32_t all = (1u << np) - 1u;
+    /* AFTSO-HpUOC offer: lane l takes the l-th hit point of the buffer in photon order, entry
+     * e's t-th with ref_addr = p + rem - 1 - t (tb/ctrl/aftso_model.c, aftso_eval). */
+    uint64_t accu[SHADOW_BUF], sum = 0;
+    for (int e = 0; e < SHADOW_BUF; e++) {
+        if (e < s->count) sum += s->buf_rem[e];
+        accu[e] = sum;
+    }
+    s->total = sum;
+    s->accu0 = accu[0];
+    s->nvalid = sum < (uint64_t)np ? (int)sum : np;
+    for (int l = 0, e = 0; l < s->nvalid; l++) {
+        while (accu[e] <= (uint64_t)l) e++;
+        uint32_t t = (uint32_t)((uint64_t)l - (e ? accu[e - 1] : 0));
+        s->ref[l] = (s->buf_p[e] + s->buf_rem[e] - 1u - t) & IDX_MASK;
+    }
+    const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
+    /* Stage B (b_issue): a prefix of the pending lanes, each free of hazard, dup and bank. */
+    uint32_t iss = 0;
+    int pre = 1, cause = 0;
+    for (int l = 0; l < np; l++) {
+        int pend = (s->b_pend >> l) & 1, haz = 0, dup = 0, bcf = 0;
+        if (pend) {
+            haz = s->inf_cnt[s->b_hp[l]] != 0;
+            uint32_t bl = cosim_hp_bank(s->b_hp[l], s->hp_bank_w);
+            for (int m = 0; m < l; m++)
+                if ((s->b_pend >> m) & 1) {
+                    if (s->b_hp[m] == s->b_hp[l]) dup = 1;
+                    else if (cosim_hp_bank(s->b_hp[m], s->hp_bank_w) == bl) bcf = 1;
+                }
+        }
+        int ok = pend && pre && !haz && !dup && !bcf;
+        if (ok) iss |= 1u << l;
+        if (pend && !ok && !cause) cause = haz ? CNT_HAZ : dup ? CNT_DUP : CNT_BANK;
+        pre = pre && (!pend || ok);
+    }
+    s->iss = iss;
+    s->a_go = (s->b_pend & ~iss) == 0;
+    /* Stage A (a_lanes): read in lane order, one lane per index bank (ref mod NumPreu). */
+    uint32_t a_valid = ctl_valid & ~s->a_done, a_rd = 0;
+    pre = 1;
+    for (int l = 0; l < np; l++) {
+        int v = (a_valid >> l) & 1, conf = 0;
+        for (int m = 0; m < l; m++)
+            if (((a_valid >> m) & 1) && ((s->ref[m] ^ s->ref[l]) & (uint32_t)(np - 1)) == 0) conf = 1;
+        int rd = s->a_go && v && !conf && pre;
+        if (rd) a_rd |= 1u << l;
+        pre = pre && (!v || rd);
+    }
+    s->a_valid = a_valid;
+    s->a_rd = a_rd;
+    s->stall = (ctl_valid & ~s->a_done & ~a_rd) != 0;
+    /* Counter cause (stall_cause): the first blocked lane in B, else A's conflict, else starved. */
+    if (iss != all && !cause) cause = s->b_short ? CNT_ABANK : CNT_STARVE;
+    s->cause = cause;
+    /* AFTSO-HpUOC ready: a free entry, or (EarlyReady) entry 0 leaves whole in this cycle. */
+    s->ready = s->count < SHADOW_BUF || (!s->stall && accu[0] <= (uint64_t)np);
+    return s->ready;
+}
+
+uint64_t cosim_shadow_leftover(const cosim_shadow_t *s)
+{
+    return s->stall ? s->total : s->total - (uint64_t)s->nvalid;
+}
+
+void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
+{
+    const int np = s->preu;
+    /* Counters (counters block; the model counts from its first cycle). */
+    s->cnt[CNT_CYC_UPD]++;
+    if (s->cause) s->cnt[s->cause]++;
+    /* In-flight window: drop the row issued SHADOW_WIN cycles ago, add this cycle's issues. */
+    int *row_n = &s->inf_n[s->inf_pos];
+    uint32_t *row = s->inf_hp[s->inf_pos];
+    for (int k = 0; k < *row_n; k++) s->inf_cnt[row[k]]--;
+    *row_n = 0;
+    s->n_iss = 0;
+    for (int l = 0; l < np; l++)
+        if ((s->iss >> l) & 1) {
+            row[(*row_n)++] = s->b_hp[l];
+            s->inf_cnt[s->b_hp[l]]++;
+            s->iss_hp[s->n_iss++] = s->b_hp[l];
+            s->cnt[CNT_OPS0 + l]++;
+        }
+    s->inf_pos = (s->inf_pos + 1) % SHADOW_WIN;
+    /* Stage B registers: the lanes A read (index-table data), or what is left pending. */
+    if (s->a_go) {
+        for (int l = 0; l < np; l++)
+            if ((s->a_rd >> l) & 1) s->b_hp[l] = s->idx[s->ref[l]];
+        s->b_pend = s->a_rd;
+        s->b_short = (s->a_valid & ~s->a_rd) != 0;
+    } else {
+        s->b_pend &= ~s->iss;
+    }
+    s->a_done = s->stall ? s->a_done | s->a_rd : 0;
+    /* AFTSO-HpUOC edge (aftso_step): whole entries leave, the partial one is trimmed, the
+     * taken photon is appended. */
+    if (!s->stall) {
+        uint64_t acc = 0;
+        int nfull = 0;
+        while (nfull < s->count && acc + s->buf_rem[nfull] <= (uint64_t)np) acc += s->buf_rem[nfull++];
+        if (nfull < s->count) s->buf_rem[nfull] -= (uint32_t)((uint64_t)np - acc);
+        for (int e = 0; e + nfull < s->count; e++) {
+            s->buf_p[e] = s->buf_p[e + nfull];
+            s->buf_rem[e] = s->buf_rem[e + nfull];
+        }
+        s->count -= nfull;
+    }
+    if (take && n) {
+        s->buf_p[s->count] = p & IDX_MASK;
+        s->buf_rem[s->count] = n;
+        s->count++;
+    }
+    s->t++;
+}
+
+int cosim_shadow_idle(const cosim_shadow_t *s)
+{
+    if (s->count || s->b_pend) return 0;
+    for (int r = 0; r < SHADOW_WIN; r++)
+        if (s->inf_n[r]) return 0;
+    return 1;
+}
