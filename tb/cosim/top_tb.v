@@ -7,7 +7,8 @@
 // ph_valid_i and random short index writes), waits for idle_o, reads every hit point back and
 // compares it with the model's word; then clears the pixels, runs the radiance pass and compares
 // every pixel. Also checks that the PREUs' operation counters add up to the operations sent and
-// to the hit points. The first 10 mismatches of each memory are printed in hex; any mismatch,
+// to the hit points, and the stage-A bank-conflict counter (abank) in the update pass: zero for
+// the protocol's packed index placement, non-zero for the vecgen's misplaced one. The first 10 mismatches of each memory are printed in hex; any mismatch,
 // a protocol assertion (PREE_ASSERT) or a time-out ends the run with $fatal (run as vvp -N).
 //
 // Plusargs: +vec=PREFIX (PREFIX.meta/.hp/.ph/.idx/.hpx/.px), +seed=N (gaps), +gap=PCT (percent
@@ -257,6 +258,15 @@ module top_tb;
     if (ops_upd != nops || ops_rad != nhp) begin
       $display("MISMATCH operation counts: update %0d (sent %0d), radiance %0d (hit points %0d)",
                ops_upd, nops, ops_rad, nhp);
+      errors = errors + 1;
+    end
+    if (meta[10] == 0 && cnt_upd[5*48 +: 48] != 48'd0) begin
+      $display("MISMATCH abank: %0d stage-A conflict cycles in update mode with packed index entries",
+               cnt_upd[5*48 +: 48]);
+      errors = errors + 1;
+    end
+    if (meta[10] != 0 && cnt_upd[5*48 +: 48] == 48'd0) begin
+      $display("MISMATCH abank: misplaced index entries caused no stage-A conflict in update mode");
       errors = errors + 1;
     end
     errors = errors + hp_err + px_err;

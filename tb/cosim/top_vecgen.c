@@ -12,7 +12,8 @@
  *   place:     packed (docs/pree_top.md "Host protocol": p_k = p_(k-1) - N^P_k mod P, no stage-A
  *              bank conflict), random (0..2P-1 entries of random padding: stage-A conflicts)
  * Files (one $readmemh word per line, fields most significant first, all hex):
- *   OUT.meta  16 x 32 bits: nhp, npix, photons, entries, ne, operations, P, A, I, X, 0...
+ *   OUT.meta  16 x 32 bits: nhp, npix, photons, entries, ne, operations, P, A, I, X,
+ *             placement (0 packed, 1 random), 0...
  *   OUT.hp    per hit point, 384 bits: pixel, f b g r, pos z y x, n, r2, tau b g r
  *             (the low PxAW + 352 bits are pree_top's hp_wdata_i)
  *   OUT.ph    per photon, 288 bits: end of its entries in OUT.idx, p_addr, N^P, phi b g r, pos z y x
@@ -169,7 +170,8 @@ int main(int argc, char **argv)
     for (int j = 0; j < npix; j++) fprintf(fpx, "%08x%08x%08x\n", L[3 * j + 2], L[3 * j + 1], L[3 * j]);
 
     const uint32_t meta[16] = {(uint32_t)nhp, (uint32_t)npix, (uint32_t)photons, (uint32_t)entries, ne,
-                               (uint32_t)ops, (uint32_t)preu, (uint32_t)hp_aw, (uint32_t)idx_aw, (uint32_t)px_aw};
+                               (uint32_t)ops, (uint32_t)preu, (uint32_t)hp_aw, (uint32_t)idx_aw, (uint32_t)px_aw,
+                               (uint32_t)place_random};
     for (int k = 0; k < 16; k++) fprintf(fmeta, "%08x\n", meta[k]);
     int bad = 0;
     FILE *all[] = {fhp, fph, fidx, fhpx, fpx, fmeta};
