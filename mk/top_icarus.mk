@@ -4,8 +4,9 @@
 # "Icarus bench".
 #
 #   make sim-top-icarus          every run below (part of `make sim`), then the mutants
-#   make sim-top-icarus-mutants  copies of pree_top.v with one hazard rule broken each: the bench
-#                                must fail them with mismatches
+#   make sim-top-icarus-mutants  copies of pree_top.v with one stall rule (hazard, duplicate,
+#                                bank conflict, radiance window) broken each: the bench must fail
+#                                each with mismatches
 # Products in $(BUILD)/top_icarus: top_vecgen, one .vvp per configuration, vectors per run.
 
 TOPIV_DIR  := $(BUILD)/top_icarus
