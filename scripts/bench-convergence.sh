@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Run time against error: cornell3 rendered with 768,000 x 2^k photons (k = 0..6) in both
 # precisions, each compared with a long double-precision reference render (128x the photons).
-# Prints a table (photons, precision, seconds, RMSE on linear radiance, SSIM of the 8-bit
+# Prints a table (photons, precision, wall seconds, CPU seconds, RMSE on linear radiance, SSIM of the 8-bit
 # images) and draws out/bench/convergence.png with gnuplot.
 # Usage: bench-convergence.sh PREE OUTDIR [--quick]   (--quick: 96x72, for testing the script)
 set -euo pipefail
@@ -17,20 +17,21 @@ if [ ! -f "$ref.exr" ]; then
       --out "$ref.exr" --out "$ref.png" --stats "$ref.json"
 fi
 tab="$out/convergence.txt"
-printf '%-12s %-9s %9s %12s %10s %10s\n' photons precision seconds rmse_linear ssim_8bit psnr_8bit | tee "$tab"
+printf '%-12s %-9s %9s %9s %12s %10s %10s\n' photons precision seconds cpu_s rmse_linear ssim_8bit psnr_8bit | tee "$tab"
 for prec in double fp32; do
   for k in $(seq 0 $steps); do
     n=$((base << k)); f="$out/conv-$prec-$n"
-    "$pree" render $scene --width $W --height $H --photons $n --precision $prec --out "$f.exr" --out "$f.png" \
-        --stats "$f.json" --quiet
+    /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render $scene --width $W --height $H --photons $n --precision $prec \
+        --out "$f.exr" --out "$f.png" --stats "$f.json" --quiet
+    cpu=$(awk '{print $1 + $2}' "$f.cpu")
     sec=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["seconds"]["total"])' "$f.json")
     rmse=$("$pree" compare "$ref.exr" "$f.exr" | awk '$1=="rmse"{print $2}')
     read -r ssim psnr <<<"$("$pree" compare "$ref.png" "$f.png" | awk '$1=="ssim"{s=$2} $1=="psnr_db"{p=$2} END{print s, p}')"
-    printf '%-12s %-9s %9.3f %12.6g %10.6f %10.3f\n' $n $prec $sec $rmse $ssim $psnr | tee -a "$tab"
+    printf '%-12s %-9s %9.3f %9.2f %12.6g %10.6f %10.3f\n' $n $prec $sec $cpu $rmse $ssim $psnr | tee -a "$tab"
   done
 done
-awk 'NR>1 && $2=="double"{print $3, $4, $5}' "$tab" > "$out/conv-double.dat"
-awk 'NR>1 && $2=="fp32"{print $3, $4, $5}' "$tab" > "$out/conv-fp32.dat"
+awk 'NR>1 && $2=="double"{print $3, $5, $6}' "$tab" > "$out/conv-double.dat"
+awk 'NR>1 && $2=="fp32"{print $3, $5, $6}' "$tab" > "$out/conv-fp32.dat"
 gnuplot <<GP
 set terminal pngcairo size 1000,420 font ",10"
 set output "$out/convergence.png"
