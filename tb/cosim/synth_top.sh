@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
 # synth_top.sh: Yosys synthesis of pree_top with 4 PREUs for a Xilinx 7-series part
 # (synth_xilinx), hierarchy kept (the PREU is mapped once, instantiated four times). Fails on a
-# latch or a combinational loop; writes the resource table to OUTDIR/resources.md.
+# latch or a combinational loop; writes the resource table to OUTDIR/resources.md (the whole
+# design, pree_top's own logic, the controllers, the rest: 4 PREUs with their fp32 units and the
+# block RAMs), the mapped netlist to OUTDIR/netlist.json and the logic depth of pree_top's own
+# paths (tb/cosim/synth_top_depth.py) to OUTDIR/depth.md.
 # Memories are sized down for the run (HpAW=12 in 16 banks, IdxAW=8, PxAW=10 in 4 banks): their
 # block-RAM count scales with the sizes, the logic does not.
 # Usage: synth_top.sh OUTDIR
@@ -10,7 +13,7 @@ out=${1:-build/cosim/synth}
 mkdir -p "$out"
 srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
 params="chparam -set NumPreu 4 -set HpAW 12 -set HpBankW 4 -set IdxAW 8 -set PxAW 10 -set PxBankW 2 pree_top"
-cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top"
+cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top; write_json $out/netlist.json"
 echo "yosys -p '$cmd'"
 if ! yosys -q -l "$out/yosys.log" -p "$cmd" >/dev/null 2>&1; then
   echo "synth_top: yosys failed (log: $out/yosys.log); rerun: yosys -p '$cmd'" >&2
@@ -21,14 +24,30 @@ if grep -q "^Latch inferred" "$out/yosys.log" || grep -qE '^\s+[0-9]+\s+(LDCE|LD
   echo "synth_top: latch found (log: $out/yosys.log)" >&2
   exit 1
 fi
-# The hierarchy total is the last "design hierarchy" block of stat -top.
+# The hierarchy total is the last "design hierarchy" block of stat -top; a module's own cells
+# are its "=== name ===" block (pree_top's own block is the one named exactly pree_top).
 awk '/=== design hierarchy ===/{h=1} h' "$out/stat.txt" > "$out/total.txt"
-cnt() { awk -v re="$1" '$1 ~ re {s += $2} END {print s + 0}' "$out/total.txt"; }
+section() { awk -v re="$1" '/^=== /{h = ($0 ~ re)} h' "$out/stat.txt"; }
+section '^=== pree_top ===$' > "$out/own.txt"
+section 'pree_aftso_hpuoc ===$' > "$out/aftso.txt"
+section 'pree_adiso_rec ===$' > "$out/adiso.txt"
+cnt() { awk -v re="$2" '$1 ~ re {s += $2} END {print s + 0}' "$out/$1.txt"; }
+row() {
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' "$1" \
+    "$(cnt "$2" '^LUT[1-6]$')" "$(cnt "$2" '^FD[CPRS]E$')" "$(cnt "$2" '^CARRY4$')" "$(cnt "$2" '^MUXF7$')" \
+    "$(cnt "$2" '^MUXF8$')" "$(cnt "$2" '^DSP48E1$')" "$(cnt "$2" '^RAMB36E1$')" "$(cnt "$2" '^RAMB18E1$')" \
+    "$(cnt "$2" '^RAM(64M|32M|64X1D|32X1D|128X1D|256X1S)$')"
+}
 {
   echo "| design | LUT | FF | CARRY4 | MUXF7 | MUXF8 | DSP48E1 | RAMB36E1 | RAMB18E1 | RAM64M/RAM32M |"
   echo "|---|---|---|---|---|---|---|---|---|---|"
-  printf '| pree_top NumPreu=4 | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n' \
-    "$(cnt '^LUT[1-6]$')" "$(cnt '^FD[CPRS]E$')" "$(cnt '^CARRY4$')" "$(cnt '^MUXF7$')" "$(cnt '^MUXF8$')" \
-    "$(cnt '^DSP48E1$')" "$(cnt '^RAMB36E1$')" "$(cnt '^RAMB18E1$')" "$(cnt '^RAM(64M|32M|64X1D|32X1D|128X1D|256X1S)$')"
+  row "pree_top NumPreu=4, whole design" total
+  row "pree_top's own logic (lanes, crossbars, hazards, counters)" own
+  row "pree_aftso_hpuoc" aftso
+  row "pree_adiso_rec" adiso
 } > "$out/resources.md"
 cat "$out/resources.md"
+if command -v python3 >/dev/null; then
+  python3 tb/cosim/synth_top_depth.py "$out/netlist.json" > "$out/depth.md"
+  cat "$out/depth.md"
+fi
