@@ -6,7 +6,7 @@
 #include "cosim_shadow.h"
 
 #define CAND_BITS   16                 /* a pending candidate's code: slot << CAND_BITS | k */
-#define SCAN_PHOTONS 48                /* eligible photons scored per choice at most */
+#define SCAN_PHOTONS 8                 /* eligible photons scored per choice at most */
 #define SCAN_CANDS  64                 /* candidates tried per position of one photon at most */
 #define NEVER       (-((int64_t)1 << 40))
 
@@ -14,6 +14,7 @@ typedef struct {
     preu_photon_t ph;
     uint32_t *hp;                      /* candidates (distinct hit points) */
     int32_t *link;                     /* next pending code on the same hit point, or -1 */
+    int64_t max_last;                  /* the latest last[] of its hit points when last looked at */
     uint32_t n, cap;
     int deps;                          /* hit points on which an older pending photon comes first */
 } slot_t;
@@ -31,8 +32,8 @@ struct cosim_sched {
     uint32_t tail[COSIM_MAX_PREU];     /* hit points of the last NumPreu operations streamed */
     int tail_pos;
     uint32_t *ord, *best_ord;          /* scratch: a candidate order, the best one so far */
+    uint32_t *bk, *mult;               /* scratch: candidates' banks, candidates per bank */
     uint32_t scratch_cap;
-    int64_t reserve;                   /* buffered operations wanted behind a new photon */
     uint64_t photons, moved;
 };
 
@@ -45,7 +46,6 @@ cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_f
     if (s->opt.window > (1 << (31 - CAND_BITS)) - 1) s->opt.window = (1 << (31 - CAND_BITS)) - 1;
     s->emit = emit;
     s->user = user;
-    s->reserve = 2 * (int64_t)opt->preu;
     const size_t nhp = (size_t)1 << COSIM_HPAW, w = (size_t)s->opt.window;
     s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w);
     s->slot = calloc(w, sizeof *s->slot);
@@ -77,6 +77,8 @@ void cosim_sched_free(cosim_sched_t *s)
     free(s->last);
     free(s->ord);
     free(s->best_ord);
+    free(s->bk);
+    free(s->mult);
     cosim_shadow_free(s->sh);
     free(s);
 }
@@ -102,7 +104,7 @@ static int64_t op_cost(const cosim_sched_t *s, uint32_t h, int64_t c, const uint
 
 /* Score photon sl streamed behind L buffered operations whose first issues in cycle base;
  * writes its candidate order to s->ord. */
-static int64_t score(cosim_sched_t *s, const slot_t *sl, int64_t L, int64_t base)
+static int64_t score(cosim_sched_t *s, slot_t *sl, int64_t L, int64_t base)
 {
     const int np = s->opt.preu;
     uint32_t gb[COSIM_MAX_PREU];
@@ -111,25 +113,44 @@ static int64_t score(cosim_sched_t *s, const slot_t *sl, int64_t L, int64_t base
     for (int i = (int)(L % np); i > 0; i--)
         gb[ng++] = cosim_hp_bank(s->tail[(s->tail_pos + np - i) % np], s->opt.hp_bank_w);
     memcpy(s->ord, sl->hp, sl->n * sizeof *s->ord);
-    int64_t cost = 0;
+    int64_t cost = 0, max_last = NEVER;
+    for (uint32_t k = 0; k < sl->n; k++)
+        if (s->last[sl->hp[k]] > max_last) max_last = s->last[sl->hp[k]];
+    sl->max_last = max_last;
+    /* Each candidate's bank and how many of the candidates not yet placed share it: among
+     * equally cheap candidates the one whose bank is most crowded goes first, which spreads
+     * a bank's candidates over the issue cycles. */
+    uint32_t *bk = s->bk, *mult = s->mult;
+    const int crowd = s->opt.reorder && sl->n <= SCAN_CANDS;
+    for (uint32_t k = 0; k < sl->n; k++) {
+        bk[k] = cosim_hp_bank(s->ord[k], s->opt.hp_bank_w);
+        mult[k] = 1;
+        if (crowd)
+            for (uint32_t j = 0; j < k; j++)
+                if (bk[j] == bk[k]) { mult[j]++; mult[k]++; }
+    }
     for (uint32_t k = 0; k < sl->n; k++) {
         int64_t q = L + (int64_t)k, c = base + q / np;
         if (q % np == 0) ng = 0;
         uint32_t pick = k;
         int64_t best = op_cost(s, s->ord[k], c, gb, ng);
         if (s->opt.reorder)
-            for (uint32_t j = k + 1; best && j < sl->n && j < k + SCAN_CANDS; j++) {
+            for (uint32_t j = k + 1; j < sl->n && j < k + SCAN_CANDS; j++) {
+                if (best == 0 && !crowd) break;
                 int64_t cj = op_cost(s, s->ord[j], c, gb, ng);
-                if (cj < best) { best = cj; pick = j; }
+                if (cj < best || (cj == best && mult[j] > mult[pick])) { best = cj; pick = j; }
             }
         uint32_t t = s->ord[k]; s->ord[k] = s->ord[pick]; s->ord[pick] = t;
-        gb[ng++] = cosim_hp_bank(s->ord[k], s->opt.hp_bank_w);
+        t = bk[k]; bk[k] = bk[pick]; bk[pick] = t;
+        t = mult[k]; mult[k] = mult[pick]; mult[pick] = t;
+        if (crowd)
+            for (uint32_t j = k + 1; j < sl->n; j++) mult[j] -= bk[j] == bk[k];
+        gb[ng++] = bk[k];
         cost += best;
     }
-    /* Lanes left empty in the first cycle, then a shortfall below the reserve (weighted less). */
+    /* Lanes left empty in its first cycle (AFTSO-HpUOC then offers fewer than NumPreu). */
     int64_t have = L + (int64_t)sl->n;
     if (have < np) cost += 4 * (np - have);
-    if (have < s->reserve) cost += s->reserve - have;
     return cost;
 }
 
@@ -144,6 +165,12 @@ static int grow_scratch(cosim_sched_t *s, uint32_t n)
     uint32_t *b = realloc(s->best_ord, cap * sizeof *b);
     if (!b) return -1;
     s->best_ord = b;
+    uint32_t *c = realloc(s->bk, cap * sizeof *c);
+    if (!c) return -1;
+    s->bk = c;
+    uint32_t *m = realloc(s->mult, cap * sizeof *m);
+    if (!m) return -1;
+    s->mult = m;
     s->scratch_cap = cap;
     return 0;
 }
@@ -155,22 +182,32 @@ static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
     const int np = s->opt.preu;
     const int64_t L = (int64_t)cosim_shadow_leftover(s->sh);
     const int64_t base = (int64_t)s->sh->t + 2 + s->sh->stall;
-    int best = -1, scanned = 0;
+    int best = -1, best_scored = 0, scanned = 0;
     int64_t best_cost = 0;
     for (int i = 0; i < s->count; i++) {
-        const slot_t *sl = &s->slot[s->order[i]];
+        slot_t *sl = &s->slot[s->order[i]];
         if (sl->deps) continue;
-        int64_t cost = score(s, sl, L, base);
+        /* A hit point issued (or due) within SHADOW_WIN cycles of the photon's last operation
+         * means a hazard whatever the order (last[] only grows): count the least cost unscored. */
+        int64_t d = base + (L + (int64_t)sl->n - 1) / np - sl->max_last, cost;
+        int scored = d > SHADOW_WIN;
+        if (scored) cost = score(s, sl, L, base);
+        else cost = (int64_t)np * (d < 0 ? SHADOW_WIN + 1 : SHADOW_WIN + 1 - d);
         if (best < 0 || cost < best_cost) {
             best = i;
             best_cost = cost;
-            uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t;
+            best_scored = scored;
+            if (scored) { uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t; }
         }
         if (cost == 0 || ++scanned >= SCAN_PHOTONS) break;
     }
     /* The oldest pending photon is always eligible, so best >= 0. */
     const int si = s->order[best];
     slot_t *sl = &s->slot[si];
+    if (!best_scored) {
+        score(s, sl, L, base);
+        uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t;
+    }
     uint32_t p = 0;
     if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, &p)) return -1;
     cosim_shadow_write_idx(s->sh, p, s->best_ord, sl->n);
@@ -233,6 +270,7 @@ int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *h
     sl->ph = *ph;
     sl->n = n;
     sl->deps = 0;
+    sl->max_last = NEVER;
     memcpy(sl->hp, hps, n * sizeof *hps);
     for (uint32_t k = 0; k < n; k++) {
         uint32_t h = hps[k];
