@@ -53,6 +53,12 @@ static inline uint64_t cell_key(int64_t ix, int64_t iy, int64_t iz)
     return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
 }
 
+/* Linear index of a cell in the dense map (GRID_CELLS with few enough cells). */
+static inline size_t dense_index(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return ((size_t)iz * (size_t)(g->cell_max[1] + 1) + (size_t)iy) * (size_t)(g->cell_max[0] + 1) + (size_t)ix;
+}
+
 /* splitmix64's finaliser: every key bit reaches every slot bit. */
 static inline size_t key_slot(uint64_t key, size_t mask)
 {
@@ -181,22 +187,113 @@ static int listed(const hitpoints_t *h, size_t i, int include_zero)
     return include_zero || w.x != 0 || w.y != 0 || w.z != 0;
 }
 
+/* Count (pass 0) or fill (pass 1) part p's entries: every listed hit point it owns, in index
+ * order, in each bucket its safe-radius box touches. bucket_of maps a cell to its bucket. */
+static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, int pass,
+                       uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t))
+{
+    grid_part_t *part = &g->parts[p];
+    for (size_t i = 0; i < h->n; i++) {
+        if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
+        int64_t a[3], b[3];
+        cell_box(g, &h->hot[i], g->r_safe, a, b);
+        for (int64_t iz = a[2]; iz <= b[2]; iz++)
+            for (int64_t iy = a[1]; iy <= b[1]; iy++)
+                for (int64_t ix = a[0]; ix <= b[0]; ix++) {
+                    uint32_t s = bucket_of(g, ix, iy, iz);
+                    if (pass == 0) part->start[s + 1]++;
+                    else part->hp[part->start[s]++] = (uint32_t)i;
+                }
+    }
+}
+
+static uint32_t dense_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return g->dense[dense_index(g, ix, iy, iz)];
+}
+
+static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, cell_key(ix, iy, iz));
+}
+
+/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
+ * the grid is small enough, else in an open-addressing table of packed keys (size a power of
+ * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
+static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char *err, size_t errlen)
+{
+    const double rs = g->r_safe;
+    const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
+    if (cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED")) {
+        g->dense = malloc(cells * sizeof *g->dense);
+        if (!g->dense) goto oom;
+        memset(g->dense, 0xFF, cells * sizeof *g->dense);
+        uint32_t next = 0;
+        for (size_t i = 0; i < h->n; i++) {
+            if (!listed(h, i, include_zero)) continue;
+            int64_t a[3], b[3];
+            cell_box(g, &h->hot[i], rs, a, b);
+            for (int64_t iz = a[2]; iz <= b[2]; iz++)
+                for (int64_t iy = a[1]; iy <= b[1]; iy++)
+                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
+                        uint32_t *d = &g->dense[dense_index(g, ix, iy, iz)];
+                        if (*d == GRID_NO_BUCKET) *d = next++;
+                    }
+        }
+        g->num_buckets = next ? next : 1;
+        return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
+    }
+    /* Count the distinct cells in a scratch table, then size the real one to twice that. */
+    size_t bound = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        if (!listed(h, i, include_zero)) continue;
+        int64_t a[3], b[3];
+        cell_box(g, &h->hot[i], rs, a, b);
+        bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
+    }
+    for (int round = 0; round < 2; round++) {
+        size_t size = 1024, distinct = 0;
+        while (size < 2 * bound) size *= 2;
+        uint64_t *keys = malloc(size * sizeof *keys);
+        if (!keys) goto oom;
+        memset(keys, 0xFF, size * sizeof *keys);
+        for (size_t i = 0; i < h->n; i++) {
+            if (!listed(h, i, include_zero)) continue;
+            int64_t a[3], b[3];
+            cell_box(g, &h->hot[i], rs, a, b);
+            for (int64_t iz = a[2]; iz <= b[2]; iz++)
+                for (int64_t iy = a[1]; iy <= b[1]; iy++)
+                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
+                        uint64_t key = cell_key(ix, iy, iz);
+                        size_t sl = find_slot(keys, size - 1, key);
+                        if (keys[sl] == EMPTY_KEY) { keys[sl] = key; distinct++; }
+                    }
+        }
+        if (round == 0) { free(keys); bound = distinct; continue; }
+        g->num_buckets = size;
+        if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(keys); return -1; }
+        for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = keys;
+    }
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory for the hit-point grid");
+    return -1;
+}
+
 static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
 {
     vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
-    size_t used = 0;
     for (size_t i = 0; i < h->n; i++) {
         const hp_hot_t *p = &h->hot[i];
         lo = v3(fmin(p->px, lo.x), fmin(p->py, lo.y), fmin(p->pz, lo.z));
         hi = v3(fmax(p->px, hi.x), fmax(p->py, hi.y), fmax(p->pz, hi.z));
-        used++;
     }
     double rs = g->r_safe;
     g->bmin = v3(lo.x - rs, lo.y - rs, lo.z - rs);
     g->inv_cell = 1.0 / (GRID_CELL_FACTOR * g->r0);
     const double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
     for (int a = 0; a < 3; a++) {
-        double cells = used ? floor((ext[a] + 2 * rs) * g->inv_cell) : 0;
+        double cells = h->n ? floor((ext[a] + 2 * rs) * g->inv_cell) : 0;
         if (cells >= (double)(CELL_LIMIT - 1)) {
             snprintf(err, errlen, "the scene spans more than %lld cells of the photon radius on one axis",
                      (long long)(CELL_LIMIT - 1));
@@ -204,77 +301,23 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
         }
         g->cell_max[a] = (int64_t)cells + 1;   /* one spare cell absorbs rounding */
     }
-    /* Table of distinct cells: size a power of two at least twice an upper bound. */
-    size_t bound = 0;
-    for (size_t i = 0; i < h->n; i++) {
-        if (!listed(h, i, include_zero)) continue;
-        int64_t a[3], b[3];
-        const hp_hot_t *p = &h->hot[i];
-        cell_box(g, p, rs, a, b);
-        bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
-    }
-    /* Count the distinct cells in a scratch table, then size the real one to twice that,
-     * so that look-ups probe a compact table. */
-    size_t scratch_size = 1024;
-    while (scratch_size < 2 * bound) scratch_size *= 2;
-    uint64_t *keys = malloc(scratch_size * sizeof *keys);
-    if (!keys) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
-    memset(keys, 0xFF, scratch_size * sizeof *keys);
-    size_t distinct = 0;
-    for (size_t i = 0; i < h->n; i++) {
-        if (!listed(h, i, include_zero)) continue;
-        const hp_hot_t *p = &h->hot[i];
-        int64_t a[3], b[3];
-        cell_box(g, p, rs, a, b);
-        for (int64_t iz = a[2]; iz <= b[2]; iz++)
-            for (int64_t iy = a[1]; iy <= b[1]; iy++)
-                for (int64_t ix = a[0]; ix <= b[0]; ix++) {
-                    uint64_t key = cell_key(ix, iy, iz);
-                    size_t s = find_slot(keys, scratch_size - 1, key);
-                    if (keys[s] == EMPTY_KEY) { keys[s] = key; distinct++; }
-                }
-    }
-    free(keys);
-    size_t size = 1024;
-    while (size < 2 * distinct) size *= 2;
-    if (alloc_parts(g, g->num_parts, size, err, errlen)) return -1;
-    keys = malloc(size * sizeof *keys);
-    if (!keys) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
-    memset(keys, 0xFF, size * sizeof *keys);
-    for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = keys;
-    const size_t mask = size - 1;
     g->zero_weight_skipped = 0;
-    for (int pass = 0; pass < 2; pass++) {
-        for (size_t i = 0; i < h->n; i++) {
-            if (!listed(h, i, include_zero)) {
-                if (pass == 0) g->zero_weight_skipped++;
-                continue;
-            }
-            grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
-            const hp_hot_t *p = &h->hot[i];
-            int64_t a[3], b[3];
-            cell_box(g, p, rs, a, b);
-            for (int64_t iz = a[2]; iz <= b[2]; iz++)
-                for (int64_t iy = a[1]; iy <= b[1]; iy++)
-                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
-                        uint64_t key = cell_key(ix, iy, iz);
-                        size_t s = find_slot(keys, mask, key);
-                        if (pass == 0) { keys[s] = key; part->start[s + 1]++; }
-                        else part->hp[part->start[s]++] = (uint32_t)i;
-                    }
-        }
-        for (int p = 0; p < g->num_parts; p++) {
-            grid_part_t *part = &g->parts[p];
-            if (pass == 0) {
-                if (finish_counts(part, size, err, errlen)) return -1;
-            } else {
-                /* Filling advanced start[s] to the end of slot s: shift back. */
-                for (size_t s = size; s > 0; s--) part->start[s] = part->start[s - 1];
-                part->start[0] = 0;
-            }
-        }
+    for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
+    if (number_cells(g, h, include_zero, err, errlen)) return -1;
+    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t) = g->dense ? dense_bucket : hashed_bucket;
+    /* Parts are counted and filled in parallel: each walks the hit points it owns. */
+    int failed = 0;
+#pragma omp parallel for schedule(static, 1) num_threads(g->num_parts) reduction(| : failed)
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+        cells_pass(g, h, width, include_zero, p, 0, bucket_of);
+        if (finish_counts(part, g->num_buckets, err, errlen)) { failed = 1; continue; }
+        cells_pass(g, h, width, include_zero, p, 1, bucket_of);
+        /* Filling advanced start[s] to the end of bucket s: shift back. */
+        for (size_t sl = g->num_buckets; sl > 0; sl--) part->start[sl] = part->start[sl - 1];
+        part->start[0] = 0;
     }
-    return 0;
+    return failed ? -1 : 0;
 }
 
 static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
@@ -333,6 +376,7 @@ void grid_free(grid_t *g)
 {
     if (g->parts) {
         if (g->kind == GRID_CELLS && g->num_parts > 0) free(g->parts[0].keys);
+        free(g->dense);
         for (int p = 0; p < g->num_parts; p++) {
             free(g->parts[p].start);
             free(g->parts[p].px);
@@ -354,6 +398,7 @@ uint32_t grid_bucket(const grid_t *g, vec3 x)
     case GRID_CELLS: {
         int64_t c[3];
         if (!cell_coords(g, x, c)) return GRID_NO_BUCKET;
+        if (g->dense) return g->dense[dense_index(g, c[0], c[1], c[2])];
         uint64_t key = cell_key(c[0], c[1], c[2]);
         const uint64_t *keys = g->parts[0].keys;
         size_t s = find_slot(keys, g->num_buckets - 1, key);

@@ -24,6 +24,9 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
  * candidates, scanned in sequence and mostly rejected by the radius prefilter, and was fastest. */
 #define GRID_CELL_FACTOR 2.0
 #define GRID_NO_BUCKET ((uint32_t)0xFFFFFFFFu)
+/* GRID_CELLS numbers its cells in a dense array (4 bytes per cell of the hit points' bounding box)
+ * up to this many cells, else in a hash table of the cells in use. */
+#define GRID_DENSE_MAX ((uint64_t)1 << 23)
 
 /* A part's entries (candidates) as arrays: entry k is a copy of hit point hp[k]'s geometry, so
  * that scanning a bucket reads memory in sequence (and in SIMD lanes); the changing radius stays
@@ -48,7 +51,8 @@ typedef struct {
     grid_kind_t kind;
     int num_parts;
     grid_part_t *parts;
-    size_t num_buckets;      /* smallppm: number of hit points; cells: table size (power of 2) */
+    size_t num_buckets;      /* smallppm: number of hit points; cells: distinct cells (dense) or table size */
+    uint32_t *dense;         /* GRID_CELLS with at most GRID_DENSE_MAX cells: cell -> bucket or GRID_NO_BUCKET */
     vec3 bmin;               /* cell origin */
     double inv_cell;         /* 1 / cell side */
     int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */

@@ -2,7 +2,8 @@
 # The bucket-major update (--scan bucket, the default: model/update_batch.c) against the
 # photon-major oracle (--scan photon): the same image bits, final hit-point state and counts,
 # for every grid, both precisions, 1 and 2 threads, with and without the AVX2 screening
-# (PREE_NO_AVX2=1), and a triangle-mesh scene with glass.
+# (PREE_NO_AVX2=1: the screening and the sphere group), and a triangle-mesh scene with glass;
+# and the cells grid through its hash table (PREE_GRID_HASHED=1) against its dense cell map.
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 hashes() { echo "$(json "$1" image_hash)/$(json "$1" state_hash)/$(json "$1" hpuo_candidates)/$(json "$1" hpuo_normal_passed)/$(json "$1" hpuo_accepted)"; }
@@ -25,4 +26,13 @@ for scene in cornell3 cornell-water; do
       expect_eq "$scene $prec $grid scalar bucket = photon" "$(hashes "$TMP/s.json")" "$ref"
     done
   done
+done
+# The cells grid numbered by its hash table (what scenes with very many cells use) instead of the
+# dense cell map: the same bits.
+for prec in double fp32; do
+  size="--width 80 --height 60 --photons 40000"
+  run "$PREE" render "$ROOT/scenes/cornell3" $size --precision $prec --threads 2 --out "$TMP/d.ppm" --stats "$TMP/d.json" --quiet
+  run env PREE_GRID_HASHED=1 "$PREE" render "$ROOT/scenes/cornell3" $size --precision $prec --threads 2 \
+      --out "$TMP/h.ppm" --stats "$TMP/h.json" --quiet
+  expect_eq "cornell3 $prec cells hashed = dense" "$(hashes "$TMP/h.json")" "$(hashes "$TMP/d.json")"
 done
