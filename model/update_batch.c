@@ -71,6 +71,7 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
     }
     /* Gather the hits in key order: independent loads, which the processor overlaps. */
     if (grow((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;
+#pragma omp parallel for schedule(static)
     for (size_t i = 0; i < m; i++) {
         const uint32_t hit = (uint32_t)b->key[i];
         const photon_hit_t *ph = b->hit[hit];
