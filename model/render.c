@@ -16,7 +16,7 @@
 #include "render.h"
 #include "update_batch.h"
 
-#define PHOTON_BLOCK 128000u  /* whole batches of 1000 photons */
+#define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
 
 static long peak_rss_kb(void)
