@@ -13,9 +13,10 @@
  * predicts where the operations of a candidate photon would issue (behind the operations
  * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
  * hit point issued or predicted within the last 11 cycles), hit-point bank clashes within an
- * issue cycle, lanes left empty (starvation) and a shortfall of buffered operations below a
- * reserve. The photon's candidates are ordered greedily against the same costs. The oldest
- * eligible photon with no cost is taken, else the cheapest of the first few eligible ones.
+ * issue cycle and lanes left empty (starvation). The photon's candidates are ordered greedily
+ * against the same costs (ties: the candidate whose bank more of the photon's candidates share
+ * goes first). The oldest eligible photon with no cost is taken, else the cheapest of the first
+ * few eligible ones.
  * Everything is integer arithmetic: deterministic.
  *
  * API
