@@ -14,6 +14,8 @@
  *           the driver's p_k = p_(k-1) - N^P_k (mod P), so that an offer spanning two photons
  *           reads one index bank twice (stage-A bank conflicts in update mode). The results
  *           must stay bit-exact and the abank counter must be non-zero.
+ * In the other scenarios the driver places the entries as docs/pree_top.md "Host protocol" says,
+ * and the update pass's abank counter must be zero.
  * Exit status 0 when every word matches, 1 on a mismatch, 2 on a usage error. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -256,6 +258,11 @@ int main(int argc, char **argv)
     }
     if (abank && cnt[CNT_ABANK] == 0) {
         printf("MISMATCH abank: misplaced index entries caused no stage-A bank conflict in update mode\n");
+        bad++;
+    }
+    if (!abank && cnt[CNT_ABANK] != 0) {   /* the driver's placement promises none */
+        printf("MISMATCH abank: %llu stage-A bank conflict cycles in update mode with the driver's index placement\n",
+               (unsigned long long)cnt[CNT_ABANK]);
         bad++;
     }
     printf("top_bench preu=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
