@@ -116,6 +116,9 @@ static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, cons
     return 0;
 }
 
+static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
+                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s);
+
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
 #define HAVE_SCREEN_AVX2 1
@@ -162,16 +165,65 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
     st->normal_passed += passed;
     return screen_double(h, rs2, skip_radius, ph, e, c, st, s);
 }
+
+/* fp32 mode four entries at a time: the host's double tests as above, then the PREU's binary32
+ * distance (RNE conversions of the double coordinates, separate float multiplies and adds in the
+ * scalar order) against the binary32 radius. */
+__attribute__((target("avx2,popcnt")))
+static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
+                            const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
+{
+    const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
+    const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
+    const __m128 fx = _mm_set1_ps(fp32_from_bits(preu_f32(ph->x))), fy = _mm_set1_ps(fp32_from_bits(preu_f32(ph->y))),
+                 fz = _mm_set1_ps(fp32_from_bits(preu_f32(ph->z)));
+    const __m256d far_lim = _mm256_set1_pd(skip_radius ? rs2 : INFINITY);
+    const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
+    const float *r2f = (const float *)(const void *)h->r2_f32;
+    unsigned long long skipped = 0, passed = 0;
+    size_t c = 0;
+    for (; c + 4 <= e->count; c += 4) {
+        const __m256d px = _mm256_loadu_pd(e->px + c), py = _mm256_loadu_pd(e->py + c), pz = _mm256_loadu_pd(e->pz + c);
+        __m256d vx = _mm256_sub_pd(px, x), vy = _mm256_sub_pd(py, y), vz = _mm256_sub_pd(pz, z);
+        __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(vz, vz));
+        __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
+                                                  _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
+                                    _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
+        __m256d far = _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ);
+        __m256d pass = _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ));
+        const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
+        skipped += (unsigned)__builtin_popcount((unsigned)mf);
+        passed += (unsigned)__builtin_popcount((unsigned)mp);
+        if (!mp) continue;
+        __m128 dx = _mm_sub_ps(_mm256_cvtpd_ps(px), fx), dy = _mm_sub_ps(_mm256_cvtpd_ps(py), fy),
+               dz = _mm_sub_ps(_mm256_cvtpd_ps(pz), fz);
+        __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+        __m128 pass4 = _mm_castsi128_ps(_mm256_cvtpd_epi32(_mm256_and_pd(pass, _mm256_set1_pd(-1.0))));
+        __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
+        __m128 r2 = _mm_mask_i32gather_ps(_mm_setzero_ps(), r2f, idx, pass4, 4);
+        int ma = mp & _mm_movemask_ps(_mm_cmp_ps(d2, r2, _CMP_LE_OQ));
+        if (!ma) continue;
+        float d2s[4];
+        _mm_storeu_ps(d2s, d2);
+        for (; ma; ma &= ma - 1) {
+            const int l = __builtin_ctz((unsigned)ma);
+            if (keep(s, ph->hit, e->hp[c + l], d2s[l])) return -1;
+        }
+    }
+    st->skipped_radius += skipped;
+    st->normal_passed += passed;
+    return screen_fp32(h, rs2, skip_radius, ph, e, c, st, s);
+}
 #endif
 
 /* Phase 1 for one hit (fp32 mode): the host's tests in double, the PREU's distance in binary32
  * (the same expressions as update.c's photon-major scan). */
 static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
+                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s)
 {
     const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
-    for (size_t c = 0; c < e->count; c++) {
+    for (size_t c = c0; c < e->count; c++) {
         if (skip_radius) {
             double vx = e->px[c] - ph->x, vy = e->py[c] - ph->y, vz = e->pz[c] - ph->z;
             if (vx * vx + vy * vy + vz * vz > rs2) { st->skipped_radius++; continue; }
@@ -220,10 +272,12 @@ int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, 
         if (cand.count) {
             for (size_t j = i; j < end; j++) {
                 int rc;
-                if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, &t, s);
 #ifdef HAVE_SCREEN_AVX2
-                else if (avx2) rc = screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s);
+                if (avx2) rc = prec == PRECISION_DOUBLE ? screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s)
+                                                        : screen_fp32_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s);
+                else
 #endif
+                if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s);
                 else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s);
                 if (rc) return -1;
             }
