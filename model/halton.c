@@ -21,6 +21,18 @@ double halton(int b, long long j)
     const int p = halton_primes[b];
     const double f = 1.0 / (double)p;
     double h = 0.0, fct = f;
+    if (p == 2 && j >= 0 && j <= 0xFFFFFFFFll) {
+        /* Base 2: digit 1 stays 1, fct is an exact power of two and every partial sum has at
+         * most 32 significant bits, so the loop's result is exactly the bit-reversed index
+         * over 2^32. */
+        uint32_t k = (uint32_t)j;
+        k = (k >> 16) | (k << 16);
+        k = ((k & 0xFF00FF00u) >> 8) | ((k & 0x00FF00FFu) << 8);
+        k = ((k & 0xF0F0F0F0u) >> 4) | ((k & 0x0F0F0F0Fu) << 4);
+        k = ((k & 0xCCCCCCCCu) >> 2) | ((k & 0x33333333u) << 2);
+        k = ((k & 0xAAAAAAAAu) >> 1) | ((k & 0x55555555u) << 1);
+        return (double)k * 0x1p-32;
+    }
     if (j >= 0 && j <= 0xFFFFFFFFll) {
         /* The same digits without a division instruction. */
         const uint32_t up = (uint32_t)p;

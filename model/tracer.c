@@ -81,26 +81,36 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
     double tg[SPHERE_GROUP_MAX];
     const int grouped = tr->spheres_per_prim > 1;
     if (grouped) sphere_group_t_all(&tr->group, ctx->o, ctx->d, TRACER_EPSILON, tg);
+    /* The nearest sphere that may replace the current hit: t beats the best so far (ties to the
+     * lower index) and, while a triangle holds the hit, is not beyond it. Choosing the minimum
+     * of these at once is what accepting them one by one in index order ends with: every sphere
+     * accepted in that order passes these tests against the starting state, and t only falls. */
+    const double best0 = ctx->best_t, tfar0 = (double)rh->ray.tfar;
+    const int best_id0 = ctx->best_sphere, triangle_holds = rh->hit.geomID != args->geomID;
+    int pick = -1;
+    double pick_t = INFINITY;
     for (int id = first; id < first + tr->spheres_per_prim; id++) {
-        double t = grouped ? tg[id] : sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
+        double t = grouped ? tg[id - first] : sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
         if (t == 0) continue;
-        if (!(t < ctx->best_t || (t == ctx->best_t && id < ctx->best_sphere))) continue;
+        if (!(t < best0 || (t == best0 && id < best_id0))) continue;
         /* A triangle already committed closer (float t) wins. */
-        if ((double)rh->ray.tfar < t && rh->hit.geomID != args->geomID) continue;
-        ctx->best_t = t;
-        ctx->best_sphere = id;
-        float tf = (float)t;
-        if ((double)tf < t && tf < FLT_MAX) {
-            /* The next float up (t > 0): nextafterf(tf, FLT_MAX) without the call. */
-            uint32_t bits;
-            memcpy(&bits, &tf, sizeof bits);
-            bits++;
-            memcpy(&tf, &bits, sizeof tf);
-        }
-        rh->ray.tfar = tf;
-        rh->hit.geomID = args->geomID;
-        rh->hit.primID = args->primID;
+        if (triangle_holds && tfar0 < t) continue;
+        if (pick < 0 || t < pick_t) { pick = id; pick_t = t; }
     }
+    if (pick < 0) return;
+    ctx->best_t = pick_t;
+    ctx->best_sphere = pick;
+    float tf = (float)pick_t;
+    if ((double)tf < pick_t && tf < FLT_MAX) {
+        /* The next float up (t > 0): nextafterf(tf, FLT_MAX) without the call. */
+        uint32_t bits;
+        memcpy(&bits, &tf, sizeof bits);
+        bits++;
+        memcpy(&tf, &bits, sizeof tf);
+    }
+    rh->ray.tfar = tf;
+    rh->hit.geomID = args->geomID;
+    rh->hit.primID = args->primID;
 }
 
 static void sphere_occluded(const struct RTCOccludedFunctionNArguments *args)
