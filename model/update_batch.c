@@ -15,6 +15,7 @@
 #include "update_batch.h"
 
 #define RADIX_BITS 11
+#define APPLY_AHEAD 8   /* kept candidates prefetched ahead in the apply phase */
 #define RADIX_SIZE (1u << RADIX_BITS)
 
 static int grow(void **p, size_t *cap, size_t need, size_t sz)
@@ -288,6 +289,19 @@ int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, 
     if (group_by_hit(s, b->n)) return -1;
     const kept_t *k = s->sorted;
     for (size_t i = 0; i < s->n_kept; i++) {
+        if (i + APPLY_AHEAD < s->n_kept) {
+            /* The state an update a few candidates on may touch: independent misses overlap. */
+            const uint32_t f = k[i + APPLY_AHEAD].hp;
+            if (prec == PRECISION_DOUBLE) {
+                __builtin_prefetch(&h->r2[f], 1);
+                __builtin_prefetch(&h->hot[f].count, 1);
+                __builtin_prefetch(&h->flux[f], 1);
+                __builtin_prefetch(&h->weight[f]);
+            } else {
+                __builtin_prefetch(&h->r2_f32[f], 1);
+                __builtin_prefetch(&h->fp32[f], 1);
+            }
+        }
         const photon_hit_t *ph = b->hit[k[i].hit];
         const uint32_t e = k[i].hp;
         if (prec == PRECISION_DOUBLE) {
