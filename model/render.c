@@ -18,6 +18,7 @@
 
 #define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
+#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
 static long peak_rss_kb(void)
 {
@@ -152,6 +153,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     res->rgb = calloc(npix * 3, sizeof *res->rgb);
     tracer_t *tr = NULL;
     uint32_t *perm = NULL;
+    uint16_t *owner = NULL;
     update_batch_t batch;
     memset(&batch, 0, sizeof batch);
     update_scratch_t *scratch = NULL;
@@ -188,7 +190,14 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     perm = hp_order_spatial(&res->hp, opt->width, T, st->r0);
     if (!perm || hp_order_apply(&res->hp, perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
     if (opt->sink) opt->sink->addr = perm;
-    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, T, !skip, err, errlen)) goto done;
+    /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
+     * grid of every hit point and routes what it keeps to the owning part. */
+    const int photon_major = opt->sink || opt->scan == SCAN_PHOTON;
+    owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *owner);
+    if (!owner) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+    for (size_t i = 0; i < res->hp.n; i++) owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, T);
+    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, photon_major ? T : 1, !skip, err, errlen))
+        goto done;
     st->r_safe = grid.r_safe;
     for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
     st->sec_grid = omp_get_wtime() - t;
@@ -212,7 +221,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         }
         st->sec_trace += omp_get_wtime() - t;
         t = omp_get_wtime();
-        if (opt->sink || opt->scan == SCAN_PHOTON) {
+        if (photon_major) {
 #pragma omp parallel num_threads(T)
             {
                 const int p = omp_get_thread_num();
@@ -221,10 +230,21 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
             }
         } else {
             int failed = update_batch_prepare(&batch, bb->chunk, TRACE_CHUNKS, grid.num_buckets);
-#pragma omp parallel num_threads(T) reduction(| : failed)
+            batch.owner = T > 1 ? owner : NULL;
+            for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&scratch[p], T);
             if (!failed) {
-                const int p = omp_get_thread_num();
-                failed |= update_batch_part(&res->hp, &grid, p, opt->precision, skip, &batch, &ust[p], &scratch[p]);
+                /* Screening: any thread, bucket groups; applying: each thread its own part. */
+#pragma omp parallel num_threads(T) reduction(| : failed)
+                {
+                    const int p = omp_get_thread_num();
+#pragma omp for schedule(dynamic, 1)
+                    for (size_t gi = 0; gi < batch.n_groups; gi += SCREEN_GROUPS)
+                        failed |= update_batch_screen(&res->hp, &grid, opt->precision, skip, &batch, gi, gi + SCREEN_GROUPS,
+                                                      &ust[p], &scratch[p]);
+#pragma omp for schedule(static, 1)
+                    for (int q = 0; q < T; q++)
+                        failed |= update_batch_apply(&res->hp, opt->precision, &batch, q, scratch, T, &ust[p]);
+                }
             }
             if (failed) {
                 snprintf(err, errlen, "out of memory in the photon pass");
@@ -281,6 +301,7 @@ done:
     }
     grid_free(&grid);
     free(perm);
+    free(owner);
     update_batch_free(&batch);
     if (scratch)
         for (int p = 0; p < T; p++) update_batch_scratch_free(&scratch[p]);

@@ -13,6 +13,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "update_batch.h"
+#if defined(__x86_64__) && defined(__GNUC__)
+#include <immintrin.h>
+#define HAVE_SCREEN_AVX2 1
+#endif
 
 #define RADIX_BITS 11
 #define APPLY_AHEAD 8   /* kept candidates prefetched ahead in the apply phase */
@@ -36,6 +40,7 @@ void update_batch_free(update_batch_t *b)
     free(b->key);
     free(b->tmp);
     free(b->sorted);
+    free(b->group);
     memset(b, 0, sizeof *b);
 }
 
@@ -70,6 +75,16 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
         uint64_t *t = b->key; b->key = b->tmp; b->tmp = t;
         size_t tc = b->key_cap; b->key_cap = b->tmp_cap; b->tmp_cap = tc;
     }
+    /* Groups: runs of one bucket. */
+    if (grow((void **)&b->group, &b->group_cap, m + 1, sizeof *b->group)) return -1;
+    size_t ng = 0;
+    for (size_t i = 0; i < m; i++)
+        if (i == 0 || (b->key[i] >> 32) != (b->key[i - 1] >> 32)) b->group[ng++] = (uint32_t)i;
+    b->group[ng] = (uint32_t)m;
+    b->n_groups = ng;
+#ifdef HAVE_SCREEN_AVX2
+    b->avx2 = !getenv("PREE_NO_AVX2") && __builtin_cpu_supports("avx2");
+#endif
     /* Gather the hits in key order: independent loads, which the processor overlaps. */
     if (grow((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;
 #pragma omp parallel for schedule(static)
@@ -87,22 +102,38 @@ typedef struct { uint32_t hit, hp; double v2; } kept_t;
 
 void update_batch_scratch_free(update_scratch_t *s)
 {
-    free(s->kept);
+    for (int p = 0; p < s->num_lists; p++) free(s->list[p].v);
+    free(s->list);
     free(s->sorted);
     free(s->start);
     memset(s, 0, sizeof *s);
 }
 
-static int keep(update_scratch_t *s, uint32_t hit, uint32_t hp, double v2)
+int update_batch_scratch_reset(update_scratch_t *s, int num_parts)
 {
-    if (s->n_kept == s->kept_cap && grow(&s->kept, &s->kept_cap, s->n_kept + 1, sizeof(kept_t))) return -1;
-    ((kept_t *)s->kept)[s->n_kept++] = (kept_t){hit, hp, v2};
+    if (s->num_lists != num_parts) {
+        for (int p = 0; p < s->num_lists; p++) free(s->list[p].v);
+        free(s->list);
+        s->list = calloc((size_t)num_parts, sizeof *s->list);
+        s->num_lists = s->list ? num_parts : 0;
+        if (!s->list) return -1;
+    }
+    for (int p = 0; p < num_parts; p++) s->list[p].n = 0;
+    return 0;
+}
+
+/* Keep a candidate in the list of the part that owns its hit point. */
+static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint32_t hp, double v2)
+{
+    kept_list_t *l = &s->list[b->owner ? b->owner[hp] : 0];
+    if (l->n == l->cap && grow(&l->v, &l->cap, l->n + 1, sizeof(kept_t))) return -1;
+    ((kept_t *)l->v)[l->n++] = (kept_t){hit, hp, v2};
     return 0;
 }
 
 /* Phase 1 for one hit against its bucket's entries (double mode), entries [c0, count). */
 static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                         const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s)
+                         const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const double x = ph->x, y = ph->y, z = ph->z;
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
@@ -112,24 +143,22 @@ static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, cons
         if (skip_radius && v2 > rs2) { st->skipped_radius++; continue; }
         if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         st->normal_passed++;
-        if (v2 <= h->r2[e->hp[c]] && keep(s, ph->hit, e->hp[c], v2)) return -1;
+        if (v2 <= h->r2[e->hp[c]] && keep(s, b, ph->hit, e->hp[c], v2)) return -1;
     }
     return 0;
 }
 
 static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s);
+                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b);
 
-#if defined(__x86_64__) && defined(__GNUC__)
-#include <immintrin.h>
-#define HAVE_SCREEN_AVX2 1
+#ifdef HAVE_SCREEN_AVX2
 /* The same tests four entries at a time. Every lane computes the scalar expressions with the
  * same operations in the same order (separate IEEE multiplies and adds, no fused ones), and the
  * ordered comparisons are false for NaN exactly like the scalar ones; kept candidates come out
  * in entry order. */
 __attribute__((target("avx2,popcnt")))
 static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                              const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
+                              const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
     const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
@@ -159,12 +188,12 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
         _mm256_storeu_pd(v2s, v2);
         for (; ma; ma &= ma - 1) {
             const int l = __builtin_ctz((unsigned)ma);
-            if (keep(s, ph->hit, e->hp[c + l], v2s[l])) return -1;
+            if (keep(s, b, ph->hit, e->hp[c + l], v2s[l])) return -1;
         }
     }
     st->skipped_radius += skipped;
     st->normal_passed += passed;
-    return screen_double(h, rs2, skip_radius, ph, e, c, st, s);
+    return screen_double(h, rs2, skip_radius, ph, e, c, st, s, b);
 }
 
 /* fp32 mode four entries at a time: the host's double tests as above, then the PREU's binary32
@@ -172,7 +201,7 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
  * scalar order) against the binary32 radius. */
 __attribute__((target("avx2,popcnt")))
 static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                            const grid_cands_t *e, update_stats_t *st, update_scratch_t *s)
+                            const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
     const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
@@ -208,19 +237,19 @@ static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, c
         _mm_storeu_ps(d2s, d2);
         for (; ma; ma &= ma - 1) {
             const int l = __builtin_ctz((unsigned)ma);
-            if (keep(s, ph->hit, e->hp[c + l], d2s[l])) return -1;
+            if (keep(s, b, ph->hit, e->hp[c + l], d2s[l])) return -1;
         }
     }
     st->skipped_radius += skipped;
     st->normal_passed += passed;
-    return screen_fp32(h, rs2, skip_radius, ph, e, c, st, s);
+    return screen_fp32(h, rs2, skip_radius, ph, e, c, st, s, b);
 }
 #endif
 
 /* Phase 1 for one hit (fp32 mode): the host's tests in double, the PREU's distance in binary32
  * (the same expressions as update.c's photon-major scan). */
 static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s)
+                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
@@ -233,63 +262,72 @@ static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const 
         st->normal_passed++;
         float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
-        if (d2 <= fp32_from_bits(h->r2_f32[e->hp[c]]) && keep(s, ph->hit, e->hp[c], d2)) return -1;
+        if (d2 <= fp32_from_bits(h->r2_f32[e->hp[c]]) && keep(s, b, ph->hit, e->hp[c], d2)) return -1;
     }
     return 0;
 }
 
-/* Group the kept candidates by hit (counting sort; photon order, stable within a hit). */
-static int group_by_hit(update_scratch_t *s, size_t n_hits)
+/* Group part p's kept candidates of every screening thread by hit (counting sort). A hit's
+ * candidates all come from one thread (one bucket, screened whole), in entry order. */
+static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthreads, int p, size_t n_hits)
 {
-    if (grow(&s->sorted, &s->sorted_cap, s->n_kept, sizeof(kept_t)) ||
-        grow((void **)&s->start, &s->start_cap, n_hits + 1, sizeof *s->start))
+    size_t total = 0;
+    for (int t = 0; t < nthreads; t++) total += all[t].list[p].n;
+    if (grow(&out->sorted, &out->sorted_cap, total, sizeof(kept_t)) ||
+        grow((void **)&out->start, &out->start_cap, n_hits + 1, sizeof *out->start))
         return -1;
-    const kept_t *k = s->kept;
-    kept_t *out = s->sorted;
-    memset(s->start, 0, (n_hits + 1) * sizeof *s->start);
-    for (size_t i = 0; i < s->n_kept; i++) s->start[k[i].hit + 1]++;
-    for (size_t i = 0; i < n_hits; i++) s->start[i + 1] += s->start[i];
-    for (size_t i = 0; i < s->n_kept; i++) out[s->start[k[i].hit]++] = k[i];
+    kept_t *dst = out->sorted;
+    uint32_t *start = out->start;
+    memset(start, 0, (n_hits + 1) * sizeof *start);
+    for (int t = 0; t < nthreads; t++) {
+        const kept_t *k = all[t].list[p].v;
+        for (size_t i = 0; i < all[t].list[p].n; i++) start[k[i].hit + 1]++;
+    }
+    for (size_t i = 0; i < n_hits; i++) start[i + 1] += start[i];
+    for (int t = 0; t < nthreads; t++) {
+        const kept_t *k = all[t].list[p].v;
+        for (size_t i = 0; i < all[t].list[p].n; i++) dst[start[k[i].hit]++] = k[i];
+    }
+    out->n_sorted = total;
     return 0;
 }
 
-int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
-                      const update_batch_t *b, update_stats_t *st, update_scratch_t *s)
+int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec, int skip_radius,
+                        const update_batch_t *b, size_t first, size_t last, update_stats_t *st, update_scratch_t *s)
 {
-    update_stats_t t = *st;
     const double rs2 = g->r_safe * g->r_safe;
-    s->n_kept = 0;
-    /* Phase 1: bucket by bucket. */
     const batch_hit_t *sh = b->sorted;
-#ifdef HAVE_SCREEN_AVX2
-    const int avx2 = !getenv("PREE_NO_AVX2") && __builtin_cpu_supports("avx2");
-#endif
-    for (size_t i = 0; i < b->n_keyed;) {
-        const uint32_t bucket = sh[i].bucket;
-        size_t end = i + 1;
-        while (end < b->n_keyed && sh[end].bucket == bucket) end++;
-        const grid_cands_t cand = grid_bucket_cands(g, p, bucket);
+    update_stats_t t = *st;
+    for (size_t group = first; group < last && group < b->n_groups; group++) {
+        const size_t i = b->group[group], end = b->group[group + 1];
+        const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
         t.candidates += cand.count * (end - i);
-        if (cand.count) {
-            for (size_t j = i; j < end; j++) {
-                int rc;
+        if (!cand.count) continue;
+        for (size_t j = i; j < end; j++) {
+            int rc;
 #ifdef HAVE_SCREEN_AVX2
-                if (avx2) rc = prec == PRECISION_DOUBLE ? screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s)
-                                                        : screen_fp32_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s);
-                else
+            if (b->avx2) rc = prec == PRECISION_DOUBLE ? screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s, b)
+                                                       : screen_fp32_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
+            else
 #endif
-                if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s);
-                else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s);
-                if (rc) return -1;
-            }
+            if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s, b);
+            else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s, b);
+            if (rc) return -1;
         }
-        i = end;
     }
-    /* Phase 2: photon order, the current radius decides. */
-    if (group_by_hit(s, b->n)) return -1;
+    *st = t;
+    return 0;
+}
+
+int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b, int p,
+                       update_scratch_t *all, int nthreads, update_stats_t *st)
+{
+    update_scratch_t *s = &all[p];
+    if (group_by_hit(s, all, nthreads, p, b->n)) return -1;
     const kept_t *k = s->sorted;
-    for (size_t i = 0; i < s->n_kept; i++) {
-        if (i + APPLY_AHEAD < s->n_kept) {
+    unsigned long long accepted = 0;
+    for (size_t i = 0; i < s->n_sorted; i++) {
+        if (i + APPLY_AHEAD < s->n_sorted) {
             /* The state an update a few candidates on may touch: independent misses overlap. */
             const uint32_t f = k[i + APPLY_AHEAD].hp;
             if (prec == PRECISION_DOUBLE) {
@@ -313,8 +351,8 @@ int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, 
             preu_update_accepted(&h->fp32[e], &ph32);
             h->r2_f32[e] = h->fp32[e].r2;
         }
-        t.accepted++;
+        accepted++;
     }
-    *st = t;
+    st->accepted += accepted;
     return 0;
 }

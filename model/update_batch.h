@@ -11,28 +11,46 @@ typedef struct {
     uint32_t hit, bucket;
 } batch_hit_t;
 
-/* The block's hits in photon order, and their keys grouped by bucket (shared by all parts). */
+/* The block's hits in photon order, and their keys grouped by bucket (shared by all threads). */
 typedef struct {
     const photon_hit_t **hit;   /* hit index -> hit */
     uint64_t *key, *tmp;        /* bucket << 32 | hit index, sorted by bucket (stable) */
     batch_hit_t *sorted;        /* the keyed hits in key order */
-    size_t n, n_keyed, hit_cap, key_cap, tmp_cap, sorted_cap;
+    uint32_t *group;            /* group g (one bucket) is sorted[group[g] .. group[g+1]) */
+    size_t n, n_keyed, n_groups, hit_cap, key_cap, tmp_cap, sorted_cap, group_cap;
+    const uint16_t *owner;      /* set by the caller: owning part of each hit point (NULL: all 0) */
+    int avx2;                   /* screen in AVX2 lanes */
 } update_batch_t;
 
-/* One part's working memory, reused from block to block. */
+/* A part's kept candidates from one screening thread. */
+typedef struct { void *v; size_t n, cap; } kept_list_t;
+
+/* One thread's working memory, reused from block to block: what it kept while screening (a list
+ * per owning part), and, as the applier of part p, that part's candidates grouped by hit. */
 typedef struct {
-    void *kept, *sorted;
+    kept_list_t *list;
+    int num_lists;
+    void *sorted;
     uint32_t *start;
-    size_t n_kept, kept_cap, sorted_cap, start_cap;
+    size_t n_sorted, sorted_cap, start_cap;
 } update_scratch_t;
 
 /* Collect chunks[0..nchunks) (in photon order) and group them by bucket. 0 or -1 (memory). */
 int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigned nchunks, size_t num_buckets);
 void update_batch_free(update_batch_t *b);
+
+/* Empty a thread's kept lists, one per part. 0 or -1 (memory). */
+int update_batch_scratch_reset(update_scratch_t *s, int num_parts);
 void update_batch_scratch_free(update_scratch_t *s);
 
-/* Apply the block to the hit points of part p. 0 or -1 (memory). */
-int update_batch_part(hitpoints_t *h, const grid_t *g, int p, precision_t prec, int skip_radius,
-                      const update_batch_t *b, update_stats_t *st, update_scratch_t *s);
+/* Phase 1 for bucket groups [first, last) (any thread; g has one part holding every hit point):
+ * counts into st, kept candidates into s's lists. 0 or -1 (memory). */
+int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec, int skip_radius,
+                        const update_batch_t *b, size_t first, size_t last, update_stats_t *st, update_scratch_t *s);
+
+/* Phase 2 for part p, after every group is screened: the candidates that all nthreads threads
+ * kept for part p (all[0..nthreads)), in photon order; all[p] is p's working memory. */
+int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b, int p,
+                       update_scratch_t *all, int nthreads, update_stats_t *st);
 
 #endif
