@@ -340,6 +340,7 @@ static void fill_entries(grid_t *g, const hitpoints_t *h)
 {
     for (int p = 0; p < g->num_parts; p++) {
         grid_part_t *part = &g->parts[p];
+#pragma omp parallel for schedule(static)
         for (size_t k = 0; k < part->num_entries; k++) {
             const hp_hot_t *hp = &h->hot[part->hp[k]];
             part->px[k] = hp->px; part->py[k] = hp->py; part->pz[k] = hp->pz;

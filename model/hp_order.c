@@ -36,14 +36,6 @@ static uint32_t quantize(double x, double lo, double scale)
 
 typedef struct { uint64_t key; uint32_t part, index; } sort_item_t;
 
-static int by_part_key_index(const void *a, const void *b)
-{
-    const sort_item_t *x = a, *y = b;
-    if (x->part != y->part) return x->part < y->part ? -1 : 1;
-    if (x->key != y->key) return x->key < y->key ? -1 : 1;
-    return x->index < y->index ? -1 : (x->index > y->index);
-}
-
 uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, double cell)
 {
     const size_t n = h->n;
@@ -63,9 +55,36 @@ uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, doubl
                        spread3(quantize(p->pz, lo[2], scale)) << 2;
         items[i] = (sort_item_t){key, (uint32_t)grid_owner(h, i, width, num_parts), (uint32_t)i};
     }
-    qsort(items, n, sizeof *items, by_part_key_index);
+    /* Stable LSD radix sort on (part, key); items start in index order, so ties keep it. */
+    sort_item_t *tmp = malloc((n ? n : 1) * sizeof *tmp);
+    if (!tmp) { free(perm); free(items); return NULL; }
+    uint32_t max_part = 0;
+    uint64_t key_bits = 0;
+    for (size_t i = 0; i < n; i++) {
+        max_part = items[i].part > max_part ? items[i].part : max_part;
+        key_bits |= items[i].key;
+    }
+    for (int pass = 0; pass < 8 + 2; pass++) {
+        /* Passes 0-7: the 64-bit key 8 bits at a time; 8-9: the part (16 bits). */
+        const int shift = pass < 8 ? 8 * pass : 8 * (pass - 8);
+        /* A digit that is 0 in every item leaves the order as it is. */
+        if (pass < 8 && ((key_bits >> shift) & 0xFF) == 0) continue;
+        if (pass >= 8 && (max_part >> shift) == 0) break;
+        size_t count[257] = {0};
+        for (size_t i = 0; i < n; i++) {
+            const uint64_t v = pass < 8 ? items[i].key : items[i].part;
+            count[((v >> shift) & 0xFF) + 1]++;
+        }
+        for (int d = 0; d < 256; d++) count[d + 1] += count[d];
+        for (size_t i = 0; i < n; i++) {
+            const uint64_t v = pass < 8 ? items[i].key : items[i].part;
+            tmp[count[(v >> shift) & 0xFF]++] = items[i];
+        }
+        sort_item_t *t = items; items = tmp; tmp = t;
+    }
     for (size_t k = 0; k < n; k++) perm[k] = items[k].index;
     free(items);
+    free(tmp);
     return perm;
 }
 
@@ -77,10 +96,20 @@ static int permute(void **arr, size_t sz, size_t n, size_t cap, const uint32_t *
     unsigned char *dst = malloc((cap ? cap : 1) * sz);
     if (!dst) return -1;
     const unsigned char *src = *arr;
-    for (size_t k = 0; k < n; k++) {
-        if (scatter) memcpy(dst + (size_t)perm[k] * sz, src + k * sz, sz);
-        else memcpy(dst + k * sz, src + (size_t)perm[k] * sz, sz);
+    /* Constant sizes let the compiler turn each copy into a few moves. */
+#define PERMUTE_COPY(SZ)                                                                  \
+    for (size_t k = 0; k < n; k++) {                                                      \
+        if (scatter) memcpy(dst + (size_t)perm[k] * (SZ), src + k * (SZ), (SZ));          \
+        else memcpy(dst + k * (SZ), src + (size_t)perm[k] * (SZ), (SZ));                  \
     }
+    switch (sz) {
+    case 4: PERMUTE_COPY(4) break;
+    case 8: PERMUTE_COPY(8) break;
+    case 24: PERMUTE_COPY(24) break;
+    case 64: PERMUTE_COPY(64) break;
+    default: PERMUTE_COPY(sz) break;
+    }
+#undef PERMUTE_COPY
     free(*arr);
     *arr = dst;
     return 0;
