@@ -67,7 +67,10 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
     const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
 #pragma omp parallel for schedule(dynamic, 1) reduction(+ : failed, no_cell)
     for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-        photon_hits_t *out = &bb->chunk[c];
+        /* Work on a copy: neighbouring chunks share cache lines, and their counters change with
+         * every segment and hit. */
+        photon_hits_t local = bb->chunk[c];
+        photon_hits_t *out = &local;
         out->n = 0;
         uint64_t lo = first + c * per, hi = lo + per;
         if (hi > first + count) hi = first + count;
@@ -85,6 +88,7 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
             }
             out->n = keep;
         }
+        bb->chunk[c] = local;
     }
     bb->no_cell += no_cell;
     return failed ? -1 : 0;
