@@ -27,6 +27,8 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 /* GRID_CELLS numbers its cells in a dense array (4 bytes per cell of the hit points' bounding box)
  * up to this many cells, else in a hash table of the cells in use. */
 #define GRID_DENSE_MAX ((uint64_t)1 << 23)
+/* Entries allocated beyond the last, so that four-wide loads at a bucket's end stay in bounds. */
+#define GRID_ENTRY_PAD 4
 
 /* A part's entries (candidates) as arrays: entry k is a copy of hit point hp[k]'s geometry, so
  * that scanning a bucket reads memory in sequence (and in SIMD lanes); the changing radius stays

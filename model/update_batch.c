@@ -152,6 +152,16 @@ static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const 
                        const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b);
 
 #ifdef HAVE_SCREEN_AVX2
+/* All-ones in the first min(rem, 4) lanes. The last vector of a bucket reads up to three entries
+ * beyond it (the next bucket's, or the grid's padding: grid.c allocates GRID_ENTRY_PAD more);
+ * their lanes are masked out of every count, gather and kept candidate. */
+__attribute__((target("avx2")))
+static inline __m256d valid_lanes(size_t rem)
+{
+    static const int64_t ones[8] = {-1, -1, -1, -1, 0, 0, 0, 0};
+    return _mm256_loadu_pd((const double *)(const void *)(ones + 4 - (rem < 4 ? rem : 4)));
+}
+
 /* The same tests four entries at a time. Every lane computes the scalar expressions with the
  * same operations in the same order (separate IEEE multiplies and adds, no fused ones), and the
  * ordered comparisons are false for NaN exactly like the scalar ones; kept candidates come out
@@ -166,7 +176,8 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
     const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
     unsigned long long skipped = 0, passed = 0;
     size_t c = 0;
-    for (; c + 4 <= e->count; c += 4) {
+    for (; c < e->count; c += 4) {
+        const __m256d valid = valid_lanes(e->count - c);
         __m256d vx = _mm256_sub_pd(_mm256_loadu_pd(e->px + c), x);
         __m256d vy = _mm256_sub_pd(_mm256_loadu_pd(e->py + c), y);
         __m256d vz = _mm256_sub_pd(_mm256_loadu_pd(e->pz + c), z);
@@ -174,8 +185,8 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
         __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
                                                   _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
                                     _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
-        __m256d far = _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ);
-        __m256d pass = _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ));
+        __m256d far = _mm256_and_pd(valid, _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ));
+        __m256d pass = _mm256_and_pd(valid, _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ)));
         const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
         skipped += (unsigned)__builtin_popcount((unsigned)mf);
         passed += (unsigned)__builtin_popcount((unsigned)mp);
@@ -193,7 +204,7 @@ static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius,
     }
     st->skipped_radius += skipped;
     st->normal_passed += passed;
-    return screen_double(h, rs2, skip_radius, ph, e, c, st, s, b);
+    return 0;
 }
 
 /* fp32 mode four entries at a time: the host's double tests as above, then the PREU's binary32
@@ -212,15 +223,16 @@ static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, c
     const float *r2f = (const float *)(const void *)h->r2_f32;
     unsigned long long skipped = 0, passed = 0;
     size_t c = 0;
-    for (; c + 4 <= e->count; c += 4) {
+    for (; c < e->count; c += 4) {
+        const __m256d valid = valid_lanes(e->count - c);
         const __m256d px = _mm256_loadu_pd(e->px + c), py = _mm256_loadu_pd(e->py + c), pz = _mm256_loadu_pd(e->pz + c);
         __m256d vx = _mm256_sub_pd(px, x), vy = _mm256_sub_pd(py, y), vz = _mm256_sub_pd(pz, z);
         __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(vz, vz));
         __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
                                                   _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
                                     _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
-        __m256d far = _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ);
-        __m256d pass = _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ));
+        __m256d far = _mm256_and_pd(valid, _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ));
+        __m256d pass = _mm256_and_pd(valid, _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ)));
         const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
         skipped += (unsigned)__builtin_popcount((unsigned)mf);
         passed += (unsigned)__builtin_popcount((unsigned)mp);
@@ -242,7 +254,7 @@ static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, c
     }
     st->skipped_radius += skipped;
     st->normal_passed += passed;
-    return screen_fp32(h, rs2, skip_radius, ph, e, c, st, s, b);
+    return 0;
 }
 #endif
 
