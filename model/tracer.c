@@ -41,18 +41,10 @@ static void embree_error(void *user, enum RTCError code, const char *msg)
     fprintf(stderr, "pree: embree error %d: %s\n", (int)code, msg ? msg : "");
 }
 
-/* The reference program's ray-sphere test: returns t, or 0 for a miss. */
+/* The reference program's ray-sphere test (sphere_group.h): returns t, or 0 for a miss. */
 static inline double sphere_hit_t(const sphere_t *s, vec3 o, vec3 d)
 {
-    vec3 op = v3_sub(s->centre, o);
-    double b = v3_dot(op, d);
-    double det = b * b - v3_dot(op, op) + s->radius * s->radius;
-    if (det < 0) return 0;
-    det = sqrt(det);
-    double t = b - det;
-    if (t > TRACER_EPSILON) return t;
-    t = b + det;
-    return t > TRACER_EPSILON ? t : 0;
+    return sphere_group_t_scalar(s->centre.x, s->centre.y, s->centre.z, s->radius * s->radius, o, d, TRACER_EPSILON);
 }
 
 static void sphere_bounds(const struct RTCBoundsFunctionArguments *args)

@@ -2,7 +2,8 @@
 # The tracer's mixed case (analytic spheres, intersected in double in Embree user geometry, with
 # triangles in one scene: scenes/cornell3-teapot): image and state hashes equal to those recorded
 # with the per-sphere scalar tracer of commit 1b71716 (before the AVX2 sphere group and the
-# one-pass choice of the nearest sphere), with and without AVX2, for 1 and 2 threads.
+# one-pass choice of the nearest sphere), with and without AVX2, for 1 and 2 threads; and a scene
+# of 17 spheres (one primitive per sphere).
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 expect="23b58c52a53865b9/fc6638536e4aad73"
@@ -14,3 +15,8 @@ for avx in "" 1; do
         "$(json "$TMP/m.json" image_hash)/$(json "$TMP/m.json" state_hash)" "$expect"
   done
 done
+# More than 16 spheres: one Embree primitive per sphere (the per-sphere path), against the hashes
+# of the session-1 tracer on the same scene (cornell3 with 8 more balls).
+{ cat "$ROOT/scenes/cornell3"; for i in 1 2 3 4 5 6 7 8; do echo "sphere 3 $((10 * i)) 5 $((40 + 5 * i)) ball"; done; } > "$TMP/many"
+run "$PREE" render "$TMP/many" --width 80 --height 60 --photons 40000 --threads 2 --out "$TMP/many.ppm" --stats "$TMP/many.json" --quiet
+expect_eq "17 spheres hashes" "$(json "$TMP/many.json" image_hash)/$(json "$TMP/many.json" state_hash)" "b3edde8fc34ebef3/fc150b1411cb223c"
