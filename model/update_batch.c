@@ -148,9 +148,6 @@ static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, cons
     return 0;
 }
 
-static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b);
-
 #ifdef HAVE_SCREEN_AVX2
 /* All-ones in the first min(rem, 4) lanes. The last vector of a bucket reads up to three entries
  * beyond it (the next bucket's, or the grid's padding: grid.c allocates GRID_ENTRY_PAD more);
@@ -162,68 +159,26 @@ static inline __m256d valid_lanes(size_t rem)
     return _mm256_loadu_pd((const double *)(const void *)(ones + 4 - (rem < 4 ? rem : 4)));
 }
 
-/* The same tests four entries at a time. Every lane computes the scalar expressions with the
- * same operations in the same order (separate IEEE multiplies and adds, no fused ones), and the
- * ordered comparisons are false for NaN exactly like the scalar ones; kept candidates come out
- * in entry order. */
+/* The same tests four entries at a time, in either precision. The host's double tests are
+ * shared: every lane computes the scalar expressions with the same operations in the same order
+ * (separate IEEE multiplies and adds, no fused ones), and the ordered comparisons are false for
+ * NaN exactly like the scalar ones. Then the distance that decides: double v2 against r2, or the
+ * PREU's binary32 distance (RNE conversions of the double coordinates, float multiplies and adds
+ * in the scalar order) against the binary32 radius. Kept candidates come out in entry order. */
 __attribute__((target("avx2,popcnt")))
-static int screen_double_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                              const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
+static int screen_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph, int fp32,
+                       const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
     const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
-    const __m256d far_lim = _mm256_set1_pd(skip_radius ? rs2 : INFINITY);
-    const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
-    unsigned long long skipped = 0, passed = 0;
-    size_t c = 0;
-    for (; c < e->count; c += 4) {
-        const __m256d valid = valid_lanes(e->count - c);
-        __m256d vx = _mm256_sub_pd(_mm256_loadu_pd(e->px + c), x);
-        __m256d vy = _mm256_sub_pd(_mm256_loadu_pd(e->py + c), y);
-        __m256d vz = _mm256_sub_pd(_mm256_loadu_pd(e->pz + c), z);
-        __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(vz, vz));
-        __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
-                                                  _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
-                                    _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
-        __m256d far = _mm256_and_pd(valid, _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ));
-        __m256d pass = _mm256_and_pd(valid, _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ)));
-        const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
-        skipped += (unsigned)__builtin_popcount((unsigned)mf);
-        passed += (unsigned)__builtin_popcount((unsigned)mp);
-        if (!mp) continue;
-        __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
-        __m256d r2 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), h->r2, idx, pass, 8);
-        int ma = _mm256_movemask_pd(_mm256_and_pd(pass, _mm256_cmp_pd(v2, r2, _CMP_LE_OQ)));
-        if (!ma) continue;
-        double v2s[4];
-        _mm256_storeu_pd(v2s, v2);
-        for (; ma; ma &= ma - 1) {
-            const int l = __builtin_ctz((unsigned)ma);
-            if (keep(s, b, ph->hit, e->hp[c + l], v2s[l])) return -1;
-        }
-    }
-    st->skipped_radius += skipped;
-    st->normal_passed += passed;
-    return 0;
-}
-
-/* fp32 mode four entries at a time: the host's double tests as above, then the PREU's binary32
- * distance (RNE conversions of the double coordinates, separate float multiplies and adds in the
- * scalar order) against the binary32 radius. */
-__attribute__((target("avx2,popcnt")))
-static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                            const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
-{
-    const __m256d x = _mm256_set1_pd(ph->x), y = _mm256_set1_pd(ph->y), z = _mm256_set1_pd(ph->z);
-    const __m256d nx = _mm256_set1_pd(ph->nx), ny = _mm256_set1_pd(ph->ny), nz = _mm256_set1_pd(ph->nz);
-    const __m128 fx = _mm_set1_ps(fp32_from_bits(preu_f32(ph->x))), fy = _mm_set1_ps(fp32_from_bits(preu_f32(ph->y))),
-                 fz = _mm_set1_ps(fp32_from_bits(preu_f32(ph->z)));
+    const __m128 fx = _mm_set1_ps(fp32 ? fp32_from_bits(preu_f32(ph->x)) : 0.0f),
+                 fy = _mm_set1_ps(fp32 ? fp32_from_bits(preu_f32(ph->y)) : 0.0f),
+                 fz = _mm_set1_ps(fp32 ? fp32_from_bits(preu_f32(ph->z)) : 0.0f);
     const __m256d far_lim = _mm256_set1_pd(skip_radius ? rs2 : INFINITY);
     const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
     const float *r2f = (const float *)(const void *)h->r2_f32;
     unsigned long long skipped = 0, passed = 0;
-    size_t c = 0;
-    for (; c < e->count; c += 4) {
+    for (size_t c = 0; c < e->count; c += 4) {
         const __m256d valid = valid_lanes(e->count - c);
         const __m256d px = _mm256_loadu_pd(e->px + c), py = _mm256_loadu_pd(e->py + c), pz = _mm256_loadu_pd(e->pz + c);
         __m256d vx = _mm256_sub_pd(px, x), vy = _mm256_sub_pd(py, y), vz = _mm256_sub_pd(pz, z);
@@ -237,19 +192,25 @@ static int screen_fp32_avx2(const hitpoints_t *h, double rs2, int skip_radius, c
         skipped += (unsigned)__builtin_popcount((unsigned)mf);
         passed += (unsigned)__builtin_popcount((unsigned)mp);
         if (!mp) continue;
-        __m128 dx = _mm_sub_ps(_mm256_cvtpd_ps(px), fx), dy = _mm_sub_ps(_mm256_cvtpd_ps(py), fy),
-               dz = _mm_sub_ps(_mm256_cvtpd_ps(pz), fz);
-        __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
-        __m128 pass4 = _mm_castsi128_ps(_mm256_cvtpd_epi32(_mm256_and_pd(pass, _mm256_set1_pd(-1.0))));
-        __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
-        __m128 r2 = _mm_mask_i32gather_ps(_mm_setzero_ps(), r2f, idx, pass4, 4);
-        int ma = mp & _mm_movemask_ps(_mm_cmp_ps(d2, r2, _CMP_LE_OQ));
-        if (!ma) continue;
-        float d2s[4];
-        _mm_storeu_ps(d2s, d2);
+        const __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
+        double dist[4];
+        int ma;
+        if (!fp32) {
+            __m256d r2 = _mm256_mask_i32gather_pd(_mm256_setzero_pd(), h->r2, idx, pass, 8);
+            ma = _mm256_movemask_pd(_mm256_and_pd(pass, _mm256_cmp_pd(v2, r2, _CMP_LE_OQ)));
+            _mm256_storeu_pd(dist, v2);
+        } else {
+            __m128 dx = _mm_sub_ps(_mm256_cvtpd_ps(px), fx), dy = _mm_sub_ps(_mm256_cvtpd_ps(py), fy),
+                   dz = _mm_sub_ps(_mm256_cvtpd_ps(pz), fz);
+            __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+            __m128 pass4 = _mm_castsi128_ps(_mm256_cvtpd_epi32(_mm256_and_pd(pass, _mm256_set1_pd(-1.0))));
+            __m128 r2 = _mm_mask_i32gather_ps(_mm_setzero_ps(), r2f, idx, pass4, 4);
+            ma = mp & _mm_movemask_ps(_mm_cmp_ps(d2, r2, _CMP_LE_OQ));
+            _mm256_storeu_pd(dist, _mm256_cvtps_pd(d2));   /* exact: binary32 values widened */
+        }
         for (; ma; ma &= ma - 1) {
             const int l = __builtin_ctz((unsigned)ma);
-            if (keep(s, b, ph->hit, e->hp[c + l], d2s[l])) return -1;
+            if (keep(s, b, ph->hit, e->hp[c + l], dist[l])) return -1;
         }
     }
     st->skipped_radius += skipped;
@@ -318,8 +279,7 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
         for (size_t j = i; j < end; j++) {
             int rc;
 #ifdef HAVE_SCREEN_AVX2
-            if (b->avx2) rc = prec == PRECISION_DOUBLE ? screen_double_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s, b)
-                                                       : screen_fp32_avx2(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
+            if (b->avx2) rc = screen_avx2(h, rs2, skip_radius, &sh[j], prec != PRECISION_DOUBLE, &cand, &t, s, b);
             else
 #endif
             if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s, b);
