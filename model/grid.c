@@ -187,23 +187,43 @@ static int listed(const hitpoints_t *h, size_t i, int include_zero)
     return include_zero || w.x != 0 || w.y != 0 || w.z != 0;
 }
 
+/* Visit every cell of hit point p's safe-radius box. */
+typedef void (*cell_visit_t)(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz);
+
+static void each_cell(const grid_t *g, const hp_hot_t *p, cell_visit_t visit, void *ctx)
+{
+    int64_t a[3], b[3];
+    cell_box(g, p, g->r_safe, a, b);
+    for (int64_t iz = a[2]; iz <= b[2]; iz++)
+        for (int64_t iy = a[1]; iy <= b[1]; iy++)
+            for (int64_t ix = a[0]; ix <= b[0]; ix++) visit(ctx, g, ix, iy, iz);
+}
+
+typedef struct {
+    grid_part_t *part;
+    int pass;
+    uint32_t hp;
+    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t);
+} fill_ctx_t;
+
+static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    fill_ctx_t *f = ctx;
+    uint32_t s = f->bucket_of(g, ix, iy, iz);
+    if (f->pass == 0) f->part->start[s + 1]++;
+    else f->part->hp[f->part->start[s]++] = f->hp;
+}
+
 /* Count (pass 0) or fill (pass 1) part p's entries: every listed hit point it owns, in index
  * order, in each bucket its safe-radius box touches. bucket_of maps a cell to its bucket. */
 static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, int pass,
                        uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t))
 {
-    grid_part_t *part = &g->parts[p];
+    fill_ctx_t f = {&g->parts[p], pass, 0, bucket_of};
     for (size_t i = 0; i < h->n; i++) {
         if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
-        int64_t a[3], b[3];
-        cell_box(g, &h->hot[i], g->r_safe, a, b);
-        for (int64_t iz = a[2]; iz <= b[2]; iz++)
-            for (int64_t iy = a[1]; iy <= b[1]; iy++)
-                for (int64_t ix = a[0]; ix <= b[0]; ix++) {
-                    uint32_t s = bucket_of(g, ix, iy, iz);
-                    if (pass == 0) part->start[s + 1]++;
-                    else part->hp[part->start[s]++] = (uint32_t)i;
-                }
+        f.hp = (uint32_t)i;
+        each_cell(g, &h->hot[i], fill_cell, &f);
     }
 }
 
@@ -220,59 +240,60 @@ static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t i
 /* Number the distinct cells that listed hit points touch: in a dense array of every cell when
  * the grid is small enough, else in an open-addressing table of packed keys (size a power of
  * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
+/* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
+static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    uint32_t *next = ctx, *d = &g->dense[dense_index(g, ix, iy, iz)];
+    if (*d == GRID_NO_BUCKET) *d = (*next)++;
+}
+
+typedef struct { uint64_t *keys; size_t mask, distinct; } hash_ctx_t;
+
+static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    hash_ctx_t *c = ctx;
+    uint64_t key = cell_key(ix, iy, iz);
+    size_t sl = find_slot(c->keys, c->mask, key);
+    if (c->keys[sl] == EMPTY_KEY) { c->keys[sl] = key; c->distinct++; }
+}
+
+/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
+ * the grid is small enough, else in an open-addressing table of packed keys (size a power of
+ * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
 static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char *err, size_t errlen)
 {
-    const double rs = g->r_safe;
     const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
     if (cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED")) {
         g->dense = malloc(cells * sizeof *g->dense);
         if (!g->dense) goto oom;
         memset(g->dense, 0xFF, cells * sizeof *g->dense);
         uint32_t next = 0;
-        for (size_t i = 0; i < h->n; i++) {
-            if (!listed(h, i, include_zero)) continue;
-            int64_t a[3], b[3];
-            cell_box(g, &h->hot[i], rs, a, b);
-            for (int64_t iz = a[2]; iz <= b[2]; iz++)
-                for (int64_t iy = a[1]; iy <= b[1]; iy++)
-                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
-                        uint32_t *d = &g->dense[dense_index(g, ix, iy, iz)];
-                        if (*d == GRID_NO_BUCKET) *d = next++;
-                    }
-        }
+        for (size_t i = 0; i < h->n; i++)
+            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_dense, &next);
         g->num_buckets = next ? next : 1;
         return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
     }
-    /* Count the distinct cells in a scratch table, then size the real one to twice that. */
+    /* Count the distinct cells in a table sized for every (hit point, cell) pair, then build the
+     * real one at twice the distinct count, so that look-ups probe a compact table. */
     size_t bound = 0;
     for (size_t i = 0; i < h->n; i++) {
         if (!listed(h, i, include_zero)) continue;
         int64_t a[3], b[3];
-        cell_box(g, &h->hot[i], rs, a, b);
+        cell_box(g, &h->hot[i], g->r_safe, a, b);
         bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
     }
     for (int round = 0; round < 2; round++) {
-        size_t size = 1024, distinct = 0;
+        size_t size = 1024;
         while (size < 2 * bound) size *= 2;
-        uint64_t *keys = malloc(size * sizeof *keys);
-        if (!keys) goto oom;
-        memset(keys, 0xFF, size * sizeof *keys);
-        for (size_t i = 0; i < h->n; i++) {
-            if (!listed(h, i, include_zero)) continue;
-            int64_t a[3], b[3];
-            cell_box(g, &h->hot[i], rs, a, b);
-            for (int64_t iz = a[2]; iz <= b[2]; iz++)
-                for (int64_t iy = a[1]; iy <= b[1]; iy++)
-                    for (int64_t ix = a[0]; ix <= b[0]; ix++) {
-                        uint64_t key = cell_key(ix, iy, iz);
-                        size_t sl = find_slot(keys, size - 1, key);
-                        if (keys[sl] == EMPTY_KEY) { keys[sl] = key; distinct++; }
-                    }
-        }
-        if (round == 0) { free(keys); bound = distinct; continue; }
+        hash_ctx_t c = {malloc(size * sizeof(uint64_t)), size - 1, 0};
+        if (!c.keys) goto oom;
+        memset(c.keys, 0xFF, size * sizeof(uint64_t));
+        for (size_t i = 0; i < h->n; i++)
+            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+        if (round == 0) { free(c.keys); bound = c.distinct; continue; }
         g->num_buckets = size;
-        if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(keys); return -1; }
-        for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = keys;
+        if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(c.keys); return -1; }
+        for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = c.keys;
     }
     return 0;
 oom:
