@@ -21,6 +21,8 @@
 #define RADIX_BITS 11
 #define APPLY_AHEAD 8   /* kept candidates prefetched ahead in the apply phase */
 #define RADIX_SIZE (1u << RADIX_BITS)
+#define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
+#define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
 
 static int grow(void **p, size_t *cap, size_t need, size_t sz)
 {
@@ -265,6 +267,18 @@ static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthrea
     return 0;
 }
 
+/* Ask for the first lines of a bucket's entry arrays: buckets are screened in memory order but
+ * far apart, too short for the hardware prefetcher to follow the seven streams. */
+static void prefetch_cands(const grid_cands_t *c)
+{
+    const size_t n = c->count < SCREEN_PREFETCH_MAX ? c->count : SCREEN_PREFETCH_MAX;
+    for (size_t k = 0; k < n; k += 8) {
+        __builtin_prefetch(c->px + k); __builtin_prefetch(c->py + k); __builtin_prefetch(c->pz + k);
+        __builtin_prefetch(c->nx + k); __builtin_prefetch(c->ny + k); __builtin_prefetch(c->nz + k);
+    }
+    for (size_t k = 0; k < n; k += 16) __builtin_prefetch(c->hp + k);
+}
+
 int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec, int skip_radius,
                         const update_batch_t *b, size_t first, size_t last, update_stats_t *st, update_scratch_t *s)
 {
@@ -273,6 +287,17 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
     update_stats_t t = *st;
     for (size_t group = first; group < last && group < b->n_groups; group++) {
         const size_t i = b->group[group], end = b->group[group + 1];
+        /* Two buckets on, the entries; one bucket on (its hit-point indices have arrived), the radii. */
+        if (group + SCREEN_PREFETCH_GROUPS < b->n_groups) {
+            const grid_cands_t far = grid_bucket_cands(g, 0, sh[b->group[group + SCREEN_PREFETCH_GROUPS]].bucket);
+            prefetch_cands(&far);
+        }
+        if (group + 1 < b->n_groups) {
+            const grid_cands_t next = grid_bucket_cands(g, 0, sh[b->group[group + 1]].bucket);
+            const size_t n = next.count < SCREEN_PREFETCH_MAX ? next.count : SCREEN_PREFETCH_MAX;
+            for (size_t k = 0; k < n; k++) __builtin_prefetch(prec == PRECISION_DOUBLE ? (const void *)&h->r2[next.hp[k]]
+                                                                                      : (const void *)&h->r2_f32[next.hp[k]]);
+        }
         const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
         t.candidates += cand.count * (end - i);
         if (!cand.count) continue;
