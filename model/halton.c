@@ -16,10 +16,24 @@ static inline uint32_t div_prime(uint32_t k, uint64_t magic)
     return (uint32_t)(((unsigned __int128)k * magic) >> 64);
 }
 
+/* Per dimension: 1 / p (the same rounded double the loop multiplies by) and the magic
+ * multiplier floor(2^64 / p) + 1, made once instead of a division each on every call. */
+typedef struct { double inv; uint64_t magic; } halton_dim_t;
+
+static halton_dim_t dims[HALTON_DIMENSIONS];
+
+__attribute__((constructor)) static void halton_dims_init(void)
+{
+    for (int b = 0; b < HALTON_DIMENSIONS; b++) {
+        dims[b].inv = 1.0 / (double)halton_primes[b];
+        dims[b].magic = UINT64_MAX / (uint64_t)halton_primes[b] + 1;
+    }
+}
+
 double halton(int b, long long j)
 {
     const int p = halton_primes[b];
-    const double f = 1.0 / (double)p;
+    const double f = dims[b].inv;
     double h = 0.0, fct = f;
     if (p == 2 && j >= 0 && j <= 0xFFFFFFFFll) {
         /* Base 2: digit 1 stays 1, fct is an exact power of two and every partial sum has at
@@ -36,7 +50,7 @@ double halton(int b, long long j)
     if (j >= 0 && j <= 0xFFFFFFFFll) {
         /* The same digits without a division instruction. */
         const uint32_t up = (uint32_t)p;
-        const uint64_t magic = UINT64_MAX / up + 1;
+        const uint64_t magic = dims[b].magic;
         uint32_t k = (uint32_t)j;
         while (k > 0) {
             uint32_t q = div_prime(k, magic), digit = k - q * up;
