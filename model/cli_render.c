@@ -25,6 +25,8 @@ static void render_usage(FILE *f)
         "  --width W              image width in pixels (default 320)\n"
         "  --height H             image height in pixels (default 240)\n"
         "  --photons N            photons to emit, rounded down to whole 1000s (default 768000)\n"
+        "  --photon-offset K      trace photon k with Halton index K + k (default 0): a reference render\n"
+        "                         whose photon paths are disjoint from those of the renders it judges\n"
         "  --precision P          double (the reference) or fp32 (the PREE datapath's arithmetic)\n"
         "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
         "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
@@ -55,6 +57,10 @@ int pree_cmd_render(int argc, char **argv)
         else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.width = (int)v; }
         else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.height = (int)v; }
         else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
+        else if (!strcmp(arg, "--photon-offset")) {
+            if (cli_int(&a, arg, 0, 10000000000LL, &v)) return 2;
+            opt.photon_offset = (uint64_t)v;
+        }
         else if (!strcmp(arg, "--preu")) {
             if (cli_int(&a, arg, 4, 16, &v)) return 2;
             if (v != 4 && v != 8 && v != 16) return cli_error(&a, "--preu: %lld is not 4, 8 or 16", v);

@@ -57,7 +57,7 @@ typedef struct {
     unsigned long long no_cell;
 } block_buffers_t;
 
-/* Trace photons [first, first + count) into the ordered chunk buffers; drop hits that reach
+/* Trace photons with sequence indices [first, first + count) into the ordered chunk buffers; drop hits that reach
  * no hit point's cell when skipping. Returns 0 or -1 (out of memory). */
 static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
                        uint64_t first, uint64_t count, block_buffers_t *bb)
@@ -218,7 +218,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         uint64_t count = emitted_target - done_photons;
         if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
         t = omp_get_wtime();
-        if (trace_block(scene, tr, &grid, skip, done_photons, count, bb)) {
+        if (trace_block(scene, tr, &grid, skip, opt->photon_offset + done_photons, count, bb)) {
             snprintf(err, errlen, "out of memory in the photon pass");
             free(ust);
             goto done;

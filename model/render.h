@@ -20,6 +20,7 @@ typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
 typedef struct {
     int width, height;
     uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
+    uint64_t photon_offset;  /* photon k is traced with sequence index photon_offset + k (default 0) */
     precision_t precision;
     grid_kind_t grid;
     int threads;             /* 0: OpenMP's default */

@@ -38,7 +38,8 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
     fprintf(f, "  \"eye_rays\": %llu,\n  \"glass_splits\": %llu,\n", st->eye_rays, st->glass_splits);
     fprintf(f, "  \"initial_radius\": %.17g,\n  \"safe_radius\": %.17g,\n  \"grid_entries\": %zu,\n",
             st->r0, st->r_safe, st->grid_entries);
-    fprintf(f, "  \"photons_emitted\": %llu,\n  \"photon_segments\": %llu,\n", st->photons_emitted, st->photon_segments);
+    fprintf(f, "  \"photons_emitted\": %llu,\n  \"photon_offset\": %llu,\n  \"photon_segments\": %llu,\n", st->photons_emitted,
+            (unsigned long long)opt->photon_offset, st->photon_segments);
     fprintf(f, "  \"photon_hits\": %llu,\n  \"skip_photon_hits_no_cell\": %llu,\n", st->photon_hits, st->photon_hits_no_cell);
     fprintf(f, "  \"hpuo_candidates\": %llu,\n  \"skip_candidates_outside_radius\": %llu,\n",
             st->upd.candidates, st->upd.skipped_radius);

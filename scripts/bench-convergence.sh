@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Run time against error: cornell3 rendered with 768,000 x 2^k photons (k = 0..6) in both
-# precisions, each compared with a long double-precision reference render (128x the photons).
+# precisions, each compared with a long double-precision reference render (512x the photons, 8x the longest).
 # Prints a table (photons, precision, wall seconds, CPU seconds, RMSE on linear radiance, SSIM of the 8-bit
-# images) and draws out/bench/convergence.png with gnuplot.
+# images) and draws out/bench/convergence.png with gnuplot. The reference's photons are disjoint
+# from the renders' (--photon-offset).
 # Usage: bench-convergence.sh PREE OUTDIR [--quick|--plot-only]   (--quick: 96x72, for testing the
 # script; --plot-only: redraw the plot from OUTDIR/convergence.txt)
 set -euo pipefail
@@ -10,15 +11,18 @@ pree=$1; out=$2; quick=${3:-}
 mkdir -p "$out"
 scene=scenes/cornell3
 if [ "$quick" = --quick ]; then W=96; H=72; base=69000; steps=3; refmul=16
-else W=320; H=240; base=768000; steps=6; refmul=128; fi
-ref="$out/conv-ref-${W}x${H}"
+else W=320; H=240; base=768000; steps=6; refmul=512; fi
+# The reference traces photons of its own: sequence indices [R, 2R) for R reference photons,
+# disjoint from the [0, N) of every render it judges (with shared photons, the error of the
+# longest renders would be understated).
+ref="$out/conv-ref-${W}x${H}-disjoint"
 if [ ! -f "$ref.exr" ]; then
-  echo "bench-convergence: reference render, $((base * refmul)) photons (once; kept in $out)" >&2
-  "$pree" render $scene --width $W --height $H --photons $((base * refmul)) --precision double \
-      --out "$ref.exr" --out "$ref.png" --stats "$ref.json"
+  echo "bench-convergence: reference render, $((base * refmul)) photons from index $((base * refmul)) (once; kept in $out)" >&2
+  "$pree" render $scene --width $W --height $H --photons $((base * refmul)) --photon-offset $((base * refmul)) \
+      --precision double --out "$ref.exr" --out "$ref.png" --stats "$ref.json"
 fi
 tab="$out/convergence.txt"
-if [ "$quick" = --plot-only ]; then W=320; H=240; base=768000; refmul=128; fi
+if [ "$quick" = --plot-only ]; then W=320; H=240; base=768000; refmul=512; fi
 [ "$quick" = --plot-only ] || {
 printf '%-12s %-9s %9s %9s %12s %10s %10s\n' photons precision seconds cpu_s rmse_linear ssim_8bit psnr_8bit | tee "$tab"
 for prec in double fp32; do
