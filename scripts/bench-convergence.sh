@@ -15,7 +15,7 @@ else W=320; H=240; base=768000; steps=6; refmul=512; fi
 # The reference traces photons of its own: sequence indices [R, 2R) for R reference photons,
 # disjoint from the [0, N) of every render it judges (with shared photons, the error of the
 # longest renders would be understated).
-ref="$out/conv-ref-${W}x${H}-disjoint"
+ref="$out/conv-ref-${W}x${H}-$((base * refmul))-from-$((base * refmul))"
 if [ ! -f "$ref.exr" ]; then
   echo "bench-convergence: reference render, $((base * refmul)) photons from index $((base * refmul)) (once; kept in $out)" >&2
   "$pree" render $scene --width $W --height $H --photons $((base * refmul)) --photon-offset $((base * refmul)) \
