@@ -10,6 +10,7 @@
  * the same distance value the photon-major scan computes, so every hit point receives the same
  * updates in the same order: the result is identical to the bit (tests/checks/engine_scan_order.sh). */
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #include "update_batch.h"
@@ -21,6 +22,8 @@
 #define RADIX_BITS 11
 #define APPLY_AHEAD 8   /* kept candidates prefetched ahead in the apply phase */
 #define RADIX_SIZE (1u << RADIX_BITS)
+#define RADIX_PARALLEL_MIN 32768   /* keys below which a radix pass runs on one thread */
+#define PREPARE_MAX_CHUNKS 256
 #define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
 #define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
 
@@ -43,7 +46,41 @@ void update_batch_free(update_batch_t *b)
     free(b->tmp);
     free(b->sorted);
     free(b->group);
+    free(b->hist);
     memset(b, 0, sizeof *b);
+}
+
+/* One stable counting pass of the radix sort, key -> tmp, on the digit at shift: each thread
+ * counts a contiguous range of keys, and scatters it after the lower digits' and the earlier
+ * ranges' keys, so the order is the serial one whatever the thread count. 0 or -1 (memory). */
+static int radix_pass(update_batch_t *b, size_t m, unsigned shift)
+{
+    const int nt = m >= RADIX_PARALLEL_MIN ? omp_get_max_threads() : 1;
+    if (grow((void **)&b->hist, &b->hist_cap, (size_t)nt * RADIX_SIZE, sizeof *b->hist)) return -1;
+    uint32_t *hist = b->hist;
+    const uint64_t *src = b->key;
+    uint64_t *dst = b->tmp;
+#pragma omp parallel num_threads(nt)
+    {
+        const int t = omp_get_thread_num(), T = omp_get_num_threads();
+        const size_t lo = m * (size_t)t / (size_t)T, hi = m * (size_t)(t + 1) / (size_t)T;
+        uint32_t *h = hist + (size_t)t * RADIX_SIZE;
+        memset(h, 0, RADIX_SIZE * sizeof *h);
+        for (size_t i = lo; i < hi; i++) h[(src[i] >> shift) & (RADIX_SIZE - 1)]++;
+#pragma omp barrier
+#pragma omp single
+        {
+            uint32_t sum = 0;
+            for (unsigned d = 0; d < RADIX_SIZE; d++)
+                for (int u = 0; u < T; u++) {
+                    uint32_t c = hist[(size_t)u * RADIX_SIZE + d];
+                    hist[(size_t)u * RADIX_SIZE + d] = sum;
+                    sum += c;
+                }
+        }
+        for (size_t i = lo; i < hi; i++) dst[h[(src[i] >> shift) & (RADIX_SIZE - 1)]++] = src[i];
+    }
+    return 0;
 }
 
 int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigned nchunks, size_t num_buckets)
@@ -54,26 +91,38 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
         grow((void **)&b->key, &b->key_cap, n, sizeof *b->key) ||
         grow((void **)&b->tmp, &b->tmp_cap, n, sizeof *b->tmp))
         return -1;
-    /* Keys: bucket in the high half, hit index (photon order) in the low half. */
-    size_t m = 0, k = 0;
-    for (unsigned c = 0; c < nchunks; c++)
+    /* Keys: bucket in the high half, hit index (photon order) in the low half; chunk c's hits
+     * start at hit index first[c] and its keys at key index kfirst[c]. */
+    size_t first[PREPARE_MAX_CHUNKS + 1], kfirst[PREPARE_MAX_CHUNKS + 1];
+    if (nchunks > PREPARE_MAX_CHUNKS) return -1;
+    first[0] = kfirst[0] = 0;
+#pragma omp parallel for schedule(dynamic, 1)
+    for (unsigned c = 0; c < nchunks; c++) {
+        size_t keyed = 0;
+        for (size_t i = 0; i < chunks[c].n; i++) keyed += chunks[c].hits[i].bucket != GRID_NO_BUCKET;
+        kfirst[c + 1] = keyed;
+    }
+    for (unsigned c = 0; c < nchunks; c++) {
+        first[c + 1] = first[c] + chunks[c].n;
+        kfirst[c + 1] += kfirst[c];
+    }
+#pragma omp parallel for schedule(dynamic, 1)
+    for (unsigned c = 0; c < nchunks; c++) {
+        size_t k = first[c], m = kfirst[c];
         for (size_t i = 0; i < chunks[c].n; i++, k++) {
             const photon_hit_t *ph = &chunks[c].hits[i];
             b->hit[k] = ph;
             if (ph->bucket != GRID_NO_BUCKET) b->key[m++] = (uint64_t)ph->bucket << 32 | k;
         }
+    }
+    const size_t m = kfirst[nchunks];
     b->n = n;
     b->n_keyed = m;
     /* Stable LSD radix sort on the bucket bits only. */
     unsigned bits = 0;
     while (bits < 32 && ((size_t)1 << bits) < num_buckets) bits++;
-    uint32_t hist[RADIX_SIZE];
     for (unsigned shift = 32; shift < 32 + bits; shift += RADIX_BITS) {
-        memset(hist, 0, sizeof hist);
-        for (size_t i = 0; i < m; i++) hist[(b->key[i] >> shift) & (RADIX_SIZE - 1)]++;
-        uint32_t sum = 0;
-        for (unsigned d = 0; d < RADIX_SIZE; d++) { uint32_t c = hist[d]; hist[d] = sum; sum += c; }
-        for (size_t i = 0; i < m; i++) b->tmp[hist[(b->key[i] >> shift) & (RADIX_SIZE - 1)]++] = b->key[i];
+        if (radix_pass(b, m, shift)) return -1;
         uint64_t *t = b->key; b->key = b->tmp; b->tmp = t;
         size_t tc = b->key_cap; b->key_cap = b->tmp_cap; b->tmp_cap = tc;
     }

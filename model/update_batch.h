@@ -17,7 +17,8 @@ typedef struct {
     uint64_t *key, *tmp;        /* bucket << 32 | hit index, sorted by bucket (stable) */
     batch_hit_t *sorted;        /* the keyed hits in key order */
     uint32_t *group;            /* group g (one bucket) is sorted[group[g] .. group[g+1]) */
-    size_t n, n_keyed, n_groups, hit_cap, key_cap, tmp_cap, sorted_cap, group_cap;
+    uint32_t *hist;             /* the radix sort's per-thread digit counts */
+    size_t n, n_keyed, n_groups, hit_cap, key_cap, tmp_cap, sorted_cap, group_cap, hist_cap;
     const uint16_t *owner;      /* set by the caller: owning part of each hit point (NULL: all 0) */
     int avx2;                   /* screen in AVX2 lanes */
 } update_batch_t;
