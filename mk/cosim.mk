@@ -4,8 +4,8 @@
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
 #   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation for the PREU
-#                      counts in SIM_FULL_PREUS (default 4 8; about 1.3 and 3 CPU minutes; 16 takes
-#                      about 25), figures in $(COSIM_DIR)/full_p*.json
+#                      counts in SIM_FULL_PREUS (default 4 8; about 0.5 and 1 CPU minutes; 16 takes
+#                      about 25 on a slower machine), figures in $(COSIM_DIR)/full_p*.json
 #   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
