@@ -86,7 +86,7 @@ $(filter-out $(COSIM_DIR)/cosim_rtl.o,$(COSIM_OBJS)) $(COSIM_DIR)/top_bench.o: t
 COSIM_SMALL := scenes/cornell3 --width 64 --height 48 --photons 20000 --quiet
 sim-top: $(COSIM_BENCH) $(BUILD)/pree
 	@set -e; for p in $(COSIM_PREUS); do \
-	  for s in random one dense mixed; do $(COSIM_BENCH) --preu $$p --scenario $$s --photons 600 | tail -1; done; \
+	  for s in random one dense mixed abank; do $(COSIM_BENCH) --preu $$p --scenario $$s --photons 600 | tail -1; done; \
 	  $(COSIM_BENCH) --preu $$p --scenario random --hp 150 --photons 400 --gap 0.3 | tail -1; \
 	  $(COSIM_BENCH) --preu $$p --scenario mixed --no-reorder --photons 400 | tail -1; done
 	@set -e; for p in $(COSIM_PREUS); do \

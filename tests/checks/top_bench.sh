@@ -4,7 +4,8 @@
 # point, pixels with 40 hit points, idle gaps on the input, unordered candidates (bank
 # conflicts), a small hit-point set (radiance hazards), index entries misplaced on purpose (stage-A
 # bank conflicts in update mode; the bench also requires its abank counter to be non-zero);
-# 4 PREUs here, 8 and 16 in `make sim`.
+# 4 PREUs here, and the misplaced entries with 8 and 16 too; the other scenarios with 8 and 16
+# in `make sim`.
 set -u
 cd "$(dirname "$0")/../.."
 bench=${BUILD:-build}/cosim/top_bench
@@ -24,4 +25,6 @@ run --preu 4 --scenario mixed --photons 300 --gap 0.3
 run --preu 4 --scenario mixed --photons 300 --no-reorder
 run --preu 4 --scenario abank --photons 300
 run --preu 4 --scenario abank --photons 300 --gap 0.3 --seed 2
+run --preu 8 --scenario abank --photons 300
+run --preu 16 --scenario abank --photons 300 --gap 0.3 --seed 3
 exit $fail
