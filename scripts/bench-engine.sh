@@ -17,11 +17,14 @@ for k in sys.argv[2:]:
     for p in k.split("."): v=v[p]
     print(v, end=" ")
 print()' "$@"; }
-# One row from RUNS stats files: the median run by total seconds, and min/max of M cand/s and total.
+# One row from RUNS stats files: the median run by total seconds (copied to DEST), and min/max of
+# M cand/s and total.
 row() { python3 - "$@" <<'EOF'
-import json, sys
-label, files = sys.argv[1], sys.argv[2:]
-d = sorted((json.load(open(f)) for f in files), key=lambda r: r["seconds"]["total"])
+import json, shutil, sys
+label, dest, files = sys.argv[1], sys.argv[2], sys.argv[3:]
+runs = sorted(((json.load(open(f)), f) for f in files), key=lambda r: r[0]["seconds"]["total"])
+shutil.copy(runs[len(runs) // 2][1], dest)
+d = [r for r, _ in runs]
 m = d[len(d) // 2]
 mc = [r["update_mcand_per_s"] for r in d]; tot = [r["seconds"]["total"] for r in d]
 s = m["seconds"]
@@ -34,6 +37,7 @@ echo "cornell3 320x240, 768,000 photons; $runs runs per row (median run; spread 
 printf '%-34s %8s %13s %7s %7s %7s %7s %13s %8s %s\n' "grid precision threads scan lanes" "Mcand/s" "spread" update trace grid total "total spread" peak_MiB image \
   | tee -a "$out/engine.txt"
 # lanes: default (AVX2 where the processor has it), scalar (PREE_NO_AVX2=1).
+labels=()
 for cfg in "smallppm double 1 bucket default" "smallppm double 1 bucket scalar" \
            "smallppm double 1 photon default" "smallppm double 2 bucket default" "cells double 1 bucket default" \
            "cells double 2 bucket default" "cells fp32 2 bucket default" "smallppm fp32 2 bucket default"; do
@@ -46,9 +50,39 @@ for cfg in "smallppm double 1 bucket default" "smallppm double 1 bucket scalar" 
         --scan $4 --out "$f.ppm" --stats "$f.r$r.json" --quiet
     files+=("$f.r$r.json")
   done
-  cp "${files[$((runs / 2))]}" "$f.json"
-  row "$*" "${files[@]}" | tee -a "$out/engine.txt"
+  row "$*" "$f.json" "${files[@]}" | tee -a "$out/engine.txt"
+  labels+=("$*|$f.json")
 done
+# A picture of where the time goes: each configuration's median run, seconds per phase.
+for l in "${labels[@]}"; do
+  python3 - "${l%%|*}" "${l#*|}" <<'EOF'
+import json, sys
+s = json.load(open(sys.argv[2]))["seconds"]
+parts = [s["bvh"] + s["eye"], s["grid"], s["trace"], s["update"], s["radiance"]]
+g, prec, t, scan, lanes = sys.argv[1].split()
+label = "%s %s, %s thread%s" % (g, prec, t, "" if t == "1" else "s")
+if scan != "bucket": label += ", %s scan" % scan
+if lanes != "default": label += ", %s" % lanes
+print('"%s"' % label, *("%.4f" % v for v in parts + [max(0.0, s["total"] - sum(parts))]))
+EOF
+done > "$out/engine-phases.dat"
+gnuplot <<GP
+set terminal pngcairo size 1000,460 font ",10"
+set output "$out/engine.png"
+set title "cornell3 320x240, 768,000 photons: seconds per phase, median of $runs runs ($(nproc) cores)"
+set style data histograms
+set style histogram rowstacked
+set style fill solid 0.85 border -1
+set boxwidth 0.7
+set ylabel "seconds"
+set xtics rotate by -25 noenhanced
+set key outside right top vertical
+set grid ytics
+plot "$out/engine-phases.dat" using 2:xtic(1) title "BVH + eye pass", '' using 3 title "grid", \\
+     '' using 4 title "photon trace", '' using 5 title "update", '' using 6 title "radiance", \\
+     '' using 7 title "other (images, set-up)"
+GP
+echo "plot: $out/engine.png" | tee -a "$out/engine.txt"
 # The targets against the worst of the runs.
 python3 - "$out" "$runs" <<'EOF' | tee -a "$out/engine.txt"
 import json, sys
