@@ -18,6 +18,7 @@
 
 #define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
+_Static_assert(TRACE_CHUNKS <= UPDATE_BATCH_MAX_CHUNKS, "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
 #define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
 static long peak_rss_kb(void)
@@ -57,8 +58,8 @@ typedef struct {
     unsigned long long no_cell;
 } block_buffers_t;
 
-/* Trace photons with sequence indices [first, first + count) into the ordered chunk buffers; drop hits that reach
- * no hit point's cell when skipping. Returns 0 or -1 (out of memory). */
+/* Trace the photons of sequence indices [first, first + count) into the ordered chunk buffers;
+ * drop hits that reach no hit point's cell when skipping. Returns 0 or -1 (out of memory). */
 static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
                        uint64_t first, uint64_t count, block_buffers_t *bb)
 {

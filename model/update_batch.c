@@ -23,7 +23,6 @@
 #define APPLY_AHEAD 8   /* kept candidates prefetched ahead in the apply phase */
 #define RADIX_SIZE (1u << RADIX_BITS)
 #define RADIX_PARALLEL_MIN 32768   /* keys below which a radix pass runs on one thread */
-#define PREPARE_MAX_CHUNKS 256
 #define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
 #define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
 
@@ -93,8 +92,8 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
         return -1;
     /* Keys: bucket in the high half, hit index (photon order) in the low half; chunk c's hits
      * start at hit index first[c] and its keys at key index kfirst[c]. */
-    size_t first[PREPARE_MAX_CHUNKS + 1], kfirst[PREPARE_MAX_CHUNKS + 1];
-    if (nchunks > PREPARE_MAX_CHUNKS) return -1;
+    size_t first[UPDATE_BATCH_MAX_CHUNKS + 1], kfirst[UPDATE_BATCH_MAX_CHUNKS + 1];
+    if (nchunks > UPDATE_BATCH_MAX_CHUNKS) return -1;
     first[0] = kfirst[0] = 0;
 #pragma omp parallel for schedule(dynamic, 1)
     for (unsigned c = 0; c < nchunks; c++) {

@@ -36,7 +36,9 @@ typedef struct {
     size_t n_sorted, sorted_cap, start_cap;
 } update_scratch_t;
 
-/* Collect chunks[0..nchunks) (in photon order) and group them by bucket. 0 or -1 (memory). */
+/* Collect chunks[0..nchunks) (in photon order, nchunks <= UPDATE_BATCH_MAX_CHUNKS) and group
+ * them by bucket. 0 or -1 (memory). */
+#define UPDATE_BATCH_MAX_CHUNKS 256
 int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigned nchunks, size_t num_buckets);
 void update_batch_free(update_batch_t *b);
 
