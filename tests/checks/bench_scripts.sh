@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# The `make bench` scripts still run and say what they should (their figures are timings, which
+# no test judges): bench-convergence at its reduced size must give the table for both precisions
+# with the error falling as the photons double (deterministic: fixed renders against a fixed,
+# disjoint reference) and draw its plot; bench-engine with one run a row must print every row,
+# both target lines, the smallppm byte-identity line and draw its picture (it fails by itself when
+# an image changes with the thread count, the scan or the screening's lanes).
+. "$(dirname "$0")/../lib/check.sh"
+cd "$ROOT"
+run scripts/bench-convergence.sh "$PREE" "$TMP/conv" --quick
+for prec in double fp32; do
+  rows=$(awk -v p=$prec '$2 == p' "$TMP/conv/convergence.txt" | wc -l)
+  expect_eq "convergence rows, $prec" "$rows" 4
+  falling=$(awk -v p=$prec '$2 == p { if (n++ && !($5 < last)) bad = 1; last = $5 } END { print bad ? "no" : "yes" }' \
+      "$TMP/conv/convergence.txt")
+  expect_eq "RMSE falls at every doubling, $prec" "$falling" yes
+done
+expect_eq "convergence plot is a PNG" "$(head -c 4 "$TMP/conv/convergence.png" | od -An -c | tr -d ' ')" "211PNG"
+RUNS=1 run scripts/bench-engine.sh "$PREE" "$TMP/eng"
+expect_eq "engine rows" "$(grep -cE '^(smallppm|cells) ' "$TMP/eng/engine.txt")" 9
+expect_eq "target lines" "$(grep -c '^target: ' "$TMP/eng/engine.txt")" 2
+grep -q 'byte-identical to the reference' "$TMP/eng/engine.txt" || fail "bench-engine: no byte-identity line"
+expect_eq "engine picture is a PNG" "$(head -c 4 "$TMP/eng/engine.png" | od -An -c | tr -d ' ')" "211PNG"
