@@ -1,13 +1,16 @@
 # make bench: speed, memory, and run time against error. Figures go to out/bench/.
 # Engine speed per grid and thread count, every scene, and run time against error (a plot).
 BENCH_DIR := $(OUT)/bench
-.PHONY: bench bench-engine bench-convergence bench-scenes
+.PHONY: bench bench-engine bench-convergence bench-scenes bench-count
 # The RTL's own figures come from `make ctrl-util` (dispatcher utilization) and
 # `make sim-full` (whole-frame co-simulation), which take longer.
-bench: bench-engine bench-scenes bench-convergence
+bench: bench-engine bench-count bench-scenes bench-convergence
 bench-scenes: build
 	@scripts/bench-scenes.sh
 bench-engine: build
 	@scripts/bench-engine.sh $(BUILD)/pree $(BENCH_DIR)
+# Instruction counts per phase under callgrind: repeatable where seconds wander (about a minute).
+bench-count: build
+	@scripts/bench-count.sh $(BUILD)/pree $(BENCH_DIR)
 bench-convergence: build
 	@scripts/bench-convergence.sh $(BUILD)/pree $(BENCH_DIR)

@@ -2,7 +2,7 @@
 # Install the Debian packages PREE needs, only those missing; silent when all are present.
 set -euo pipefail
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc)
+      libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -4,7 +4,8 @@
 # with the error falling as the photons double (deterministic: fixed renders against a fixed,
 # disjoint reference) and draw its plot; bench-engine with one run a row must print every row,
 # both target lines, the smallppm byte-identity line and draw its picture (it fails by itself when
-# an image changes with the thread count, the scan or the screening's lanes).
+# an image changes with the thread count, the scan or the screening's lanes); bench-count must
+# give its rows, the same twice.
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 run scripts/bench-convergence.sh "$PREE" "$TMP/conv" --quick
@@ -21,3 +22,8 @@ expect_eq "engine rows" "$(grep -cE '^(smallppm|cells) ' "$TMP/eng/engine.txt")"
 expect_eq "target lines" "$(grep -c '^target: ' "$TMP/eng/engine.txt")" 2
 grep -q 'byte-identical to the reference' "$TMP/eng/engine.txt" || fail "bench-engine: no byte-identity line"
 expect_eq "engine picture is a PNG" "$(head -c 4 "$TMP/eng/engine.png" | od -An -c | tr -d ' ')" "211PNG"
+# bench-count at its reduced size: three rows, and the same counts twice (callgrind counts repeat).
+run scripts/bench-count.sh "$PREE" "$TMP/cnt1" --quick
+run scripts/bench-count.sh "$PREE" "$TMP/cnt2" --quick
+expect_eq "count rows" "$(grep -cE '^(smallppm|cells) ' "$TMP/cnt1/count.txt")" 3
+expect_eq "counts repeat" "$(grep -E '^(smallppm|cells) ' "$TMP/cnt2/count.txt")" "$(grep -E '^(smallppm|cells) ' "$TMP/cnt1/count.txt")"
