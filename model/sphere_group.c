@@ -46,7 +46,61 @@ static void t_all_avx2(const sphere_group_t *g, vec3 o, vec3 d, double eps, doub
         _mm256_storeu_pd(t + i, _mm256_andnot_pd(miss, r));
     }
 }
+
+/* The same choice four lanes at a time: the nearest of the lanes that may replace the hit (the
+ * others read as +inf), then the first lane that may and has that t. Comparisons only, so the
+ * pick is the scalar loop's, also where t is +inf. Pad lanes hold t = 0 (a miss). */
+__attribute__((target("avx2")))
+static int pick_avx2(const sphere_group_t *g, const double t[SPHERE_GROUP_MAX], int first, double best_t, int best_id,
+                     int triangle_holds, double tfar)
+{
+    const __m256d zero = _mm256_setzero_pd(), inf = _mm256_set1_pd(INFINITY);
+    const __m256d best = _mm256_set1_pd(best_t), limit = _mm256_set1_pd(triangle_holds ? tfar : INFINITY);
+    const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3), best_lane = _mm256_set1_epi64x((long long)best_id - first);
+    __m256d ok[SPHERE_GROUP_MAX / 4], v[SPHERE_GROUP_MAX / 4];
+    __m256d m = inf;
+    const int nv = (g->n + 3) / 4;
+    for (int k = 0; k < nv; k++) {
+        const __m256d tk = _mm256_loadu_pd(t + 4 * k);
+        const __m256i id = _mm256_add_epi64(lane, _mm256_set1_epi64x(4 * k));
+        const __m256d lower = _mm256_castsi256_pd(_mm256_cmpgt_epi64(best_lane, id));   /* id < best_id */
+        __m256d good = _mm256_cmp_pd(tk, zero, _CMP_NEQ_OQ);
+        good = _mm256_and_pd(good, _mm256_or_pd(_mm256_cmp_pd(tk, best, _CMP_LT_OQ),
+                                                _mm256_and_pd(_mm256_cmp_pd(tk, best, _CMP_EQ_OQ), lower)));
+        good = _mm256_andnot_pd(_mm256_cmp_pd(limit, tk, _CMP_LT_OQ), good);   /* not beyond the triangle */
+        ok[k] = good;
+        v[k] = tk;
+        m = _mm256_min_pd(m, _mm256_blendv_pd(inf, tk, good));
+    }
+    /* The horizontal minimum, then the first good lane holding it. */
+    __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd(m, 1));
+    m2 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
+    const __m256d mb = _mm256_broadcastsd_pd(m2);
+    for (int k = 0; k < nv; k++) {
+        const int hit = _mm256_movemask_pd(_mm256_and_pd(ok[k], _mm256_cmp_pd(v[k], mb, _CMP_EQ_OQ)));
+        if (hit) return 4 * k + __builtin_ctz((unsigned)hit);
+    }
+    return -1;
+}
 #endif
+
+int sphere_group_pick(const sphere_group_t *g, const double t[SPHERE_GROUP_MAX], int first, double best_t, int best_id,
+                      int triangle_holds, double tfar)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (g->avx2) return pick_avx2(g, t, first, best_t, best_id, triangle_holds, tfar);
+#endif
+    int pick = -1;
+    double pick_t = INFINITY;
+    for (int i = 0; i < g->n; i++) {
+        const int id = first + i;
+        if (t[i] == 0) continue;
+        if (!(t[i] < best_t || (t[i] == best_t && id < best_id))) continue;
+        if (triangle_holds && tfar < t[i]) continue;   /* a triangle already committed closer wins */
+        if (pick < 0 || t[i] < pick_t) { pick = i; pick_t = t[i]; }
+    }
+    return pick;
+}
 
 void sphere_group_t_all(const sphere_group_t *g, vec3 o, vec3 d, double eps, double t[SPHERE_GROUP_MAX])
 {

@@ -21,6 +21,13 @@ void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n);
 /* t[i] for every sphere i of the group: the nearest intersection beyond eps, or 0. */
 void sphere_group_t_all(const sphere_group_t *g, vec3 o, vec3 d, double eps, double t[SPHERE_GROUP_MAX]);
 
+/* The sphere that may replace the current hit, from the group's t (sphere_group_t_all; sphere i
+ * has index first + i): t != 0, t beats best_t (ties to the lower index than best_id) and, while
+ * a triangle holds the hit (triangle_holds), t is not beyond its tfar; of those the nearest,
+ * ties to the lower index. Returns the group's sphere i, or -1. */
+int sphere_group_pick(const sphere_group_t *g, const double t[SPHERE_GROUP_MAX], int first, double best_t, int best_id,
+                      int triangle_holds, double tfar);
+
 /* The scalar test for one sphere (centre c, squared radius rr). */
 static inline double sphere_group_t_scalar(double cx, double cy, double cz, double rr, vec3 o, vec3 d, double eps)
 {

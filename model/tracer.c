@@ -81,13 +81,16 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
     const int best_id0 = ctx->best_sphere, triangle_holds = rh->hit.geomID != args->geomID;
     int pick = -1;
     double pick_t = INFINITY;
-    for (int id = first; id < first + tr->spheres_per_prim; id++) {
-        double t = grouped ? tg[id - first] : sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
-        if (t == 0) continue;
-        if (!(t < best0 || (t == best0 && id < best_id0))) continue;
-        /* A triangle already committed closer (float t) wins. */
-        if (triangle_holds && tfar0 < t) continue;
-        if (pick < 0 || t < pick_t) { pick = id; pick_t = t; }
+    if (grouped) {
+        const int i = sphere_group_pick(&tr->group, tg, first, best0, best_id0, triangle_holds, tfar0);
+        if (i >= 0) { pick = first + i; pick_t = tg[i]; }
+    } else {
+        /* One sphere: the same tests. A triangle already committed closer (float t) wins. */
+        const double t = sphere_hit_t(&tr->src->spheres[first], ctx->o, ctx->d);
+        if (t != 0 && (t < best0 || (t == best0 && first < best_id0)) && !(triangle_holds && tfar0 < t)) {
+            pick = first;
+            pick_t = t;
+        }
     }
     if (pick < 0) return;
     ctx->best_t = pick_t;
