@@ -92,13 +92,11 @@ int sphere_group_pick(const sphere_group_t *g, const double t[SPHERE_GROUP_MAX],
 #endif
     int pick = -1;
     double pick_t = INFINITY;
-    for (int i = 0; i < g->n; i++) {
-        const int id = first + i;
-        if (t[i] == 0) continue;
-        if (!(t[i] < best_t || (t[i] == best_t && id < best_id))) continue;
-        if (triangle_holds && tfar < t[i]) continue;   /* a triangle already committed closer wins */
-        if (pick < 0 || t[i] < pick_t) { pick = i; pick_t = t[i]; }
-    }
+    for (int i = 0; i < g->n; i++)
+        if (sphere_may_replace(t[i], first + i, best_t, best_id, triangle_holds, tfar) && (pick < 0 || t[i] < pick_t)) {
+            pick = i;
+            pick_t = t[i];
+        }
     return pick;
 }
 

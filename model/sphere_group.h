@@ -21,6 +21,13 @@ void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n);
 /* t[i] for every sphere i of the group: the nearest intersection beyond eps, or 0. */
 void sphere_group_t_all(const sphere_group_t *g, vec3 o, vec3 d, double eps, double t[SPHERE_GROUP_MAX]);
 
+/* Whether a sphere hit at t (0: a miss) may replace the current hit: t beats best_t (ties to the
+ * lower index than best_id) and, while a triangle holds the hit, is not beyond its (float) tfar. */
+static inline int sphere_may_replace(double t, int id, double best_t, int best_id, int triangle_holds, double tfar)
+{
+    return t != 0 && (t < best_t || (t == best_t && id < best_id)) && !(triangle_holds && tfar < t);
+}
+
 /* The sphere that may replace the current hit, from the group's t (sphere_group_t_all; sphere i
  * has index first + i): t != 0, t beats best_t (ties to the lower index than best_id) and, while
  * a triangle holds the hit (triangle_holds), t is not beyond its tfar; of those the nearest,

@@ -85,9 +85,8 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
         const int i = sphere_group_pick(&tr->group, tg, first, best0, best_id0, triangle_holds, tfar0);
         if (i >= 0) { pick = first + i; pick_t = tg[i]; }
     } else {
-        /* One sphere: the same tests. A triangle already committed closer (float t) wins. */
         const double t = sphere_hit_t(&tr->src->spheres[first], ctx->o, ctx->d);
-        if (t != 0 && (t < best0 || (t == best0 && first < best_id0)) && !(triangle_holds && tfar0 < t)) {
+        if (sphere_may_replace(t, first, best0, best_id0, triangle_holds, tfar0)) {
             pick = first;
             pick_t = t;
         }
