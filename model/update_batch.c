@@ -333,6 +333,9 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
     const double rs2 = g->r_safe * g->r_safe;
     const batch_hit_t *sh = b->sorted;
     update_stats_t t = *st;
+    /* The radii the distance test reads: prefetched one bucket ahead. */
+    const char *radii = prec == PRECISION_DOUBLE ? (const char *)h->r2 : (const char *)h->r2_f32;
+    const size_t radius_size = prec == PRECISION_DOUBLE ? sizeof *h->r2 : sizeof *h->r2_f32;
     for (size_t group = first; group < last && group < b->n_groups; group++) {
         const size_t i = b->group[group], end = b->group[group + 1];
         /* Two buckets on, the entries; one bucket on (its hit-point indices have arrived), the radii. */
@@ -343,8 +346,7 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
         if (group + 1 < b->n_groups) {
             const grid_cands_t next = grid_bucket_cands(g, 0, sh[b->group[group + 1]].bucket);
             const size_t n = next.count < SCREEN_PREFETCH_MAX ? next.count : SCREEN_PREFETCH_MAX;
-            for (size_t k = 0; k < n; k++) __builtin_prefetch(prec == PRECISION_DOUBLE ? (const void *)&h->r2[next.hp[k]]
-                                                                                      : (const void *)&h->r2_f32[next.hp[k]]);
+            for (size_t k = 0; k < n; k++) __builtin_prefetch(radii + radius_size * next.hp[k]);
         }
         const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
         t.candidates += cand.count * (end - i);
