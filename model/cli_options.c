@@ -38,6 +38,33 @@ int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long lon
     return 0;
 }
 
+int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, double *out)
+{
+    const char *s = cli_value(a, opt);
+    if (!s) return 2;
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    if (end == s || *end != '\0' || errno == ERANGE || v != v)
+        return cli_error(a, "%s: '%s' is not a number", opt, s);
+    if ((lo_open ? !(v > lo) : !(v >= lo)) || !(v <= hi))
+        return cli_error(a, "%s: %s is out of range %s%g, %g]", opt, s, lo_open ? "(" : "[", lo, hi);
+    *out = v;
+    return 0;
+}
+
+int cli_update_rule(cli_args_t *a, const char *arg, datapath_t *datapath, double *alpha)
+{
+    if (!strcmp(arg, "--alpha")) return cli_real(a, arg, 0, 1, 1, alpha);
+    if (strcmp(arg, "--datapath")) return 1;
+    const char *s = cli_value(a, arg);
+    if (!s) return 2;
+    if (!strcmp(s, "paper")) *datapath = DATAPATH_PAPER;
+    else if (!strcmp(s, "stable")) *datapath = DATAPATH_STABLE;
+    else return cli_error(a, "--datapath: '%s' is not paper or stable", s);
+    return 0;
+}
+
 int cli_image_ext(cli_args_t *a, const char *path)
 {
     const char *dot = strrchr(path, '.');

@@ -28,6 +28,9 @@ static void render_usage(FILE *f)
         "  --photon-offset K      trace photon k with Halton index K + k (default 0): a reference render\n"
         "                         whose photon paths are disjoint from those of the renders it judges\n"
         "  --precision P          double (the reference) or fp32 (the PREE datapath's arithmetic)\n"
+        "  --datapath D           fp32: paper (default: the paper's PREU, bit for bit) or stable (exact\n"
+        "                         count, wide 1/r2 and tau/r2: accurate for any photon count)\n"
+        "  --alpha A              the radius reduction alpha, in (0, 1] (default 0.7)\n"
         "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
         "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
         "  --scan S               bucket (default: a block's candidates bucket by bucket, then applied in\n"
@@ -53,6 +56,8 @@ int pree_cmd_render(int argc, char **argv)
     while (a.i < argc) {
         const char *arg = argv[a.i++];
         long long v;
+        int r = cli_update_rule(&a, arg, &opt.datapath, &opt.alpha);
+        if (r != 1) { if (r) return r; continue; }
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { render_usage(stdout); return 0; }
         else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.width = (int)v; }
         else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.height = (int)v; }
@@ -99,6 +104,8 @@ int pree_cmd_render(int argc, char **argv)
         else scene_path = arg;
     }
     if (!scene_path) return cli_error(&a, "no scene given (usage: pree render SCENE [options])");
+    if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
+        return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
         return cli_error(&a, "%dx%d is more than 64 Mpixels", opt.width, opt.height);
     char default_out[600];

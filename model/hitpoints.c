@@ -55,6 +55,7 @@ void hitpoints_free(hitpoints_t *h)
     free(h->flux);
     free(h->pixel);
     free(h->fp32);
+    free(h->stable);
     free(h->r2);
     free(h->r2_f32);
     memset(h, 0, sizeof *h);

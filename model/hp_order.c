@@ -117,7 +117,7 @@ static int permute(void **arr, size_t sz, size_t n, size_t cap, const uint32_t *
 
 static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
 {
-    /* fp32 and r2_f32 are sized n (allocated by the render), the others cap. */
+    /* fp32, stable and r2_f32 are sized n (allocated by the render), the others cap. */
     int rc = 0;
     rc |= permute((void **)&h->hot, sizeof *h->hot, h->n, h->cap, perm, scatter);
     rc |= permute((void **)&h->weight, sizeof *h->weight, h->n, h->cap, perm, scatter);
@@ -125,6 +125,7 @@ static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
     rc |= permute((void **)&h->r2, sizeof *h->r2, h->n, h->cap, perm, scatter);
     rc |= permute((void **)&h->pixel, sizeof *h->pixel, h->n, h->cap, perm, scatter);
     rc |= permute((void **)&h->fp32, sizeof *h->fp32, h->n, h->n, perm, scatter);
+    rc |= permute((void **)&h->stable, sizeof *h->stable, h->n, h->n, perm, scatter);
     rc |= permute((void **)&h->r2_f32, sizeof *h->r2_f32, h->n, h->n, perm, scatter);
     return rc ? -1 : 0;
 }

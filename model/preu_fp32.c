@@ -14,19 +14,19 @@ uint32_t preu_n_emitted(uint64_t count)
     return preu_f32((double)count);
 }
 
-int preu_update(preu_hp_t *hp, const preu_photon_t *ph)
+int preu_update(preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha)
 {
-    return preu_update_inline(hp, ph);
+    return preu_update_inline(hp, ph, alpha);
 }
 
-void preu_update_trace(preu_trace_t *tr, const preu_hp_t *hp, const preu_photon_t *ph)
+void preu_update_trace(preu_trace_t *tr, const preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha)
 {
     for (int k = 0; k < 3; k++) {
         tr->d[k] = fp32_sub(hp->pos[k], ph->pos[k]);       /* S1-S2 subtractors SUB0..2 */
         tr->m[k] = fp32_mul(hp->f[k], ph->phi[k]);         /* S1-S2 multipliers MUL0..2 */
     }
-    tr->na = fp32_add(hp->n, PREU_ALPHA);                  /* S1-S2 adder ADD6 */
-    tr->n1 = fp32_add(hp->n, PREU_ONE);                    /* S1-S2 adder ADD7 */
+    tr->na = fp32_add(hp->n, alpha);                       /* S1-S2 adder ADD5 */
+    tr->n1 = fp32_add(hp->n, PREU_ONE);                    /* S1-S2 adder ADD6 */
     for (int k = 0; k < 3; k++) {
         tr->q[k] = fp32_sqr(tr->d[k]);                     /* S3-S4 squarers SQR0..2 */
         tr->t[k] = fp32_mul(tr->m[k], PREU_INV_PI);        /* S3-S4 multipliers MUL3..5 */

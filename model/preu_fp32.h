@@ -7,11 +7,12 @@
  * API
  *   preu_hp_t, preu_photon_t    hit-point state and photon at the PREE boundary (binary32 bits)
  *   preu_f32(x)                 the one rounding at the PREE boundary: double -> binary32 (RNE)
- *   preu_update(hp, ph)         one hit-point update operation (Eq. 6-8, M = 1, alpha = 0.7);
+ *   preu_update(hp, ph, alpha)  one hit-point update operation (Eq. 6-8, M = 1; alpha a binary32
+ *                               run-time constant, PREU_ALPHA = (float)0.7 by default);
  *                               returns 1 and writes tau, r2, n back when accepted, else 0 and
  *                               leaves *hp unchanged
  *   preu_update_inline          the same, inline, for the renderer's hot loop
- *   preu_update_trace(...)      every datapath value of one update, as the RTL computes it
+ *   preu_update_trace(tr, hp, ph, alpha)      every datapath value of one update, as the RTL computes it
  *                               whether or not the photon is accepted (for the RTL scoreboard)
  *   preu_radiance(L, hp, ne)    one radiance evaluation step (Eq. 9): L += tau * (1/((PI*r2)*NE))
  *   preu_n_emitted(count)       NE = the photon count rounded once to binary32
@@ -60,14 +61,14 @@ typedef struct {
 
 uint32_t preu_f32(double x);
 uint32_t preu_n_emitted(uint64_t count);
-int preu_update(preu_hp_t *hp, const preu_photon_t *ph);
-void preu_update_trace(preu_trace_t *tr, const preu_hp_t *hp, const preu_photon_t *ph);
+int preu_update(preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha);
+void preu_update_trace(preu_trace_t *tr, const preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha);
 void preu_radiance(uint32_t L[3], const preu_hp_t *hp, uint32_t n_emitted_f32);
 
 /* Write-back of an accepted photon: S1-S8 of the radius/flux/count path, explicit fp32_ops. */
-static inline void preu_update_accepted(preu_hp_t *hp, const preu_photon_t *ph)
+static inline void preu_update_accepted(preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha)
 {
-    uint32_t na = fp32_add(hp->n, PREU_ALPHA);   /* S1-S2 */
+    uint32_t na = fp32_add(hp->n, alpha);   /* S1-S2 */
     uint32_t n1 = fp32_add(hp->n, PREU_ONE);     /* S1-S2 */
     uint32_t g = fp32_div(na, n1);               /* S3-S6 */
     for (int c = 0; c < 3; c++) {
@@ -84,7 +85,7 @@ static inline void preu_update_accepted(preu_hp_t *hp, const preu_photon_t *ph)
  * equals the fp32_ops result bit for bit, and whether a result is NaN does not depend on which
  * NaN came in, so d2 <= r2 decides exactly as fp32_cmp(d2, r2).le does (NaN: not accepted).
  * Only the written-back values need fp32_ops' NaN rules. */
-static inline int preu_update_inline(preu_hp_t *hp, const preu_photon_t *ph)
+static inline int preu_update_inline(preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha)
 {
     float dx = fp32_from_bits(hp->pos[0]) - fp32_from_bits(ph->pos[0]);
     float dy = fp32_from_bits(hp->pos[1]) - fp32_from_bits(ph->pos[1]);
@@ -92,7 +93,7 @@ static inline int preu_update_inline(preu_hp_t *hp, const preu_photon_t *ph)
     float d2 = (dx * dx + dy * dy) + dz * dz;
     if (!(d2 <= fp32_from_bits(hp->r2)))
         return 0;
-    preu_update_accepted(hp, ph);
+    preu_update_accepted(hp, ph, alpha);
     return 1;
 }
 

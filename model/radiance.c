@@ -21,7 +21,8 @@ int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, i
     for (size_t k = 0; k < h->n; k++) {
         const uint32_t i = order[k];
         if (skip_zero && zero_weight(h, i)) { sk++; continue; }
-        preu_radiance(L + 3 * (size_t)h->pixel[i], &h->fp32[i], ne);
+        if (h->stable) preu_stable_radiance(L + 3 * (size_t)h->pixel[i], &h->stable[i], ne);
+        else preu_radiance(L + 3 * (size_t)h->pixel[i], &h->fp32[i], ne);
     }
     free(order);
     *skipped = sk;

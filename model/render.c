@@ -27,28 +27,45 @@ static long peak_rss_kb(void)
     return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
 }
 
-/* Hit-point state before the first photon: radius r0, no photons, no flux. */
-static int init_state(hitpoints_t *h, precision_t prec, double r0)
+/* Hit-point state before the first photon: radius r0, no photons, no flux; the update rule's
+ * alpha and, in fp32 mode, the datapath's state layout. */
+static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
 {
+    h->alpha = opt->alpha > 0 ? opt->alpha : UPDATE_ALPHA;
+    h->alpha32 = preu_f32(h->alpha);
+    h->kappa32 = preu_kappa(h->alpha32);
     for (size_t i = 0; i < h->n; i++) {
         h->r2[i] = r0 * r0;
         h->hot[i].count = 0;
         h->flux[i] = v3(0, 0, 0);
     }
-    if (prec != PRECISION_FP32) return 0;
-    h->fp32 = malloc((h->n ? h->n : 1) * sizeof *h->fp32);
-    h->r2_f32 = malloc((h->n ? h->n : 1) * sizeof *h->r2_f32);
-    if (!h->fp32 || !h->r2_f32) return -1;
+    if (opt->precision != PRECISION_FP32) return 0;
+    const int stable = opt->datapath == DATAPATH_STABLE;
+    const size_t n = h->n ? h->n : 1;
+    if (stable) h->stable = malloc(n * sizeof *h->stable);
+    else h->fp32 = malloc(n * sizeof *h->fp32);
+    h->r2_f32 = malloc(n * sizeof *h->r2_f32);
+    if (!(stable ? (void *)h->stable : (void *)h->fp32) || !h->r2_f32) return -1;
     const uint32_t r2 = preu_f32(r0 * r0);
     for (size_t i = 0; i < h->n; i++) {
-        preu_hp_t *s = &h->fp32[i];
         const hp_hot_t *p = &h->hot[i];
-        s->pos[0] = preu_f32(p->px); s->pos[1] = preu_f32(p->py); s->pos[2] = preu_f32(p->pz);
-        s->f[0] = preu_f32(h->weight[i].x); s->f[1] = preu_f32(h->weight[i].y); s->f[2] = preu_f32(h->weight[i].z);
-        s->tau[0] = s->tau[1] = s->tau[2] = 0;
-        s->r2 = r2;
-        s->n = 0;
-        h->r2_f32[i] = r2;
+        const uint32_t pos[3] = {preu_f32(p->px), preu_f32(p->py), preu_f32(p->pz)};
+        const uint32_t f[3] = {preu_f32(h->weight[i].x), preu_f32(h->weight[i].y), preu_f32(h->weight[i].z)};
+        if (stable) {
+            preu_shp_t *s = &h->stable[i];
+            memcpy(s->pos, pos, sizeof pos);
+            memcpy(s->f, f, sizeof f);
+            preu_stable_init(s, r0 * r0);
+            h->r2_f32[i] = preu_stable_screen_r2(s->w);
+        } else {
+            preu_hp_t *s = &h->fp32[i];
+            memcpy(s->pos, pos, sizeof pos);
+            memcpy(s->f, f, sizeof f);
+            s->tau[0] = s->tau[1] = s->tau[2] = 0;
+            s->r2 = r2;
+            s->n = 0;
+            h->r2_f32[i] = r2;
+        }
     }
     return 0;
 }
@@ -122,7 +139,8 @@ static void hash_results(render_result_t *res, precision_t prec)
     const hitpoints_t *h = &res->hp;
     res->stats.image_hash = fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
     uint64_t s = basis;
-    if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
+    if (prec == PRECISION_FP32 && h->stable) s = fnv1a(s, h->stable, h->n * sizeof *h->stable);
+    else if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
     else {
         s = fnv1a(s, h->r2, h->n * sizeof *h->r2);
         s = fnv1a(s, h->flux, h->n * sizeof *h->flux);
@@ -139,6 +157,10 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     const double t_start = omp_get_wtime();
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
     const int T = opt->sink ? 1 : omp_get_max_threads();
+    if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
+        snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
+        return -1;
+    }
     if (opt->sink && opt->precision != PRECISION_FP32) {
         snprintf(err, errlen, "co-simulation needs --precision fp32");
         return -1;
@@ -186,7 +208,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     /* Initial radius, hit-point state, and the grid. */
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
-    if (init_state(&res->hp, opt->precision, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
     if (opt->begin && opt->begin(opt->sink->user, &res->hp, render_emitted(opt->photons))) {
         snprintf(err, errlen, "the co-simulation could not start");
         goto done;

@@ -22,6 +22,8 @@ typedef struct {
     uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
     uint64_t photon_offset;  /* photon k is traced with sequence index photon_offset + k (default 0) */
     precision_t precision;
+    datapath_t datapath;     /* fp32: DATAPATH_PAPER (default) or DATAPATH_STABLE */
+    double alpha;            /* radius reduction, in (0, 1]; 0: UPDATE_ALPHA */
     grid_kind_t grid;
     int threads;             /* 0: OpenMP's default */
     int no_skip;             /* 1: disable the skips (for proving them harmless) */

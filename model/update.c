@@ -59,9 +59,7 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
         float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (!(d2 <= fp32_from_bits(h->r2_f32[hp]))) continue;
-        preu_update_accepted(&h->fp32[hp], &ph32);
-        h->r2_f32[hp] = h->fp32[hp].r2;
-        s->accepted++;
+        s->accepted += (unsigned long long)update_apply_fp32(h, hp, &ph32, d2);
     }
     if (sink && !sink->failed && sink->fn(sink->user, ph, &ph32, sink->buf, streamed)) sink->failed = 1;
 }

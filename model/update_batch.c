@@ -384,7 +384,8 @@ int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b
                 __builtin_prefetch(&h->weight[f]);
             } else {
                 __builtin_prefetch(&h->r2_f32[f], 1);
-                __builtin_prefetch(&h->fp32[f], 1);
+                if (h->stable) __builtin_prefetch(&h->stable[f], 1);
+                else __builtin_prefetch(&h->fp32[f], 1);
             }
         }
         const photon_hit_t *ph = b->hit[k[i].hit];
@@ -392,13 +393,12 @@ int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b
         if (prec == PRECISION_DOUBLE) {
             if (!(k[i].v2 <= h->r2[e])) continue;
             update_accept_double(h, e, ph->flux);
+            accepted++;
         } else {
             if (!((float)k[i].v2 <= fp32_from_bits(h->r2_f32[e]))) continue;
             const preu_photon_t ph32 = update_photon_fp32(ph);
-            preu_update_accepted(&h->fp32[e], &ph32);
-            h->r2_f32[e] = h->fp32[e].r2;
+            accepted += (unsigned long long)update_apply_fp32(h, e, &ph32, (float)k[i].v2);
         }
-        accepted++;
     }
     st->accepted += accepted;
     return 0;

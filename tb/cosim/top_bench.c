@@ -207,7 +207,7 @@ int main(int argc, char **argv)
                 if (!has0) cand[n++] = 0;
             }
         }
-        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph);
+        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph, PREU_ALPHA);
         if (abank) mis_add(&mis, preu, &ph, cand, n);
         else if (cosim_drv_photon(drv, &ph, cand, n)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
     }

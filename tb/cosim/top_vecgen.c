@@ -138,7 +138,7 @@ int main(int argc, char **argv)
                 if (!has0) cand[n++] = 0;
             }
         }
-        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph);
+        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph, PREU_ALPHA);
         uint64_t pa = 0;
         if (n) {
             if (place_random) {

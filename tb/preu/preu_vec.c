@@ -65,7 +65,7 @@ static void gen_update(preu_vec_t *v)
     v->hp.n = rnd_count();
     if (rndn(8) == 0) {                 /* radius exactly at the distance, or one ulp off */
         preu_trace_t tr;
-        preu_update_trace(&tr, &v->hp, &v->ph);
+        preu_update_trace(&tr, &v->hp, &v->ph, PREU_ALPHA);
         if (!fp32_is_nan(tr.d2) && tr.d2 > 0 && tr.d2 < 0x7f800000u)
             v->hp.r2 = tr.d2 + (uint32_t)rndn(3) - 1u;
     }
@@ -89,7 +89,7 @@ static void expect(preu_vec_t *v)
 {
     if (v->mode == 0) {
         preu_trace_t tr;
-        preu_update_trace(&tr, &v->hp, &v->ph);
+        preu_update_trace(&tr, &v->hp, &v->ph, PREU_ALPHA);
         v->accept = tr.accept;
         memcpy(v->tau, tr.tau_n, sizeof v->tau);
         v->r2 = tr.r2n;

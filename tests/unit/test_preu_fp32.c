@@ -35,7 +35,7 @@ static void test_first_accept(void **state)
     (void)state;
     preu_hp_t hp = fresh_hp(1.0f, 0.0f);
     preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, PREU_ALPHA);
     assert_int_equal(hp.r2, PREU_ALPHA);            /* 1 * 0.7f */
     assert_int_equal(hp.tau[0], 0x3e642a1eu);       /* INV_PI * 0.7f */
@@ -46,7 +46,7 @@ static void test_first_accept(void **state)
 
     preu_trace_t tr;
     preu_hp_t hp0 = fresh_hp(1.0f, 0.0f);
-    preu_update_trace(&tr, &hp0, &ph);
+    preu_update_trace(&tr, &hp0, &ph, PREU_ALPHA);
     assert_int_equal(tr.g, PREU_ALPHA);
     assert_int_equal(tr.n1, PREU_ONE);
     assert_int_equal(tr.t[0], PREU_INV_PI);
@@ -62,17 +62,17 @@ static void test_second_third_accept(void **state)
     (void)state;
     preu_hp_t hp = fresh_hp(1.0f, 0.0f);
     preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     preu_trace_t tr;
-    preu_update_trace(&tr, &hp, &ph);
+    preu_update_trace(&tr, &hp, &ph, PREU_ALPHA);
     assert_int_equal(tr.na, 0x3fb33333u);
     assert_int_equal(tr.n1, 0x3fd9999au);
     assert_int_equal(tr.g, 0x3f52d2d2u);
     assert_int_equal(tr.r2n, 0x3f139393u);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, 0x3fb33333u);
     assert_int_equal(hp.r2, 0x3f139393u);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, 0x40066666u);            /* 2.0999999 */
 }
 
@@ -84,10 +84,10 @@ static void test_rejected(void **state)
     hp.tau[1] = B(7.0f);
     preu_hp_t before = hp;
     preu_photon_t ph = photon_at(11.0f, 21.0f, 30.0f); /* d2 = 2 > 1 */
-    assert_int_equal(preu_update(&hp, &ph), 0);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 0);
     assert_memory_equal(&hp, &before, sizeof hp);
     preu_trace_t tr;
-    preu_update_trace(&tr, &before, &ph);
+    preu_update_trace(&tr, &before, &ph, PREU_ALPHA);
     assert_int_equal(tr.d2, B(2.0f));
     assert_int_equal(tr.accept, 0);
 }
@@ -98,16 +98,16 @@ static void test_distance_equals_radius(void **state)
     (void)state;
     preu_photon_t ph = photon_at(13.0f, 24.0f, 30.0f); /* d = (-3, -4, 0): d2 = 25 */
     preu_hp_t hp = fresh_hp(25.0f, 0.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.r2, B(25.0f * 0.7f));
     hp = fresh_hp(25.0f, 0.0f);
     hp.r2 = B(25.0f) - 1u;
-    assert_int_equal(preu_update(&hp, &ph), 0);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 0);
     /* signed zeros: d2 = +0 against r2 = -0 is accepted (+0 <= -0) */
     hp = fresh_hp(0.0f, 0.0f);
     hp.r2 = 0x80000000u;
     ph = photon_at(10.0f, 20.0f, 30.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
 }
 
 /* NaN and infinity: a NaN distance or radius never accepts; NaNs in the written-back state
@@ -120,27 +120,27 @@ static void test_nan_inf(void **state)
 
     ph.pos[1] = 0x7fc01234u;                             /* NaN photon position */
     before = hp;
-    assert_int_equal(preu_update(&hp, &ph), 0);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 0);
     assert_memory_equal(&hp, &before, sizeof hp);
 
     ph = photon_at(10.0f, 20.0f, 30.0f);
     hp.r2 = 0x7f800001u;                                 /* signalling NaN radius */
-    assert_int_equal(preu_update(&hp, &ph), 0);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 0);
 
     hp = fresh_hp(1.0f, 0.0f);
     hp.pos[2] = ph.pos[2] = 0x7f800000u;                 /* inf - inf: default NaN distance */
     preu_trace_t tr;
-    preu_update_trace(&tr, &hp, &ph);
+    preu_update_trace(&tr, &hp, &ph, PREU_ALPHA);
     assert_int_equal(tr.d[2], FP32_DEFAULT_NAN);
     assert_int_equal(tr.d2, FP32_DEFAULT_NAN);
-    assert_int_equal(preu_update(&hp, &ph), 0);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 0);
 
     hp = fresh_hp(1.0f, 0.0f);
     ph = photon_at(10.0f, 20.0f, 30.0f);
     hp.tau[0] = 0x7f800001u;                             /* sNaN flux: quieted, kept */
     hp.f[1] = 0xff812345u;                               /* NaN weight: m, t, u, tau' carry it */
     hp.f[2] = 0;  ph.phi[2] = 0x7f800000u;               /* 0 * inf: default NaN */
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.tau[0], 0x7fc00001u);
     assert_int_equal(hp.tau[1], 0xffc12345u);
     assert_int_equal(hp.tau[2], FP32_DEFAULT_NAN);
@@ -148,14 +148,14 @@ static void test_nan_inf(void **state)
 
     hp = fresh_hp(1.0f, 0.0f);
     hp.n = 0xff800010u;                                  /* NaN count: g, r2', tau', N' all NaN */
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, 0xffc00010u);
     assert_int_equal(hp.r2, 0xffc00010u);
     assert_int_equal(hp.tau[0], 0xffc00010u);
 
     hp = fresh_hp(1.0f, 0.0f);
     hp.n = 0x7f800000u;                                  /* N = inf: g = inf / inf */
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, 0x7f800000u);
     assert_int_equal(hp.r2, FP32_DEFAULT_NAN);
 }
@@ -167,11 +167,11 @@ static void test_count_limits(void **state)
     (void)state;
     preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f);
     preu_hp_t hp = fresh_hp(1.0f, 8388608.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, B(8388609.0f));
     assert_int_equal(hp.r2, B(1.0f));                    /* N + 0.7f = N + 1: g = 1 */
     hp = fresh_hp(1.0f, 16777216.0f);
-    assert_int_equal(preu_update(&hp, &ph), 1);
+    assert_int_equal(preu_update(&hp, &ph, PREU_ALPHA), 1);
     assert_int_equal(hp.n, B(16777216.0f));
     assert_int_equal(hp.r2, B(1.0f));                    /* N + 1 ties to even N: g = 1 */
 }
@@ -272,7 +272,7 @@ static void test_random_against_float(void **state)
         hp.r2 = B(r2);
         hp.n = B((float)(rnd32() % 100000) * 0.7f);
         preu_hp_t a = hp, b = hp;
-        int ra = preu_update(&a, &ph), rb = float_update(&b, &ph);
+        int ra = preu_update(&a, &ph, PREU_ALPHA), rb = float_update(&b, &ph);
         assert_int_equal(ra, rb);
         assert_memory_equal(&a, &b, sizeof a);
         accepted += ra;
@@ -299,9 +299,9 @@ static void test_random_against_trace(void **state)
             hp.r2 = B(1.0f);
         }
         preu_trace_t tr;
-        preu_update_trace(&tr, &hp, &ph);
+        preu_update_trace(&tr, &hp, &ph, PREU_ALPHA);
         preu_hp_t a = hp;
-        int ra = preu_update(&a, &ph);
+        int ra = preu_update(&a, &ph, PREU_ALPHA);
         assert_int_equal(ra, tr.accept);
         if (ra) {
             assert_memory_equal(a.tau, tr.tau_n, sizeof a.tau);

@@ -15,6 +15,7 @@ static hitpoints_t one_hit_point(vec3 weight)
     memset(&h, 0, sizeof h);
     assert_int_equal(hitpoints_push(&h, v3(1, 2, 3), v3(0, 1, 0), weight, 0), 0);
     h.r2[0] = 1.0;
+    h.alpha = UPDATE_ALPHA;
     return h;
 }
 
