@@ -1,0 +1,30 @@
+# make stress: the numerical stress suite of issue 10 (docs/numerics.md). Tables, CSVs and plots
+# go to out/stress/; the plots are copied to docs/images/numerics-*.png.
+#   stress-hitpoint  one hit point fed up to 1e9 (stable count: 2^32 + 1e6) accepted photons through
+#                    both fp32 datapaths against double, long double and the closed form; sweeps of
+#                    alpha, initial r2 and flux; non-finite inputs; N_emitted beyond 2^24 and 2^32
+#   stress-render    whole-render drift (fp32 paper/stable against double, 16x12, 1e6..1e8 photons,
+#                    cornell3 and cornell-sphere) and scale invariance (scaled copies, 1e-4..1e6)
+# The quick level runs inside make test: tests/checks/stress_quick.sh.
+STRESS_DIR := $(OUT)/stress
+STRESS_HP  := $(BUILD)/stress/stress_hitpoint
+.PHONY: stress stress-hitpoint stress-render stress-plots
+
+$(BUILD)/stress/stress_hitpoint.o: tests/stress/stress_hitpoint.c $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -c $< -o $@
+$(STRESS_HP): $(BUILD)/stress/stress_hitpoint.o $(LIBPREE)
+	$(CC) $(LDFLAGS) $< $(LIBPREE) -o $@ -lm
+
+TEST_PREREQS += $(STRESS_HP)
+
+stress: stress-hitpoint stress-render
+stress-hitpoint: $(DEPS_STAMP) $(STRESS_HP)
+	@scripts/stress-hitpoint.sh $(STRESS_HP) $(STRESS_DIR)
+stress-render: build
+	@scripts/stress-render.sh $(BUILD)/pree $(STRESS_DIR)
+# Redraw the plots from the CSVs of an earlier stress-hitpoint run.
+stress-plots:
+	@scripts/stress-plots.sh $(STRESS_DIR)
+
+-include $(wildcard $(BUILD)/stress/*.d)
