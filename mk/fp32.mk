@@ -1,28 +1,34 @@
-# The IEEE-754 binary32 units (rtl/pree_fp32_*.v): Verilator benches, Icarus testbenches over
-# vector files, lint and Yosys synthesis. Documented in docs/fp32_units.md.
+# The IEEE-754 binary32 units (rtl/pree_fp32_*.v) and the stable datapath's wide accumulator
+# (rtl/pree_wacc.v, unit "wacc") and count conversion (rtl/pree_u64_to_f32.v, unit "u2f"):
+# Verilator benches, Icarus testbenches over vector files, lint and Yosys synthesis.
+# Documented in docs/fp32_units.md.
 #
 #   make sim-fp32          quick level: Verilator (directed + FP32_QUICK random per unit) and
 #                          Icarus (directed + FP32_IV_QUICK random per unit); part of `make sim`
 #   make sim-fp32-full     thorough level: FP32_FULL random per unit in Verilator (>= 10 million)
 #                          and FP32_IV_FULL per unit in Icarus, and the squarer's exhaustive
 #                          significand sweep (sim-fp32-sweep-sqr)
-#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp div8)
+#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp div8 wacc u2f)
 #   make lint-fp32         verilator --lint-only -Wall on every unit and divider configuration
 #   make synth-fp32        yosys synth_xilinx per unit, latch and loop checks, resource table
 #                          in $(BUILD)/fp32/synth/resources.md
 # "div8" is the divider's deeper configuration (parameter Stages = 8, latency 8); it goes
 # through the same benches as the default (Stages = 4).
 
-FP32_UNITS    := add mul sqr div cmp div8
+FP32_UNITS    := add mul sqr div cmp div8 wacc u2f
 FP32_DIR      := $(BUILD)/fp32
-FP32_RTL      := $(wildcard rtl/pree_fp32_*.v)
+FP32_RTL      := $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
+# The module of each unit: pree_fp32_<unit> unless named here.
+FP32_TOP_wacc := pree_wacc
+FP32_TOP_u2f  := pree_u64_to_f32
+fp32_top       = $(or $(FP32_TOP_$(1)),pree_fp32_$(1))
 FP32_QUICK    ?= 1000000
 FP32_FULL     ?= 10000000
 FP32_IV_QUICK ?= 20000
 FP32_IV_FULL  ?= 200000
 FP32_SEED     ?= 1
 FP32_CFLAGS   := -std=c11 -D_GNU_SOURCE -O2 $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel -Itb/fp32
-FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/fp32_ops.h
+FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/fp32_ops.h model/wide_acc.h
 
 FP32_VL_BIN := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/vl_$(u)/fp32_bench_$(u))
 FP32_IV_SIM := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/tb_fp32_$(u).vvp)
@@ -50,7 +56,7 @@ define FP32_UNIT_RULES
 $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
-	  -Mdir $(FP32_DIR)/vl_$(1) --top-module pree_fp32_$(2) -y rtl rtl/pree_fp32_$(2).v \
+	  -Mdir $(FP32_DIR)/vl_$(1) --top-module $(call fp32_top,$(2)) -y rtl rtl/$(call fp32_top,$(2)).v \
 	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
 	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model)" \
 	  -o fp32_bench_$(1) > $(FP32_DIR)/vl_$(1).build.log 2>&1 \
@@ -60,7 +66,7 @@ $(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32
 	@mkdir -p $$(@D)
 	iverilog -g2005 -Wall $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
 	  -o $$@ -y rtl $(if $(filter cmp,$(2)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
-	  rtl/pree_fp32_$(2).v
+	  rtl/$(call fp32_top,$(2)).v
 
 .PHONY: sim-fp32-vl-$(1) sim-fp32-iv-$(1) sim-fp32-full-vl-$(1) sim-fp32-full-iv-$(1)
 sim-fp32-vl-$(1): $(FP32_DIR)/vl_$(1)/fp32_bench_$(1)
@@ -77,7 +83,7 @@ sim-fp32-full-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
 	$(FP32_DIR)/fp32_vecgen $(2) $(FP32_IV_FULL) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_full.txt
 	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_full.txt +seed=$(FP32_SEED)
 endef
-$(foreach u,add mul sqr div cmp,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
+$(foreach u,add mul sqr div cmp wacc u2f,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
 $(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAGES=8))
 
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
@@ -91,10 +97,11 @@ sim-fp32-sweep-sqr: $(FP32_DIR)/vl_sqr/fp32_bench_sqr
 # Lint: every unit as a top, with the helpers it instantiates, and the divider at Stages 2, 4
 # and 8; warnings are errors.
 lint-fp32: | $(DEPS_STAMP)
-	@set -e; for u in add mul sqr div cmp "div -GStages=2" "div -GStages=8"; do \
+	@set -e; for u in $(foreach u,add mul sqr div cmp wacc u2f,$(call fp32_top,$(u))) \
+	    "pree_fp32_div -GStages=2" "pree_fp32_div -GStages=8"; do \
 	  set -- $$u; \
-	  echo "verilator --lint-only -Wall $$2 -y rtl --top-module pree_fp32_$$1 rtl/pree_fp32_$$1.v"; \
-	  verilator --lint-only -Wall $$2 -y rtl --top-module pree_fp32_$$1 rtl/pree_fp32_$$1.v; \
+	  echo "verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v"; \
+	  verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v; \
 	done
 
 # Synthesis: one Yosys run per unit (scripts/fp32_synth.sh), then the resource/depth table.

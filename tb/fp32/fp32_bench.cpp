@@ -1,8 +1,9 @@
 // fp32_bench.cpp: Verilator bench for one binary32 unit, checked bit for bit against
-// model/fp32_ops.h (through fp32_gen.c).
+// model/fp32_ops.h, or for the stable datapath's pree_wacc and pree_u64_to_f32 against
+// model/wide_acc.h (through fp32_gen.c).
 //
-// Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP> and the matching Verilated model
-// (for a divider built with -GStages=N, also -DFP32_DIV_STAGES=N).
+// Built once per unit with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP|WACC|U2F> and the matching
+// Verilated model (for a divider built with -GStages=N, also -DFP32_DIV_STAGES=N).
 // Usage: fp32_bench_<unit> [random_count [seed [sweep]]]  (defaults 200000, 1). Runs the
 // directed list, then (with the word "sweep", squarer only) the exhaustive significand sweep of
 // fp32_gen.c, then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
@@ -20,25 +21,30 @@
 #include "verilated.h"
 #include "fp32_gen.h"
 
+// Per unit: the model, the module name and the latency; then the hex digits of a and y in reports.
 #if defined(FP32_UNIT_ADD)
 #include "Vpree_fp32_add.h"
 typedef Vpree_fp32_add Dut;
 static const fp32_unit_t UNIT = FP32_ADD;
+static const char *const TOP = "pree_fp32_add";
 static const int LATENCY = 2;
 #elif defined(FP32_UNIT_MUL)
 #include "Vpree_fp32_mul.h"
 typedef Vpree_fp32_mul Dut;
 static const fp32_unit_t UNIT = FP32_MUL;
+static const char *const TOP = "pree_fp32_mul";
 static const int LATENCY = 2;
 #elif defined(FP32_UNIT_SQR)
 #include "Vpree_fp32_sqr.h"
 typedef Vpree_fp32_sqr Dut;
 static const fp32_unit_t UNIT = FP32_SQR;
+static const char *const TOP = "pree_fp32_sqr";
 static const int LATENCY = 2;
 #elif defined(FP32_UNIT_DIV)
 #include "Vpree_fp32_div.h"
 typedef Vpree_fp32_div Dut;
 static const fp32_unit_t UNIT = FP32_DIV;
+static const char *const TOP = "pree_fp32_div";
 #ifndef FP32_DIV_STAGES
 #define FP32_DIV_STAGES 4   // the model's Stages parameter (-GStages=N), the latency
 #endif
@@ -47,10 +53,25 @@ static const int LATENCY = FP32_DIV_STAGES;
 #include "Vpree_fp32_cmp.h"
 typedef Vpree_fp32_cmp Dut;
 static const fp32_unit_t UNIT = FP32_CMP;
+static const char *const TOP = "pree_fp32_cmp";
 static const int LATENCY = 0;
+#elif defined(FP32_UNIT_WACC)
+#include "Vpree_wacc.h"
+typedef Vpree_wacc Dut;
+static const fp32_unit_t UNIT = FP32_WACC;
+static const char *const TOP = "pree_wacc";
+static const int LATENCY = 2;
+#elif defined(FP32_UNIT_U2F)
+#include "Vpree_u64_to_f32.h"
+typedef Vpree_u64_to_f32 Dut;
+static const fp32_unit_t UNIT = FP32_U2F;
+static const char *const TOP = "pree_u64_to_f32";
+static const int LATENCY = 2;
 #else
-#error "define FP32_UNIT_ADD, _MUL, _SQR, _DIV or _CMP"
+#error "define FP32_UNIT_ADD, _MUL, _SQR, _DIV, _CMP, _WACC or _U2F"
 #endif
+static const int A_DIGITS = (UNIT == FP32_WACC || UNIT == FP32_U2F) ? 16 : 8;
+static const int Y_DIGITS = UNIT == FP32_WACC ? 16 : 8;
 
 namespace {
 
@@ -65,15 +86,16 @@ struct Pending {
 struct Scoreboard {
     uint64_t checked = 0, errors = 0;
 
-    void fail(const fp32_case_t &c, uint32_t got, const char *why)
+    void fail(const fp32_case_t &c, uint64_t got, const char *why)
     {
         if (errors++ < MAX_REPORT)
-            std::printf("MISMATCH %s: a=%08" PRIx32 " b=%08" PRIx32 " sub=%" PRIu32
-                        " expected=%08" PRIx32 " got=%08" PRIx32 " (%s)\n",
-                        fp32_unit_name(UNIT), c.a, c.b, c.sub, c.y, got, why);
+            std::printf("MISMATCH %s: a=%0*" PRIx64 " b=%08" PRIx32 " sub=%" PRIu32
+                        " expected=%0*" PRIx64 " got=%0*" PRIx64 " (%s)\n",
+                        fp32_unit_name(UNIT), A_DIGITS, c.a, c.b, c.sub, Y_DIGITS, c.y,
+                        Y_DIGITS, got, why);
     }
 
-    void check(const fp32_case_t &c, uint32_t got)
+    void check(const fp32_case_t &c, uint64_t got)
     {
         checked++;
         if (got != c.y) fail(c, got, "value");
@@ -106,8 +128,10 @@ struct Source {
 #if !defined(FP32_UNIT_CMP)
 void drive(Dut &dut, const fp32_case_t &c)
 {
-    dut.a_i = c.a;
-#if !defined(FP32_UNIT_SQR)
+    dut.a_i = c.a;   // 64-bit port (QData) for wacc and u2f, else the low 32 bits
+#if defined(FP32_UNIT_WACC)
+    dut.t_i = c.b;
+#elif !defined(FP32_UNIT_SQR) && !defined(FP32_UNIT_U2F)
     dut.b_i = c.b;
 #endif
 #if defined(FP32_UNIT_ADD)
@@ -203,9 +227,9 @@ int main(int argc, char **argv)
     int protocol_error = run(*dut, src, sb);
     dut->final();
 
-    std::printf("pree_fp32_%s (latency %d): %zu directed + %zu sweep + %" PRIu64 " random "
+    std::printf("%s (latency %d): %zu directed + %zu sweep + %" PRIu64 " random "
                 "(seed %" PRIu64 "): %" PRIu64 " checked, %" PRIu64 " mismatches%s\n",
-                fp32_unit_name(UNIT), LATENCY, src.directed, src.swept, count, seed, sb.checked,
+                TOP, LATENCY, src.directed, src.swept, count, seed, sb.checked,
                 sb.errors, protocol_error ? ", handshake error" : "");
     if (sb.errors || protocol_error || sb.checked != src.total) {
         std::printf("FAIL: rerun with: %s %" PRIu64 " %" PRIu64 "%s\n", argv[0], count, seed,

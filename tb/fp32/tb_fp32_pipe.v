@@ -1,7 +1,10 @@
-// tb_fp32_pipe: self-checking Icarus/Verilog-2005 testbench for one pipelined binary32 unit.
+// tb_fp32_pipe: self-checking Icarus/Verilog-2005 testbench for one pipelined binary32 unit, or
+// one of the stable datapath's pree_wacc and pree_u64_to_f32 (64-bit a; 64-bit y for wacc).
 //
 // The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR or -DUNIT_DIV (with
-// -DDIV_STAGES=N for a divider configured with Stages = N; 4 by default).
+// -DDIV_STAGES=N for a divider configured with Stages = N; 4 by default), -DUNIT_WACC or
+// -DUNIT_U2F. Operand a and the result are handled as 64 bits; the 32-bit units use the low half
+// (and the vector file's fields are as wide as the unit's).
 // Run: vvp -N <sim> +vec=<file> [+seed=<n>]; the vector file comes from fp32_vecgen
 // ("a b sub expected" in hex per line). Operations enter with random gaps in valid_i; each
 // accepted operation's expected result goes into a FIFO and is compared, bit for bit, when
@@ -13,19 +16,31 @@ module tb_fp32_pipe;
 
 `ifdef UNIT_ADD
   localparam LAT = 2;
-  localparam [8*3-1:0] NAME = "add";
+  localparam NAME = "add";
+  localparam AW = 32, YW = 32;   // widths of a and y
 `elsif UNIT_MUL
   localparam LAT = 2;
-  localparam [8*3-1:0] NAME = "mul";
+  localparam NAME = "mul";
+  localparam AW = 32, YW = 32;
 `elsif UNIT_SQR
   localparam LAT = 2;
-  localparam [8*3-1:0] NAME = "sqr";
+  localparam NAME = "sqr";
+  localparam AW = 32, YW = 32;
 `elsif UNIT_DIV
 `ifndef DIV_STAGES
 `define DIV_STAGES 4
 `endif
   localparam LAT = `DIV_STAGES;
-  localparam [8*3-1:0] NAME = "div";
+  localparam NAME = "div";
+  localparam AW = 32, YW = 32;
+`elsif UNIT_WACC
+  localparam LAT = 2;
+  localparam NAME = "wacc";
+  localparam AW = 64, YW = 64;
+`elsif UNIT_U2F
+  localparam LAT = 2;
+  localparam NAME = "u2f";
+  localparam AW = 64, YW = 32;
 `endif
   localparam FIFO = 16;       // > LAT: room for every operation in flight
   localparam MAX_REPORT = 20;
@@ -33,37 +48,47 @@ module tb_fp32_pipe;
   reg         clk;
   reg         rst_n;
   reg         valid_in;
-  reg  [31:0] a;
+  reg  [63:0] a;
   reg  [31:0] b;
   reg         sub;
   wire        valid_out;
-  wire [31:0] y;
+  wire [63:0] y;
 
 `ifdef UNIT_ADD
-  pree_fp32_add dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .b_i(b),
-                     .sub_i(sub), .valid_o(valid_out), .y_o(y));
+  pree_fp32_add dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+                     .sub_i(sub), .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_MUL
-  pree_fp32_mul dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .b_i(b),
-                     .valid_o(valid_out), .y_o(y));
+  pree_fp32_mul dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+                     .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_SQR
-  pree_fp32_sqr dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a),
-                     .valid_o(valid_out), .y_o(y));
+  pree_fp32_sqr dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]),
+                     .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_DIV
-  pree_fp32_div #(.Stages(`DIV_STAGES)) dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .b_i(b),
-                     .valid_o(valid_out), .y_o(y));
+  pree_fp32_div #(.Stages(`DIV_STAGES)) dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+                     .valid_o(valid_out), .y_o(y[31:0]));
+`elsif UNIT_WACC
+  pree_wacc dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .t_i(b),
+                 .valid_o(valid_out), .y_o(y));
+`elsif UNIT_U2F
+  pree_u64_to_f32 dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a),
+                       .valid_o(valid_out), .y_o(y[31:0]));
+`endif
+`ifndef UNIT_WACC
+  assign y[63:32] = 32'd0;   // the 32-bit results, compared as 64 bits
 `endif
 
   // Scoreboard FIFO of operations in flight.
-  reg [31:0] q_a   [0:FIFO-1];
+  reg [63:0] q_a   [0:FIFO-1];
   reg [31:0] q_b   [0:FIFO-1];
   reg        q_sub [0:FIFO-1];
-  reg [31:0] q_y   [0:FIFO-1];
+  reg [63:0] q_y   [0:FIFO-1];
   reg [63:0] q_cyc [0:FIFO-1];
   integer    wr, rd;
 
   reg [8*1024-1:0] vec_file;
   integer    fd, nread, seed, density;
-  reg [31:0] va, vb, vs, vy;
+  reg [63:0] va, vy;
+  reg [31:0] vb, vs;
   reg        have_vec;
   reg [63:0] cycle;
   integer    vectors, checked, errors;
@@ -101,7 +126,7 @@ module tb_fp32_pipe;
         wr = wr + 1; vectors = vectors + 1;
         next_vector;
       end else begin
-        valid_in = 1'b0; a = $random(seed); b = $random(seed); sub = $random(seed);
+        valid_in = 1'b0; a = {$random(seed), $random(seed)}; b = $random(seed); sub = $random(seed);
       end
 
       @(posedge clk);
@@ -109,16 +134,17 @@ module tb_fp32_pipe;
       #1;
       if (wr != rd && q_cyc[rd % FIFO] + LAT == cycle) begin
         if (!valid_out) begin
-          $display("MISMATCH %0s: valid_o missing %0d cycles after a=%08h b=%08h",
-                   NAME, LAT, q_a[rd % FIFO], q_b[rd % FIFO]);
+          $display("MISMATCH %0s: valid_o missing %0d cycles after a=%h b=%08h",
+                   NAME, LAT, q_a[rd % FIFO][AW-1:0], q_b[rd % FIFO]);
           $fatal(1, "tb_fp32_pipe %0s: handshake error", NAME);
         end
         checked = checked + 1;
         if (y !== q_y[rd % FIFO]) begin
           errors = errors + 1;
           if (errors <= MAX_REPORT)
-            $display("MISMATCH %0s: a=%08h b=%08h sub=%0d expected=%08h got=%08h", NAME,
-                     q_a[rd % FIFO], q_b[rd % FIFO], q_sub[rd % FIFO], q_y[rd % FIFO], y);
+            $display("MISMATCH %0s: a=%h b=%08h sub=%0d expected=%h got=%h", NAME,
+                     q_a[rd % FIFO][AW-1:0], q_b[rd % FIFO], q_sub[rd % FIFO],
+                     q_y[rd % FIFO][YW-1:0], y[YW-1:0]);
         end
         rd = rd + 1;
       end else if (valid_out) begin
