@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The fp32 benches can fail: each mutant below breaks one rule of the binary32 units (tie
-# rounding, signed zero, NaN priority, latency, -0 == +0) in a copy of rtl/,
-# and both the Verilator bench and the Icarus testbench of the affected unit must then report
-# mismatches and exit non-zero. A mutant that passes either fails this check.
+# rounding, signed zero, NaN priority, latency, -0 == +0) or of the stable datapath's wide
+# accumulator (truncation, saturation, exponent field, -0 dropped) and count conversion (sticky
+# bit, shift amount) in a copy of rtl/, and both the Verilator bench and the Icarus testbench of
+# the affected unit must then report mismatches and exit non-zero. A mutant that passes either
+# fails this check.
 set -u
 cd "$(dirname "$0")/../.."
 make --no-print-directory -s build/fp32/fp32_gen.o build/fp32/fp32_vecgen >/dev/null \
@@ -18,20 +20,31 @@ mutants=(
   "div@pree_fp32_div.v@s/if (nan_a) /if (nan_a \&\& !nan_b) /@NaN priority a before b"
   "sqr@pree_fp32_sqr.v@s/assign valid_o = valid_q\[LATENCY-1\];/assign valid_o = valid_q[0];/@latency 1 instead of 2"
   "cmp@pree_fp32_cmp.v@s/wire eq_num    = both_zero | /wire eq_num    = /@-0 == +0"
+  "wacc@pree_wacc.v@s/carry ? sum\[56:1\] : sum\[55:0\];/carry ? sum[56:1] + {55'd0, sum[0]} : sum[55:0];/@carry normalisation rounds instead of truncating"
+  "wacc@pree_wacc.v@s/wire        sat   = (exp_s >= 9'd255);/wire        sat   = 1'b0;/@no saturation to WIDE_MAX"
+  "wacc@pree_wacc.v@s/{man_s\[55\] ? exp_s\[7:0\] : 8'd0, man_s}/{exp_s[7:0], man_s}/@e field kept when bit 55 is 0"
+  "wacc@pree_wacc.v@s/(inf_a | sign_t)/(inf_a | (sign_t \&\& t_i[30:0] != 31'd0))/@t = -0 added as +0"
+  "u2f@pree_u64_to_f32.v@s/(norm\[36:0\] != 37'd0)/(norm[35:0] != 36'd0)/@sticky bit misses one bit"
+  "u2f@pree_u64_to_f32.v@s/s1_a_q << s1_lz_q\[5:0\]/s1_a_q << s1_lz_q[4:0]/@shift ignores lz bit 5"
 )
+
+# The module of a unit: pree_fp32_<unit> unless named here (as in mk/fp32.mk).
+top_of() {
+  case $1 in wacc) echo pree_wacc ;; u2f) echo pree_u64_to_f32 ;; *) echo "pree_fp32_$1" ;; esac
+}
 
 i=0
 for m in "${mutants[@]}"; do
   IFS='@' read -r unit file expr what <<<"$m"
   i=$((i + 1)); dir=$work/m$i
-  mkdir -p "$dir/rtl"; cp rtl/pree_fp32_*.v "$dir/rtl/"
+  mkdir -p "$dir/rtl"; cp rtl/pree_fp32_*.v rtl/pree_wacc.v rtl/pree_u64_to_f32.v "$dir/rtl/"
   sed -i "$expr" "$dir/rtl/$file"
   if cmp -s "rtl/$file" "$dir/rtl/$file"; then
     echo "mutant $i ($what): the edit did not apply to rtl/$file"; fail=1; continue
   fi
-  U=$(echo "$unit" | tr a-z A-Z)
-  build=(verilator --cc --exe --build -O0 -j 1 -Mdir "$dir/vl" --top-module "pree_fp32_$unit"
-         -y "$dir/rtl" "$dir/rtl/pree_fp32_$unit.v" "$PWD/tb/fp32/fp32_bench.cpp" "$PWD/build/fp32/fp32_gen.o"
+  U=$(echo "$unit" | tr a-z A-Z); top=$(top_of "$unit")
+  build=(verilator --cc --exe --build -O0 -j 1 -Mdir "$dir/vl" --top-module "$top"
+         -y "$dir/rtl" "$dir/rtl/$top.v" "$PWD/tb/fp32/fp32_bench.cpp" "$PWD/build/fp32/fp32_gen.o"
          -CFLAGS "-O0 -DFP32_UNIT_$U -I$PWD/tb/fp32 -I$PWD/model" -o bench)
   if ! "${build[@]}" >"$dir/build.log" 2>&1; then
     echo "mutant $i ($what): build failed, see $dir/build.log"; fail=1; continue
@@ -44,7 +57,7 @@ for m in "${mutants[@]}"; do
   fi
   tb=tb/fp32/tb_fp32_pipe.v; def=-DUNIT_$U
   if [ "$unit" = cmp ]; then tb=tb/fp32/tb_fp32_cmp.v; def=; fi
-  iv=(iverilog -g2005 $def -o "$dir/tb.vvp" -y "$dir/rtl" "$tb" "$dir/rtl/pree_fp32_$unit.v")
+  iv=(iverilog -g2005 $def -o "$dir/tb.vvp" -y "$dir/rtl" "$tb" "$dir/rtl/$top.v")
   if ! build/fp32/fp32_vecgen "$unit" 5000 1 "$dir/vec.txt" >/dev/null || ! "${iv[@]}" >"$dir/iv.log" 2>&1; then
     echo "mutant $i ($what): Icarus build failed, see $dir/iv.log"; fail=1; continue
   fi
