@@ -4,7 +4,7 @@
 # (alpha 0.7, r2_0 = 1, constant flux 1, 1e9 accepts, both datapaths), the same with random flux;
 # the stable datapath's count through 2^32 (2^32 + 1e6 real updates); sweeps of alpha (0.1 .. 1,
 # 1e9 accepts), initial r2 (1e-40 .. 1e30) and flux (0, 1e-40, 1e30) (1e8 accepts); the
-# non-finite input table; N_emitted
+# non-finite input table; the stable r2 error split into its two biases (--decompose); N_emitted
 # beyond 2^24 and 2^32. Writes OUTDIR/hp-LABEL.txt per run, every checkpoint to OUTDIR/hitpoint.csv,
 # the sweep summary OUTDIR/sweeps.md, and the plots (scripts/stress-plots.sh), which the full level
 # also copies to docs/images/numerics-*.png.
@@ -31,6 +31,7 @@ hp() {  # hp LABEL ARGS...: one run, its text output kept, its checkpoints appen
 grep -q '^selftest passed' "$out/selftest.txt"
 "$bin" --nonfinite > "$out/nonfinite.txt"
 "$bin" --ne-table > "$out/ne.txt"
+"$bin" --decompose $MAIN > "$out/decompose.txt"
 
 # The main runs: checkpoints ten to a decade for the plots, plus 2^23-ish and 2^24 marks.
 hp main --accepts $MAIN --per-decade 10 --at 16777216 --at 30000000

@@ -15,6 +15,9 @@
  *        stress_hitpoint --ne-table           N_emitted -> NE (binary32) and the radiance
  *                                             through 2^24 and 2^32 emitted photons
  *        stress_hitpoint --selftest           the references checked against each other
+ *        stress_hitpoint --decompose K        the stable datapath's r2 error at alpha 0.7 split into
+ *                                             its two biases (w truncated to binary32 in the
+ *                                             increment; kappa rounded), each alone in long double
  * Run options:
  *   --accepts K            accepted photons (integer or 1e9-style; default 1e6)
  *   --alpha A              alpha (default 0.7), rounded once to binary32 as the datapaths take it
@@ -661,6 +664,44 @@ static int run_selftest(void)
     return fail;
 }
 
+/* ---- What the stable datapath's r2 error is made of -------------------------------------
+ * w' = w + w32 e: the exact recurrence w (1 + kappa / k) in long double with one datapath effect
+ * at a time: the increment taken from w truncated to 24 significant bits (wide_f32), and kappa
+ * rounded to binary32 (preu_kappa); both; and the datapath itself. */
+static long double trunc24(long double w)
+{
+    int e;
+    long double m = frexpl(w, &e);
+    return ldexpl(floorl(ldexpl(m, 24)), e - 24);
+}
+
+static int run_decompose(uint64_t K)
+{
+    const uint32_t k32 = preu_kappa(PREU_ALPHA);
+    const long double a = f32v(PREU_ALPHA), ke = (1.0L - a) / a, kf = f32v(k32);
+    long double w0 = 1, w1 = 1, w2 = 1, w3 = 1;
+    preu_shp_t sp = {{0, 0, 0}, {PREU_ONE, PREU_ONE, PREU_ONE}, {0, 0, 0}, 0, 0};
+    preu_stable_init(&sp, 1.0);
+    const preu_photon_t ph = {{0, 0, 0}, {PREU_ONE, PREU_ONE, PREU_ONE}};
+    printf("# stable datapath, alpha %.9g, r2_0 = 1: r2 error against the exact recurrence, kappa = %.9g (binary32: "
+           "%.9g, %+.2e)\n", (double)a, (double)ke, (double)kf, (double)(kf / ke - 1));
+    printf("%14s %16s %16s %16s %16s\n", "accepts", "w32 truncation", "kappa rounding", "both", "datapath");
+    uint64_t next = 10;
+    for (uint64_t k = 1; k <= K; k++) {
+        w0 = w0 * (1.0L + ke / (long double)k);
+        w1 = w1 + trunc24(w1) * ke / (long double)k;
+        w2 = w2 * (1.0L + kf / (long double)k);
+        w3 = w3 + trunc24(w3) * kf / (long double)k;
+        preu_stable_update(&sp, &ph, k32);
+        if (k == next || k == K) {
+            printf("%14" PRIu64 " %+16.2e %+16.2e %+16.2e %+16.2e\n", k, (double)(w0 / w1 - 1), (double)(w0 / w2 - 1),
+                   (double)(w0 / w3 - 1), (double)(w0 / wide_to_double(sp.w) - 1));
+            if (k == next) next *= 10;
+        }
+    }
+    return 0;
+}
+
 static void usage(void)
 {
     fprintf(stderr, "usage: stress_hitpoint [--accepts K] [--alpha A] [--r2 R] [--flux F] [--flux-mode const|random] "
@@ -678,6 +719,7 @@ int main(int argc, char **argv)
         if (!strcmp(a, "--nonfinite")) return run_nonfinite();
         if (!strcmp(a, "--ne-table")) return run_ne_table();
         if (!strcmp(a, "--selftest")) return run_selftest();
+        if (!strcmp(a, "--decompose") && v) return run_decompose(parse_count(v));
         if (!strcmp(a, "--no-ld")) { o.ld = 0; continue; }
         if (!v) usage();
         i++;
