@@ -11,14 +11,16 @@
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
 #
-# The three Verilated models (NumPreu 4, 8, 16) are linked into build/pree for `pree cosim`.
+# The Verilated models are linked into build/pree for `pree cosim`: the paper datapath for
+# NumPreu 4, 8, 16 (COSIM_PREUS) and the stable datapath for COSIM_STABLE_PREUS (default 4;
+# `make COSIM_STABLE_PREUS="4 8 16"` builds all three).
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
 COSIM_DIR    := $(BUILD)/cosim
 COSIM_PREUS  := 4 8 16
 COSIM_RTL    := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
-                rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v)
+                rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 # Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels
 # 2^(log2 NumPreu + 2). The model directory names carry them (and a version of the bank hash),
@@ -29,10 +31,15 @@ COSIM_HPB_16 := 8
 COSIM_PXB_4 := 4
 COSIM_PXB_8 := 5
 COSIM_PXB_16 := 6
-COSIM_MDIR    = $(COSIM_DIR)/vl2_p$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+COSIM_STABLE_PREUS ?= 4
+# $(1): PREU count, $(2): p (paper) or s (stable).
+COSIM_MDIR    = $(COSIM_DIR)/vl2_$(2)$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
 COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
-                -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1))
-COSIM_LIBS   := $(foreach p,$(COSIM_PREUS),$(call COSIM_MDIR,$(p))/Vpree_top_p$(p)__ALL.a)
+                -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GDatapath=$(if $(filter s,$(2)),1,0)
+COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PREUS),$(p):s)
+cosim_n = $(word 1,$(subst :, ,$(1)))
+cosim_d = $(word 2,$(subst :, ,$(1)))
+COSIM_LIBS   := $(foreach m,$(COSIM_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_d,$(m))$(call cosim_n,$(m))__ALL.a)
 COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -I$(VERILATOR_ROOT_DIR)/include -I$(VERILATOR_ROOT_DIR)/include/vltstd \
@@ -52,16 +59,16 @@ SYNTH_TARGETS += synth-top
 
 .PHONY: sim-top sim-full lint-top synth-top wave
 
-# One Verilated model per PREU count.
+# One Verilated model per PREU count and datapath.
 define COSIM_VL_RULE
-$(call COSIM_MDIR,$(1))/Vpree_top_p$(1)__ALL.a: $(COSIM_RTL) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a: $(COSIM_RTL) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
-	  -Irtl --top-module pree_top --prefix Vpree_top_p$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(call COSIM_GPARAMS,$(1)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  -Irtl --top-module pree_top --prefix Vpree_top_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
+	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  $(COSIM_RTL) >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 endef
-$(foreach p,$(COSIM_PREUS),$(eval $(call COSIM_VL_RULE,$(p))))
+$(foreach m,$(COSIM_MODELS),$(eval $(call COSIM_VL_RULE,$(call cosim_n,$(m)),$(call cosim_d,$(m)))))
 # The Verilator run-time library, once for all models (tracing compiled in).
 $(COSIM_DIR)/vlrt/%.o: $(VERILATOR_ROOT_DIR)/include/%.cpp | $(DEPS_STAMP)
 	@mkdir -p $(@D)
@@ -70,7 +77,9 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 	rm -f $@ && ar rcs $@ $^
 
 $(COSIM_DIR)/cosim_rtl.o: tb/cosim/cosim_rtl.cpp tb/cosim/cosim_rtl.h $(COSIM_LIBS) $(COSIM_VLIB)
-	$(CXX) $(COSIM_VLRT_FLAGS) -g -Wall -Imodel -Itb/cosim $(foreach p,$(COSIM_PREUS),-I$(call COSIM_MDIR,$(p)) -DCOSIM_HAVE_P$(p) -DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p))) \
+	$(CXX) $(COSIM_VLRT_FLAGS) -g -Wall -Imodel -Itb/cosim \
+	  $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p))) \
+	  $(foreach m,$(COSIM_MODELS),-I$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) -DCOSIM_HAVE_$(shell echo $(call cosim_d,$(m)) | tr ps PS)$(call cosim_n,$(m))) \
 	  -c $< -o $@
 $(COSIM_DIR)/%.o: tb/cosim/%.c tb/cosim/cosim_drv.h tb/cosim/cosim_rtl.h | $(DEPS_STAMP)
 	@mkdir -p $(@D)
@@ -89,9 +98,15 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree
 	  for s in random one dense mixed abank; do $(COSIM_BENCH) --preu $$p --scenario $$s --photons 600 | tail -1; done; \
 	  $(COSIM_BENCH) --preu $$p --scenario random --hp 150 --photons 400 --gap 0.3 | tail -1; \
 	  $(COSIM_BENCH) --preu $$p --scenario mixed --no-reorder --photons 400 | tail -1; done
+	@set -e; for p in $(COSIM_STABLE_PREUS); do \
+	  for s in random one dense mixed abank; do $(COSIM_BENCH) --preu $$p --datapath 1 --scenario $$s --photons 600 | tail -1; done; \
+	  $(COSIM_BENCH) --preu $$p --datapath 1 --alpha 0.3 --scenario mixed --hp 150 --photons 400 --gap 0.3 | tail -1; done
 	@set -e; for p in $(COSIM_PREUS); do \
 	  $(BUILD)/pree cosim $(COSIM_SMALL) --preu $$p --stats $(COSIM_DIR)/small_p$$p.json --out $(COSIM_DIR)/small_p$$p.png; \
 	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_p$$p.json; done
+	@set -e; for p in $(COSIM_STABLE_PREUS); do \
+	  $(BUILD)/pree cosim $(COSIM_SMALL) --preu $$p --datapath stable --stats $(COSIM_DIR)/small_s$$p.json --out $(COSIM_DIR)/small_s$$p.png; \
+	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_s$$p.json; done
 
 # Whole frame: cornell3 320x240, 768k photons.
 SIM_FULL_PREUS ?= 4 8
@@ -113,9 +128,9 @@ wave: $(COSIM_BENCH) $(BUILD)/pree
 	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
 
 lint-top: | $(DEPS_STAMP)
-	@set -e; for p in $(COSIM_PREUS); do \
-	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p $(COSIM_RTL)"; \
-	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p $(COSIM_RTL); done
+	@set -e; for d in 0 1; do for p in $(COSIM_PREUS); do \
+	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d $(COSIM_RTL)"; \
+	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d $(COSIM_RTL); done; done
 
 synth-top: | $(DEPS_STAMP)
 	@mkdir -p $(COSIM_DIR)

@@ -25,18 +25,22 @@
 //      use ("bank"; hit-point banks in update, pixel banks in radiance). Update: issue = read
 //      of the hit-point memory; radiance: issue = PREU input (the held RAM output).
 //   C  update only: the hit-point data, into the PREU (valid_i), with the photon.
-//   The PREU result is written back: update, the hit point's tau, r2, N when accepted (10
-//   stages after C); radiance, the pixel sum (read at PREU S10, written at S12).
+//   The PREU result is written back: update, the hit point's state when accepted (the PREU's
+//   update latency after C: 10 stages for the paper datapath, 12 for the stable one);
+//   radiance, the pixel sum (read at PREU S10, written at S12).
+// Datapath (parameter): 0 the paper's PREU datapath, state {n, r2, tau} (160 bits); 1 the stable
+// one, state {k, w, T} (320 bits): docs/preu_datapath.md. alpha_i (paper) and kappa_i (stable,
+// (1 - alpha) / alpha) are run-time constants in binary32; change them only while idle_o is high.
 // Hazard windows (cycles after issue in which the same key must not issue again): update 11
-// (issue, C, 10 PREU stages, write at the end of the last); radiance 3 (pixel read 9 cycles
-// after issue, write 12 cycles after issue). Consequence: per hit point, updates happen in
+// paper / 13 stable (issue, C, the PREU's update stages, write at the end of the last);
+// radiance 3 (pixel read 9 cycles after issue, write 12 cycles after issue). Consequence: per hit point, updates happen in
 // photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
 // first), which model/adiso_order.c reproduces.
 //
 // Memories (all pree_ram_sdp, one write and one read port each):
 //   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular
 //   hit points    2^HpBankW banks, each a constant part {pixel, f, pos} (written by the host)
-//                 and a state part {n, r2, tau} (host or update write-back); bank = low bits
+//                 and a state part (host or update write-back; layout by Datapath); bank = low bits
 //                 XOR the next HpBankW bits (hp_bank), row = the bits above the low HpBankW
 //   pixels        2^PxBankW banks of 96-bit {b, g, r} sums; bank = low bits of the pixel
 // Host ports (hp_*, px_*): use them only while idle_o is high; read data comes one cycle after
@@ -58,7 +62,9 @@ module pree_top #(
   parameter IdxAW   = 12,   // index-table address bits (> log2 NumPreu)
   parameter PxAW    = 17,   // pixel address bits
   parameter PxBankW = 4,    // log2 of the pixel banks (1 .. PxAW-1)
-  parameter CntW    = 16    // bits of a photon's candidate count N^P
+  parameter CntW    = 16,   // bits of a photon's candidate count N^P
+  parameter Datapath = 0,   // PREU datapath: 0 paper, 1 stable
+  parameter StateW  = (Datapath != 0) ? 320 : 160  // do not override: set by Datapath
 ) (
   input  wire                       clk_i,
   input  wire                       rst_ni,
@@ -66,6 +72,8 @@ module pree_top #(
   input  wire                       mode_i,
   input  wire                       cnt_en_i,
   input  wire [31:0]                ne_i,          // N_emitted as binary32 (radiance)
+  input  wire [31:0]                alpha_i,       // alpha as binary32 (update, paper datapath)
+  input  wire [31:0]                kappa_i,       // (1 - alpha) / alpha (update, stable datapath)
   input  wire                       rad_start_i,
   input  wire [HpAW-1:0]            n_hit_i,
   output wire                       idle_o,
@@ -80,12 +88,13 @@ module pree_top #(
   input  wire [NumPreu-1:0]         idx_we_i,
   input  wire [NumPreu*IdxAW-1:0]   idx_addr_i,
   input  wire [NumPreu*HpAW-1:0]    idx_data_i,
-  // Host hit-point port: {pixel, f b g r, pos z y x, n, r2, tau b g r}.
+  // Host hit-point port: {pixel, f b g r, pos z y x, state} (state: paper {n, r2, tau b g r},
+  // stable {k, w, T b g r}).
   input  wire                       hp_we_i,
   input  wire                       hp_re_i,
   input  wire [HpAW-1:0]            hp_addr_i,
-  input  wire [PxAW+351:0]          hp_wdata_i,
-  output wire [PxAW+351:0]          hp_rdata_o,
+  input  wire [PxAW+191+StateW:0]   hp_wdata_i,
+  output wire [PxAW+191+StateW:0]   hp_rdata_o,
   // Host pixel port: {b, g, r}.
   input  wire                       px_we_i,
   input  wire                       px_re_i,
@@ -107,13 +116,19 @@ module pree_top #(
   localparam BBANK_W   = HpBankW > PxBankW ? HpBankW : PxBankW; // stage-B bank number
   localparam AADDR_W   = IdxAW > HpAW ? IdxAW : HpAW;         // stage-A address
   localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
-  localparam STATE_W   = 160;                                 // {n, r2, tau}
-  localparam WIN_UPD   = 11;
+  localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
+  localparam WIN_UPD   = (Datapath != 0) ? 13 : 11;           // 1 + the PREU's update latency
   localparam WIN_RAD   = 3;
   localparam CNT_W     = 48;
   localparam [CNT_W-1:0] CNT_ONE = 1;
   localparam NCNT      = 7 + NumPreu;
   localparam PH_W      = 192;
+
+  generate
+    if (StateW != ((Datapath != 0) ? 320 : 160)) begin : g_bad_statew
+      pree_top_statew_is_set_by_datapath u_fail ();
+    end
+  endgenerate
 
   // NumPreu must be a power of two (index-table banks and ADISO groups are cut by bits).
   generate
@@ -405,8 +420,8 @@ module pree_top #(
   // PREUs.
   wire [NumPreu-1:0]       p_valid, p_vout, p_acc, p_lreq, p_busy;
   wire [NumPreu*KEY_W-1:0] p_tag, p_ltag;
-  wire [NumPreu*96-1:0]    p_tau, p_l;
-  wire [NumPreu*32-1:0]    p_r2, p_n;
+  wire [NumPreu*96-1:0]      p_l;
+  wire [NumPreu*STATE_W-1:0] p_state;
   reg  [NumPreu*PxBankW-1:0] px_rbank_q;
   // Write-back words per lane, selected per bank by the lane number. The host's writes (only
   // while idle, when no PREU writes back) go through lane 0's word.
@@ -435,21 +450,20 @@ module pree_top #(
       end
       assign p_valid[gl] = mode_i ? b_iss[gl] : c_v_q[gl];
 
-      pree_preu #(.TagW(KEY_W)) u_preu (
+      pree_preu #(.TagW(KEY_W), .Datapath(Datapath)) u_preu (
         .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .valid_i(p_valid[gl]), .tag_i(tag),
-        .hp_pos_i(hc[0 +: 96]), .hp_f_i(hc[96 +: 96]), .hp_tau_i(hs[0 +: 96]),
-        .hp_r2_i(hs[96 +: 32]), .hp_n_i(hs[128 +: 32]),
+        .hp_pos_i(hc[0 +: 96]), .hp_f_i(hc[96 +: 96]), .hp_state_i(hs),
         .ph_pos_i(c_data_q[gl*PH_W +: 96]), .ph_phi_i(c_data_q[gl*PH_W + 96 +: 96]),
+        .alpha_i(alpha_i), .kappa_i(kappa_i),
         .ne_i(ne_i), .lreq_o(p_lreq[gl]), .lreq_tag_o(p_ltag[gl*KEY_W +: KEY_W]),
         .l_i(li), .valid_o(p_vout[gl]), .tag_o(p_tag[gl*KEY_W +: KEY_W]),
-        .accept_o(p_acc[gl]), .tau_o(p_tau[gl*96 +: 96]), .r2_o(p_r2[gl*32 +: 32]),
-        .n_o(p_n[gl*32 +: 32]), .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
+        .accept_o(p_acc[gl]), .state_o(p_state[gl*STATE_W +: STATE_W]),
+        .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
 
       // Write-back: update, the accepted hit-point state; radiance, the pixel sum.
       assign wb_hp_en[gl] = !mode_i && p_vout[gl] && p_acc[gl];
       assign wb_hp_bank[gl*HpBankW +: HpBankW] = hp_bank(p_tag[gl*KEY_W +: 2*HpBankW]);
-      assign wb_hp_state[gl] = host_hp ? hp_wdata_i[0 +: STATE_W]
-                                       : {p_n[gl*32 +: 32], p_r2[gl*32 +: 32], p_tau[gl*96 +: 96]};
+      assign wb_hp_state[gl] = host_hp ? hp_wdata_i[0 +: STATE_W] : p_state[gl*STATE_W +: STATE_W];
       assign wb_hp_row[gl]   = host_hp ? hp_addr_i[HpAW-1:HpBankW] : p_tag[gl*KEY_W + HpBankW +: HP_ROW_W];
       assign wb_px_en[gl]    = mode_i && p_vout[gl];
       assign wb_px_sum[gl]   = host_px ? px_wdata_i : p_l[gl*96 +: 96];

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cosim_sched.h"
+#include "cosim_shadow.h"
 
 #define IDX_DEPTH (1u << COSIM_IDXAW)
 #define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
@@ -61,6 +62,7 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->ready = cosim_rtl_ph_ready(rtl);
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
+                                 .win = cosim_update_window(opt->datapath),
                                  .reorder = opt->reorder, .window = opt->window};
         d->sched = cosim_sched_new(&so, emit, d);
         if (!d->sched) { cosim_drv_free(d); return NULL; }
@@ -255,7 +257,7 @@ int cosim_drv_drain(cosim_drv_t *d)
     return 0;
 }
 
-void cosim_drv_load_hp(cosim_drv_t *d, const preu_hp_t *hp, const int32_t *pixel, size_t n)
+void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n)
 {
     cosim_in_t *in = d->in;
     in->hp_we = 1;
@@ -269,7 +271,7 @@ void cosim_drv_load_hp(cosim_drv_t *d, const preu_hp_t *hp, const int32_t *pixel
     cosim_rtl_tick(d->rtl);
 }
 
-void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hp_t *hp, uint32_t *pixel)
+void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pixel)
 {
     d->in->hp_re = 1;
     d->in->hp_addr = i;

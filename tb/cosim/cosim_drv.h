@@ -5,7 +5,7 @@
  * API
  *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory)
  *   cosim_drv_free(d)
- *   cosim_drv_load_hp(d, ...)     write n hit points (state + pixel) through the host port
+ *   cosim_drv_load_hp(d, ...)     write n hit points (words + pixel) through the host port
  *   cosim_drv_photon(d, ph, hps, n)  queue one photon hit with its candidate hit points, in
  *                                 photon order; clocks the model as far as needed to keep the
  *                                 queues short. Returns 0, or -1 with a message in d->err.
@@ -35,6 +35,7 @@
 
 typedef struct {
     int preu;          /* PREUs of the model */
+    int datapath;      /* its PREU datapath: 0 paper, 1 stable */
     int hp_bank_w;     /* log2 of its hit-point banks */
     int reorder;       /* 1: order each photon's candidates for distinct banks */
     int schedule;      /* 1: photon order chosen by cosim_sched.h; 0: photon order */
@@ -49,10 +50,10 @@ typedef struct cosim_drv cosim_drv_t;
 cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt);
 void cosim_drv_free(cosim_drv_t *d);
 const char *cosim_drv_error(const cosim_drv_t *d);
-void cosim_drv_load_hp(cosim_drv_t *d, const preu_hp_t *hp, const int32_t *pixel, size_t n);
+void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n);
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n);
 int cosim_drv_drain(cosim_drv_t *d);
-void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hp_t *hp, uint32_t *pixel);
+void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pixel);
 void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);
 uint64_t cosim_drv_ops_sent(const cosim_drv_t *d);

@@ -46,6 +46,7 @@ static void cosim_usage(FILE *f)
         "  --width W --height H --photons N --grid G --no-skip --threads T   as for 'pree render'\n"
         "                         (--threads: the double reference render only)\n"
         "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
+        "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
         "  --out IMAGE            the RTL image (.png, .ppm or .exr)\n"
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
@@ -58,12 +59,23 @@ static void cosim_usage(FILE *f)
         "  --quiet                no progress on stderr\n");
 }
 
+/* Hit point i of the model in the PREE memory's words. */
+static void model_words(const hitpoints_t *hp, size_t i, preu_hpw_t *w)
+{
+    if (hp->stable) preu_hpw_from_stable(w, &hp->stable[i]);
+    else preu_hpw_from_paper(w, &hp->fp32[i]);
+}
+
 static int on_begin(void *user, const hitpoints_t *hp, uint64_t photons)
 {
     cosim_ctx_t *c = user;
     (void)photons;
     if (hp->n > (1u << COSIM_HPAW)) { c->failed = 1; return -1; }
-    cosim_drv_load_hp(c->drv, hp->fp32, hp->pixel, hp->n);
+    preu_hpw_t *w = malloc((hp->n ? hp->n : 1) * sizeof *w);
+    if (!w) { c->failed = 1; return -1; }
+    for (size_t i = 0; i < hp->n; i++) model_words(hp, i, &w[i]);
+    cosim_drv_load_hp(c->drv, w, hp->pixel, hp->n);
+    free(w);
     return 0;
 }
 
@@ -80,12 +92,12 @@ static int on_hit(void *user, const photon_hit_t *hit, const preu_photon_t *ph32
     return rc;
 }
 
-static int hp_words_differ(const preu_hp_t *a, uint32_t pa, const preu_hp_t *b, uint32_t pb)
+static int hp_words_differ(const preu_hpw_t *a, uint32_t pa, const preu_hpw_t *b, uint32_t pb, int datapath)
 {
     int d = pa != pb;
-    for (int k = 0; k < 3; k++)
-        d += (a->pos[k] != b->pos[k]) + (a->f[k] != b->f[k]) + (a->tau[k] != b->tau[k]);
-    return d + (a->r2 != b->r2) + (a->n != b->n);
+    for (int k = 0; k < 3; k++) d += (a->pos[k] != b->pos[k]) + (a->f[k] != b->f[k]);
+    for (int k = 0; k < preu_state_words(datapath); k++) d += a->st[k] != b->st[k];
+    return d;
 }
 
 static void to_float(const double *rgb, size_t n, float *out)
@@ -105,6 +117,8 @@ int pree_cmd_cosim(int argc, char **argv)
     while (a.i < argc) {
         const char *arg = argv[a.i++];
         long long v;
+        int r = cli_update_rule(&a, arg, &opt.datapath, &opt.alpha);
+        if (r != 1) { if (r) return r; continue; }
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { cosim_usage(stdout); return 0; }
         else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.width = (int)v; }
         else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.height = (int)v; }
@@ -150,9 +164,13 @@ int pree_cmd_cosim(int argc, char **argv)
     scene_t scene;
     if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
-    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, trace_path, err, sizeof err);
+    const int dp = opt.datapath == DATAPATH_STABLE;
+    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
     if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
-    cosim_drv_opts_t dopt = {.preu = opt.preu, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
+    /* The update rule's run-time constants, as the render derives them (model/render.c). */
+    cosim_rtl_in(rtl)->alpha = preu_f32(opt.alpha > 0 ? opt.alpha : UPDATE_ALPHA);
+    cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
                               .schedule = schedule, .window = window, .gap = gap, .seed = 1};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
@@ -183,13 +201,16 @@ int pree_cmd_cosim(int argc, char **argv)
     /* Hit-point memory against the fp32 model's final state. */
     unsigned long long hp_diff = 0, hp_diff_points = 0;
     for (size_t i = 0; i < res.hp.n; i++) {
-        preu_hp_t h;
+        preu_hpw_t h, m;
         uint32_t px;
         cosim_drv_read_hp(ctx.drv, (uint32_t)i, &h, &px);
-        int dw = hp_words_differ(&h, px, &res.hp.fp32[i], (uint32_t)res.hp.pixel[i]);
-        if (dw && hp_diff_points < 5)
-            fprintf(stderr, "pree cosim: hit point %zu differs: RTL r2 %08x n %08x tau %08x, model r2 %08x n %08x tau %08x\n",
-                    i, h.r2, h.n, h.tau[0], res.hp.fp32[i].r2, res.hp.fp32[i].n, res.hp.fp32[i].tau[0]);
+        model_words(&res.hp, i, &m);
+        int dw = hp_words_differ(&h, px, &m, (uint32_t)res.hp.pixel[i], dp);
+        if (dw && hp_diff_points < 5) {
+            fprintf(stderr, "pree cosim: hit point %zu differs: state words RTL/model", i);
+            for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", h.st[k], m.st[k]);
+            fputc('\n', stderr);
+        }
         hp_diff += (unsigned long long)dw;
         hp_diff_points += dw != 0;
     }
@@ -263,6 +284,8 @@ int pree_cmd_cosim(int argc, char **argv)
         if (!f) { fprintf(stderr, "pree cosim: %s: cannot write\n", stats_path); goto out; }
         fprintf(f, "{\n  \"scene\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"photons_emitted\": %llu,\n",
                 scene_path, opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
+        fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
+                (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
         fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
                 np, reorder ? "true" : "false", gap, res.hp.n);
         cosim_sched_stats_t ss;

@@ -1,5 +1,6 @@
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
-// Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models.
+// Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models of both
+// datapaths.
 #include "cosim_rtl.h"
 
 #include <cstdio>
@@ -19,6 +20,18 @@
 #ifdef COSIM_HAVE_P16
 #include "Vpree_top_p16.h"
 #include "Vpree_top_p16___024root.h"
+#endif
+#ifdef COSIM_HAVE_S4
+#include "Vpree_top_s4.h"
+#include "Vpree_top_s4___024root.h"
+#endif
+#ifdef COSIM_HAVE_S8
+#include "Vpree_top_s8.h"
+#include "Vpree_top_s8___024root.h"
+#endif
+#ifdef COSIM_HAVE_S16
+#include "Vpree_top_s16.h"
+#include "Vpree_top_s16___024root.h"
 #endif
 
 namespace {
@@ -95,7 +108,7 @@ struct cosim_rtl {
     virtual int ph_ready() = 0;
     virtual int idle() = 0;
     virtual uint32_t photons_done() = 0;
-    virtual void hp_rdata(preu_hp_t *hp, uint32_t *pixel) = 0;
+    virtual void hp_rdata(preu_hpw_t *hp, uint32_t *pixel) = 0;
     virtual void px_rdata(uint32_t L[3]) = 0;
     virtual void counters(uint64_t *cnt) = 0;
     virtual int open_trace(const char *path) = 0;
@@ -104,8 +117,9 @@ struct cosim_rtl {
 
 namespace {
 
-template <class V, int NP, int HPB>
+template <class V, int NP, int HPB, int DP>
 struct Rtl : cosim_rtl {
+    static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
     std::unique_ptr<V> top;
     std::unique_ptr<VerilatedFstC> tfp;
@@ -147,6 +161,8 @@ struct Rtl : cosim_rtl {
         t.cnt_en_i = in.cnt_en;
         t.rad_start_i = in.rad_start;
         t.ne_i = in.ne;
+        t.alpha_i = in.alpha;
+        t.kappa_i = in.kappa;
         t.n_hit_i = in.n_hit;
         t.ph_valid_i = in.ph_valid;
         if (std::memcmp(applied.ph_pos, in.ph_pos, sizeof in.ph_pos) ||
@@ -172,15 +188,13 @@ struct Rtl : cosim_rtl {
         t.hp_re_i = in.hp_re;
         t.hp_addr_i = in.hp_addr;
         if (in.hp_we) {
-            const preu_hp_t &h = in.hp_wdata;
+            const preu_hpw_t &h = in.hp_wdata;
+            for (unsigned k = 0; k < SW / 32; k++) put32(t.hp_wdata_i, 32 * k, h.st[k]);
             for (int c = 0; c < 3; c++) {
-                put32(t.hp_wdata_i, 32 * c, h.tau[c]);
-                put32(t.hp_wdata_i, 160 + 32 * c, h.pos[c]);
-                put32(t.hp_wdata_i, 256 + 32 * c, h.f[c]);
+                put32(t.hp_wdata_i, SW + 32 * c, h.pos[c]);
+                put32(t.hp_wdata_i, SW + 96 + 32 * c, h.f[c]);
             }
-            put32(t.hp_wdata_i, 96, h.r2);
-            put32(t.hp_wdata_i, 128, h.n);
-            put(t.hp_wdata_i, 352, COSIM_PXAW, in.hp_pixel);
+            put(t.hp_wdata_i, SW + 192, COSIM_PXAW, in.hp_pixel);
         }
         t.px_we_i = in.px_we;
         t.px_re_i = in.px_re;
@@ -222,17 +236,16 @@ struct Rtl : cosim_rtl {
     int ph_ready() override { return top->ph_ready_o; }
     int idle() override { return top->idle_o; }
     uint32_t photons_done() override { return top->photons_done_o; }
-    void hp_rdata(preu_hp_t *h, uint32_t *pixel) override
+    void hp_rdata(preu_hpw_t *h, uint32_t *pixel) override
     {
         const auto &d = top->hp_rdata_o;
+        std::memset(h, 0, sizeof *h);
+        for (unsigned k = 0; k < SW / 32; k++) h->st[k] = get32(d, 32 * k);
         for (int c = 0; c < 3; c++) {
-            h->tau[c] = get32(d, 32 * c);
-            h->pos[c] = get32(d, 160 + 32 * c);
-            h->f[c] = get32(d, 256 + 32 * c);
+            h->pos[c] = get32(d, SW + 32 * c);
+            h->f[c] = get32(d, SW + 96 + 32 * c);
         }
-        h->r2 = get32(d, 96);
-        h->n = get32(d, 128);
-        *pixel = static_cast<uint32_t>(get(d, 352, COSIM_PXAW));
+        *pixel = static_cast<uint32_t>(get(d, SW + 192, COSIM_PXAW));
     }
     void px_rdata(uint32_t L[3]) override
     {
@@ -249,21 +262,32 @@ struct Rtl : cosim_rtl {
 
 extern "C" {
 
-cosim_rtl_t *cosim_rtl_new(int preu, const char *fst, char *err, size_t errlen)
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen)
 {
     cosim_rtl_t *r = nullptr;
-    switch (preu) {
+    switch (preu * 2 + (datapath != 0)) {
 #ifdef COSIM_HAVE_P4
-    case 4: r = new Rtl<Vpree_top_p4, 4, COSIM_HPB_4>; break;
+    case 8: r = new Rtl<Vpree_top_p4, 4, COSIM_HPB_4, 0>; break;
 #endif
 #ifdef COSIM_HAVE_P8
-    case 8: r = new Rtl<Vpree_top_p8, 8, COSIM_HPB_8>; break;
+    case 16: r = new Rtl<Vpree_top_p8, 8, COSIM_HPB_8, 0>; break;
 #endif
 #ifdef COSIM_HAVE_P16
-    case 16: r = new Rtl<Vpree_top_p16, 16, COSIM_HPB_16>; break;
+    case 32: r = new Rtl<Vpree_top_p16, 16, COSIM_HPB_16, 0>; break;
+#endif
+#ifdef COSIM_HAVE_S4
+    case 9: r = new Rtl<Vpree_top_s4, 4, COSIM_HPB_4, 1>; break;
+#endif
+#ifdef COSIM_HAVE_S8
+    case 17: r = new Rtl<Vpree_top_s8, 8, COSIM_HPB_8, 1>; break;
+#endif
+#ifdef COSIM_HAVE_S16
+    case 33: r = new Rtl<Vpree_top_s16, 16, COSIM_HPB_16, 1>; break;
 #endif
     default:
-        std::snprintf(err, errlen, "no pree_top model with %d PREUs in this build", preu);
+        std::snprintf(err, errlen, "no pree_top model with %d PREUs and the %s datapath in this build%s", preu,
+                      datapath ? "stable" : "paper",
+                      datapath ? " (make COSIM_STABLE_PREUS=\"4 8 16\" builds them all)" : "");
         return nullptr;
     }
     if (fst && r->open_trace(fst)) {
@@ -281,7 +305,7 @@ void cosim_rtl_tick(cosim_rtl_t *r) { r->tick(); }
 int cosim_rtl_ph_ready(cosim_rtl_t *r) { return r->ph_ready(); }
 int cosim_rtl_idle(cosim_rtl_t *r) { return r->idle(); }
 uint32_t cosim_rtl_photons_done(cosim_rtl_t *r) { return r->photons_done(); }
-void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hp_t *hp, uint32_t *pixel) { r->hp_rdata(hp, pixel); }
+void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp_rdata(hp, pixel); }
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 uint64_t cosim_rtl_cycles(cosim_rtl_t *r) { return r->cycles; }

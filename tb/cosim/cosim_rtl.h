@@ -1,10 +1,11 @@
 /* cosim_rtl.h: a C interface to the Verilated pree_top (rtl/pree_top.v), one model per PREU
- * count (4, 8, 16), built by mk/cosim.mk with the parameters below.
+ * count (4, 8, 16) and datapath (0 paper, 1 stable), built by mk/cosim.mk with the parameters
+ * below (the stable datapath's models only for the counts in COSIM_STABLE_PREUS).
  *
  * API
- *   cosim_rtl_new(preu, fst, err)  a model in reset state after two reset cycles; fst: FST trace
- *                                  file or NULL (no tracing). NULL + err when preu is not built
- *                                  or the trace cannot be opened.
+ *   cosim_rtl_new(preu, dp, fst, err)  a model in reset state after two reset cycles; fst: FST
+ *                                  trace file or NULL (no tracing). NULL + err when that model
+ *                                  is not built or the trace cannot be opened.
  *   cosim_rtl_free(r)              close the trace, release the model
  *   cosim_rtl_in(r)                the input set applied at the next eval/tick (write it)
  *   cosim_rtl_eval(r)              apply the inputs and settle the combinational logic
@@ -18,7 +19,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
-#include "preu_fp32.h"
+#include "preu_state.h"
 
 #ifdef __cplusplus
 extern "C" {
@@ -45,14 +46,15 @@ typedef struct {
     uint32_t idx_addr[COSIM_MAX_PREU], idx_data[COSIM_MAX_PREU];
     int hp_we, hp_re;
     uint32_t hp_addr, hp_pixel;
-    preu_hp_t hp_wdata;
+    preu_hpw_t hp_wdata;      /* position, weight, state words (the model's datapath layout) */
+    uint32_t alpha, kappa;    /* run-time constants: change only while idle */
     int px_we, px_re;
     uint32_t px_addr, px_wdata[3];
 } cosim_in_t;
 
 typedef struct cosim_rtl cosim_rtl_t;
 
-cosim_rtl_t *cosim_rtl_new(int preu, const char *fst, char *err, size_t errlen);
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen);
 void cosim_rtl_free(cosim_rtl_t *r);
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r);
 void cosim_rtl_eval(cosim_rtl_t *r);
@@ -60,7 +62,7 @@ void cosim_rtl_tick(cosim_rtl_t *r);
 int cosim_rtl_ph_ready(cosim_rtl_t *r);
 int cosim_rtl_idle(cosim_rtl_t *r);
 uint32_t cosim_rtl_photons_done(cosim_rtl_t *r);
-void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hp_t *hp, uint32_t *pixel);
+void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel);
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 uint64_t cosim_rtl_cycles(cosim_rtl_t *r);

@@ -47,7 +47,7 @@ cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_f
     s->emit = emit;
     s->user = user;
     const size_t nhp = (size_t)1 << COSIM_HPAW, w = (size_t)s->opt.window;
-    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w);
+    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w, opt->win);
     s->slot = calloc(w, sizeof *s->slot);
     s->order = malloc(w * sizeof *s->order);
     s->free_slot = malloc(w * sizeof *s->free_slot);
@@ -95,7 +95,8 @@ static int64_t op_cost(const cosim_sched_t *s, uint32_t h, int64_t c, const uint
 {
     const int64_t np = s->opt.preu;
     int64_t cost = 0, d = c - s->last[h];
-    if (d <= SHADOW_WIN) cost += np * (d < 0 ? SHADOW_WIN + 1 : SHADOW_WIN + 1 - d);
+    const int64_t W = s->opt.win;
+    if (d <= W) cost += np * (d < 0 ? W + 1 : W + 1 - d);
     uint32_t b = cosim_hp_bank(h, s->opt.hp_bank_w);
     for (int i = 0; i < ng; i++)
         if (gb[i] == b) { cost += np; break; }
@@ -187,12 +188,13 @@ static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
     for (int i = 0; i < s->count; i++) {
         slot_t *sl = &s->slot[s->order[i]];
         if (sl->deps) continue;
-        /* A hit point issued (or due) within SHADOW_WIN cycles of the photon's last operation
+        /* A hit point issued (or due) within win cycles of the photon's last operation
          * means a hazard whatever the order (last[] only grows): count the least cost unscored. */
         int64_t d = base + (L + (int64_t)sl->n - 1) / np - sl->max_last, cost;
-        int scored = d > SHADOW_WIN;
+        const int64_t W = s->opt.win;
+        int scored = d > W;
         if (scored) cost = score(s, sl, L, base);
-        else cost = (int64_t)np * (d < 0 ? SHADOW_WIN + 1 : SHADOW_WIN + 1 - d);
+        else cost = (int64_t)np * (d < 0 ? W + 1 : W + 1 - d);
         if (best < 0 || cost < best_cost) {
             best = i;
             best_cost = cost;

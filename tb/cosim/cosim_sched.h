@@ -12,7 +12,7 @@
  * on the scheduled stream. In each cycle in which it takes a photon (ph_ready_o), the scheduler
  * predicts where the operations of a candidate photon would issue (behind the operations
  * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
- * hit point issued or predicted within the last 11 cycles), hit-point bank clashes within an
+ * hit point issued or predicted within the last win (11 or 13) cycles), hit-point bank clashes within an
  * issue cycle and lanes left empty (starvation). The photon's candidates are ordered greedily
  * against the same costs (ties: the candidate whose bank more of the photon's candidates share
  * goes first). The oldest eligible photon with no cost is taken, else the cheapest of the first
@@ -37,6 +37,7 @@
 
 typedef struct {
     int preu, hp_bank_w;
+    int win;           /* the top's update hazard window (cosim_update_window) */
     int reorder;       /* 1: order each photon's candidates too */
     int window;        /* pending photons held (>= 1) */
 } cosim_sched_opts_t;

@@ -7,7 +7,7 @@
 
 #define IDX_MASK ((1u << COSIM_IDXAW) - 1u)
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w)
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win)
 {
     cosim_shadow_t *s = calloc(1, sizeof *s);
     if (!s) return NULL;
@@ -15,6 +15,7 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w)
     if (!s->inf_cnt) { free(s); return NULL; }
     s->preu = preu;
     s->hp_bank_w = hp_bank_w;
+    s->win = win;
     return s;
 }
 
@@ -104,7 +105,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
     /* Counters (counters block; the model counts from its first cycle). */
     s->cnt[CNT_CYC_UPD]++;
     if (s->cause) s->cnt[s->cause]++;
-    /* In-flight window: drop the row issued SHADOW_WIN cycles ago, add this cycle's issues. */
+    /* In-flight window: drop the row issued win cycles ago, add this cycle's issues. */
     int *row_n = &s->inf_n[s->inf_pos];
     uint32_t *row = s->inf_hp[s->inf_pos];
     for (int k = 0; k < *row_n; k++) s->inf_cnt[row[k]]--;
@@ -117,7 +118,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
             s->iss_hp[s->n_iss++] = s->b_hp[l];
             s->cnt[CNT_OPS0 + l]++;
         }
-    s->inf_pos = (s->inf_pos + 1) % SHADOW_WIN;
+    s->inf_pos = (s->inf_pos + 1) % s->win;
     /* Stage B registers: the lanes A read (index-table data), or what is left pending. */
     if (s->a_go) {
         for (int l = 0; l < np; l++)
@@ -152,7 +153,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
 int cosim_shadow_idle(const cosim_shadow_t *s)
 {
     if (s->count || s->b_pend) return 0;
-    for (int r = 0; r < SHADOW_WIN; r++)
+    for (int r = 0; r < s->win; r++)
         if (s->inf_n[r]) return 0;
     return 1;
 }

@@ -1,14 +1,15 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4-entry buffer,
  * EarlyReady, the rule of tb/ctrl/aftso_model.c), stage A (index-table reads in lane order, one
- * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last 11
+ * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win (11 or 13)
  * cycles, same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
- *   cosim_shadow_new(preu, hp_bank_w)  a model in reset state (NULL when out of memory)
+ *   cosim_shadow_new(preu, hp_bank_w, win)  a model in reset state (NULL when out of memory);
+ *                                  win: the update hazard window (cosim_update_window)
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
@@ -27,10 +28,11 @@
 #include "cosim_rtl.h"
 
 #define SHADOW_BUF   4    /* AFTSO-HpUOC BufDepth in pree_top */
-#define SHADOW_WIN   11   /* update hazard window, cycles (WIN_UPD) */
+#define SHADOW_WIN_MAX 13 /* update hazard window, cycles (WIN_UPD): 11 paper, 13 stable */
 
 typedef struct {
     int preu, hp_bank_w;
+    int win;                                   /* the update hazard window (WIN_UPD) */
     uint64_t t;                                /* cycles stepped */
     /* AFTSO-HpUOC buffer: entries 0..count-1, each {first index entry, operations left}. */
     int count;
@@ -39,9 +41,9 @@ typedef struct {
     uint32_t a_done, b_pend;
     int b_short;
     uint32_t b_hp[COSIM_MAX_PREU];
-    /* In flight: the keys issued in each of the last SHADOW_WIN cycles, and a count per key. */
-    uint32_t inf_hp[SHADOW_WIN][COSIM_MAX_PREU];
-    int inf_n[SHADOW_WIN], inf_pos;
+    /* In flight: the keys issued in each of the last win cycles, and a count per key. */
+    uint32_t inf_hp[SHADOW_WIN_MAX][COSIM_MAX_PREU];
+    int inf_n[SHADOW_WIN_MAX], inf_pos;
     uint8_t *inf_cnt;                          /* 2^COSIM_HPAW */
     uint32_t idx[1u << COSIM_IDXAW];           /* the index table as the host wrote it */
     /* Combinational values of the current cycle (eval). */
@@ -54,7 +56,9 @@ typedef struct {
     uint64_t cnt[COSIM_NCNT];
 } cosim_shadow_t;
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w);
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win);
+/* The update hazard window of pree_top for a datapath (0 paper, 1 stable). */
+static inline int cosim_update_window(int datapath) { return datapath ? 13 : 11; }
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n);

@@ -11,7 +11,7 @@
 set -euo pipefail
 out=${1:-build/cosim/synth}
 mkdir -p "$out"
-srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
+srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
 params="chparam -set NumPreu 4 -set HpAW 12 -set HpBankW 4 -set IdxAW 8 -set PxAW 10 -set PxBankW 2 pree_top"
 cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top; write_json $out/netlist.json"
 echo "yosys -p '$cmd'"

@@ -1,10 +1,10 @@
 /* top_bench.c: Verilator bench of pree_top (rtl/pree_top.v) against the C model, with
  * synthetic and adversarial traces. The expected hit-point state comes from model/preu_fp32.h
- * applied in photon order; the expected pixels from the same model in the radiance issue order
+ * (--datapath 0) or model/preu_stable.h (--datapath 1) applied in photon order; the expected pixels from the same model in the radiance issue order
  * of model/adiso_order.h. Compares every word and prints the first mismatches.
  *
- * usage: top_bench [--preu 4|8|16] [--scenario random|one|dense|mixed|abank] [--photons N]
- *                  [--hp N] [--gap P] [--no-reorder] [--seed S] [--trace FILE.fst]
+ * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--alpha A] [--scenario random|one|dense|mixed|abank]
+ *                  [--photons N] [--hp N] [--gap P] [--no-reorder] [--seed S] [--trace FILE.fst]
  *   random  photons with 1..40 random distinct candidates among --hp hit points
  *   one     every photon hits hit point 0 (and nothing else): in-flight hazards every cycle
  *   dense   few pixels with dozens of hit points each, photons on small neighbourhoods
@@ -132,8 +132,8 @@ static int misplaced_stream(cosim_rtl_t *rtl, const mis_stream_t *m, int preu, d
 
 int main(int argc, char **argv)
 {
-    int preu = 4, photons = 3000, nhp = 2000, reorder = 1;
-    double gap = 0;
+    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0;
+    double gap = 0, alpha = 0.7;
     const char *scenario = "random", *trace = NULL;
     uint64_t seed = 1;
     for (int i = 1; i < argc; i++) {
@@ -143,6 +143,8 @@ int main(int argc, char **argv)
         i++;
         if (!strcmp(o, "--preu")) preu = atoi(v);
         else if (!strcmp(o, "--scenario")) scenario = v;
+        else if (!strcmp(o, "--datapath")) dp = atoi(v);
+        else if (!strcmp(o, "--alpha")) alpha = atof(v);
         else if (!strcmp(o, "--photons")) photons = atoi(v);
         else if (!strcmp(o, "--hp")) nhp = atoi(v);
         else if (!strcmp(o, "--gap")) gap = atof(v);
@@ -154,19 +156,26 @@ int main(int argc, char **argv)
     int abank = !strcmp(scenario, "abank");
     if (!one && !dense && !mixed && !abank && strcmp(scenario, "random")) { fprintf(stderr, "top_bench: unknown scenario %s\n", scenario); return 2; }
     if (nhp < 1 || nhp > (1 << COSIM_HPAW) || photons < 0) { fprintf(stderr, "top_bench: bad sizes\n"); return 2; }
+    if ((dp != 0 && dp != 1) || !(alpha > 0 && alpha <= 1)) { fprintf(stderr, "top_bench: bad --datapath or --alpha\n"); return 2; }
     rng_state = seed * 0x9E3779B97F4A7C15ull + 7;
     if (abank) reorder = 0;   /* its own host streams the candidates as drawn */
 
     char err[256];
-    cosim_rtl_t *rtl = cosim_rtl_new(preu, trace, err, sizeof err);
+    cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, trace, err, sizeof err);
     if (!rtl) { fprintf(stderr, "top_bench: %s\n", err); return 2; }
-    cosim_drv_opts_t dopt = {.preu = preu, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder, .gap = gap, .seed = seed};
+    const uint32_t alpha32 = preu_f32(alpha), kappa32 = preu_kappa(alpha32);
+    cosim_rtl_in(rtl)->alpha = alpha32;
+    cosim_rtl_in(rtl)->kappa = kappa32;
+    cosim_drv_opts_t dopt = {.preu = preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
+                             .gap = gap, .seed = seed};
     cosim_drv_t *drv = cosim_drv_new(rtl, &dopt);
 
     /* Hit points in the unit cube; dense: 40 per pixel, else 3 per pixel. */
     const int per_px = dense ? 40 : 3;
     const int npix = (nhp + per_px - 1) / per_px;
-    preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp), *init = calloc((size_t)nhp, sizeof *init);
+    preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp);
+    preu_shp_t *sp = calloc((size_t)nhp, sizeof *sp);
+    preu_hpw_t *init = calloc((size_t)nhp, sizeof *init);
     int32_t *pixel = calloc((size_t)nhp, sizeof *pixel);
     uint32_t *cand = malloc(MAX_CAND * sizeof *cand);
     mis_stream_t mis;
@@ -179,9 +188,13 @@ int main(int argc, char **argv)
         }
         hp[i].r2 = fb(one ? 4.0f : frand(0.01f, 0.2f));
         hp[i].n = 0;
+        memcpy(sp[i].pos, hp[i].pos, sizeof sp[i].pos);
+        memcpy(sp[i].f, hp[i].f, sizeof sp[i].f);
+        preu_stable_init(&sp[i], (double)fp32_from_bits(hp[i].r2));
         pixel[i] = i / per_px;
+        if (dp) preu_hpw_from_stable(&init[i], &sp[i]);
+        else preu_hpw_from_paper(&init[i], &hp[i]);
     }
-    memcpy(init, hp, (size_t)nhp * sizeof *hp);
     cosim_drv_load_hp(drv, init, pixel, (size_t)nhp);
 
     /* Photons, applied to the model in photon order and streamed to the RTL. */
@@ -207,7 +220,10 @@ int main(int argc, char **argv)
                 if (!has0) cand[n++] = 0;
             }
         }
-        for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph, PREU_ALPHA);
+        for (size_t k = 0; k < n; k++) {
+            if (dp) preu_stable_update(&sp[cand[k]], &ph, kappa32);
+            else preu_update(&hp[cand[k]], &ph, alpha32);
+        }
         if (abank) mis_add(&mis, preu, &ph, cand, n);
         else if (cosim_drv_photon(drv, &ph, cand, n)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
     }
@@ -222,14 +238,19 @@ int main(int argc, char **argv)
 
     unsigned long long bad = 0;
     for (int i = 0; i < nhp; i++) {
-        preu_hp_t h;
+        preu_hpw_t h, m;
         uint32_t px;
         cosim_drv_read_hp(drv, (uint32_t)i, &h, &px);
-        if (memcmp(&h, &hp[i], sizeof h) || px != (uint32_t)pixel[i]) {
-            if (bad < 20)
-                printf("MISMATCH hit point %d: RTL tau %08x %08x %08x r2 %08x n %08x px %u, model tau %08x %08x %08x r2 %08x n %08x px %d\n",
-                       i, h.tau[0], h.tau[1], h.tau[2], h.r2, h.n, px, hp[i].tau[0], hp[i].tau[1], hp[i].tau[2],
-                       hp[i].r2, hp[i].n, pixel[i]);
+        if (dp) preu_hpw_from_stable(&m, &sp[i]);
+        else preu_hpw_from_paper(&m, &hp[i]);
+        int differ = px != (uint32_t)pixel[i] || memcmp(h.pos, m.pos, sizeof h.pos) || memcmp(h.f, m.f, sizeof h.f) ||
+                     memcmp(h.st, m.st, (size_t)preu_state_words(dp) * sizeof h.st[0]);
+        if (differ) {
+            if (bad < 20) {
+                printf("MISMATCH hit point %d (px RTL %u model %d): state words RTL/model", i, px, pixel[i]);
+                for (int k = 0; k < preu_state_words(dp); k++) printf(" %08x/%08x", h.st[k], m.st[k]);
+                printf("\n");
+            }
             bad++;
         }
     }
@@ -238,7 +259,11 @@ int main(int argc, char **argv)
     uint32_t *order = malloc((size_t)nhp * sizeof *order);
     uint32_t *Lm = calloc((size_t)npix * 3, sizeof *Lm), *Lr = calloc((size_t)npix * 3, sizeof *Lr);
     adiso_order((uint32_t)nhp, preu, 12, order);
-    for (int k = 0; k < nhp; k++) preu_radiance(Lm + 3 * (size_t)pixel[order[k]], &hp[order[k]], ne);
+    for (int k = 0; k < nhp; k++) {
+        uint32_t *L = Lm + 3 * (size_t)pixel[order[k]];
+        if (dp) preu_stable_radiance(L, &sp[order[k]], ne);
+        else preu_radiance(L, &hp[order[k]], ne);
+    }
     cosim_drv_radiance(drv, (uint32_t)nhp, ne, (size_t)npix, Lr);
     uint64_t cnt2[COSIM_NCNT];
     cosim_drv_counters(drv, cnt2);
@@ -265,10 +290,10 @@ int main(int argc, char **argv)
                (unsigned long long)cnt[CNT_ABANK]);
         bad++;
     }
-    printf("top_bench preu=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
+    printf("top_bench preu=%d datapath=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
            "(util %.4f; short cycles haz %llu dup %llu bank %llu abank %llu starve %llu), radiance %llu ops / %llu cycles "
            "(haz %llu dup %llu bank %llu abank %llu starve %llu): %s\n",
-           preu, scenario, photons, nhp, gap, reorder, (unsigned long long)ops, (unsigned long long)cnt[CNT_CYC_UPD],
+           preu, dp, scenario, photons, nhp, gap, reorder, (unsigned long long)ops, (unsigned long long)cnt[CNT_CYC_UPD],
            cnt[CNT_CYC_UPD] ? (double)ops / (double)(preu * cnt[CNT_CYC_UPD]) : 0.0,
            (unsigned long long)cnt[CNT_HAZ], (unsigned long long)cnt[CNT_DUP], (unsigned long long)cnt[CNT_BANK],
            (unsigned long long)cnt[CNT_ABANK], (unsigned long long)cnt[CNT_STARVE],
@@ -276,7 +301,7 @@ int main(int argc, char **argv)
            (unsigned long long)(cnt2[CNT_HAZ] - cnt[CNT_HAZ]), (unsigned long long)(cnt2[CNT_DUP] - cnt[CNT_DUP]),
            (unsigned long long)(cnt2[CNT_BANK] - cnt[CNT_BANK]), (unsigned long long)(cnt2[CNT_ABANK] - cnt[CNT_ABANK]),
            (unsigned long long)(cnt2[CNT_STARVE] - cnt[CNT_STARVE]), bad ? "FAIL" : "PASS");
-    free(order); free(Lm); free(Lr); free(hp); free(init); free(pixel); free(cand);
+    free(order); free(Lm); free(Lr); free(hp); free(sp); free(init); free(pixel); free(cand);
     if (abank) mis_free(&mis);
     cosim_drv_free(drv);
     cosim_rtl_free(rtl);

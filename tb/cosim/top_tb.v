@@ -65,6 +65,7 @@ module top_tb;
     .PxBankW(PxBankW), .CntW(CntW)
   ) dut (
     .clk_i(clk), .rst_ni(rst_n), .mode_i(mode), .cnt_en_i(cnt_en), .ne_i(ne),
+    .alpha_i(32'h3F33_3333), .kappa_i(32'h0), // the paper datapath at alpha = (float)0.7
     .rad_start_i(rad_start), .n_hit_i(n_hit), .idle_o(idle),
     .ph_valid_i(ph_valid), .ph_ready_o(ph_ready), .ph_data_i(ph_data), .ph_paddr_i(ph_paddr),
     .ph_n_i(ph_n), .photons_done_o(photons_done),

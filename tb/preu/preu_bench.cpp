@@ -1,5 +1,7 @@
 // preu_bench.cpp: Verilator bench for rtl/pree_preu.v in both modes, scoreboarded bit for bit
-// against model/preu_fp32.c (expected values computed by tb/preu/preu_vec.c).
+// against model/preu_fp32.c or model/preu_stable.c (expected values computed by
+// tb/preu/preu_vec.c). Built once per datapath: -DPREU_DATAPATH=0 (paper) or 1 (stable), with
+// the RTL's Datapath parameter to match.
 //
 // Usage: preu_bench [count [seed]] [+trace=FILE.fst]   (defaults 200000, 1; no trace)
 // The sequence (preu_seq_gen) starts with directed cases, then alternates update and radiance
@@ -8,7 +10,7 @@
 // operation's pixel sum on l_i in the next cycle, and drives random junk on every input that
 // is not meant to be read (so stale data cannot hide). Scoreboard keyed on the handshake:
 // an expected result is pushed when valid_i is high and popped at valid_o, which must come
-// exactly 10 (update) or 12 (radiance) cycles later with the same tag; lreq_o must come in
+// exactly UPD_LAT (paper 10, stable 12; update) or 12 (radiance) cycles later with the same tag; lreq_o must come in
 // the operation's S10 with its tag. Update results are compared whether accepted or not.
 // Prints the first 20 mismatches with their inputs in hex; exit status 1 on any failure.
 #include <cinttypes>
@@ -27,6 +29,9 @@
 namespace {
 
 const int MAX_REPORT = 20;
+const int DP = PREU_DATAPATH;
+const int NST = DP ? 10 : 5;              // state words
+const uint64_t UPD_LAT = DP ? 12 : 10;
 
 struct Pending {
     uint32_t index;
@@ -40,21 +45,26 @@ void report(const preu_vec_t &v, uint32_t idx, const char *what, uint64_t cycle)
     if (errors++ >= MAX_REPORT) return;
     std::printf("MISMATCH op %u (%s mode) cycle %" PRIu64 ": %s\n", idx,
                 v.mode ? "radiance" : "update", cycle, what);
-    std::printf("  hp pos %08x %08x %08x f %08x %08x %08x tau %08x %08x %08x r2 %08x n %08x\n",
-                v.hp.pos[0], v.hp.pos[1], v.hp.pos[2], v.hp.f[0], v.hp.f[1], v.hp.f[2],
-                v.hp.tau[0], v.hp.tau[1], v.hp.tau[2], v.hp.r2, v.hp.n);
-    std::printf("  ph pos %08x %08x %08x phi %08x %08x %08x ne %08x l %08x %08x %08x\n",
+    std::printf("  hp pos %08x %08x %08x f %08x %08x %08x state", v.hp.pos[0], v.hp.pos[1], v.hp.pos[2],
+                v.hp.f[0], v.hp.f[1], v.hp.f[2]);
+    for (int k = NST; k-- > 0;) std::printf(" %08x", v.hp.st[k]);
+    std::printf("\n  ph pos %08x %08x %08x phi %08x %08x %08x alpha %08x kappa %08x ne %08x l %08x %08x %08x\n",
                 v.ph.pos[0], v.ph.pos[1], v.ph.pos[2], v.ph.phi[0], v.ph.phi[1], v.ph.phi[2],
-                v.ne, v.l[0], v.l[1], v.l[2]);
-    std::printf("  expected accept %d tau %08x %08x %08x r2 %08x n %08x l %08x %08x %08x\n",
-                v.accept, v.tau[0], v.tau[1], v.tau[2], v.r2, v.n, v.lo[0], v.lo[1], v.lo[2]);
+                v.alpha, v.kappa, v.ne, v.l[0], v.l[1], v.l[2]);
+    std::printf("  expected accept %d l %08x %08x %08x state", v.accept, v.lo[0], v.lo[1], v.lo[2]);
+    for (int k = NST; k-- > 0;) std::printf(" %08x", v.sto[k]);
+    std::printf("\n");
 }
 
-void put96(VlWide<3> &port, const uint32_t *w) { port[0] = w[0]; port[1] = w[1]; port[2] = w[2]; }
-
-bool eq96(const VlWide<3> &port, const uint32_t *w)
+template <std::size_t N> void put(VlWide<N> &port, const uint32_t *w)
 {
-    return port[0] == w[0] && port[1] == w[1] && port[2] == w[2];
+    for (std::size_t k = 0; k < N; k++) port[k] = w[k];
+}
+
+template <std::size_t N> bool eq(const VlWide<N> &port, const uint32_t *w)
+{
+    for (std::size_t k = 0; k < N; k++) if (port[k] != w[k]) return false;
+    return true;
 }
 
 }  // namespace
@@ -92,7 +102,7 @@ int main(int argc, char **argv)
     };
 
     std::vector<preu_vec_t> seq(count);
-    preu_seq_gen(seq.data(), count, seed);
+    preu_seq_gen(seq.data(), count, seed, DP);
 
     // Reset: two cycles with rst_ni low, inputs idle.
     dut->clk_i = 0; dut->rst_ni = 0; dut->valid_i = 0; dut->mode_i = 0;
@@ -106,22 +116,23 @@ int main(int argc, char **argv)
     auto junk = [&junk_state]() { junk_state = junk_state * 1664525u + 1013904223u; return junk_state; };
     int next = 0, gap_left = seq[0].gap, mode = 0;
     bool l_due = false;            // lreq_o was high last cycle: drive that op's L now
-    uint32_t l_index = 0, ne_cur = 0;
+    uint32_t l_index = 0, ne_cur = 0, alpha_cur = 0, kappa_cur = 0;
     uint64_t cycle = 0, issued = 0, checked = 0, accepted = 0, switches = 0, idle = 0;
     const uint64_t max_cycles = (uint64_t)count * 40 + 1000;
 
     while ((next < count || !results.empty()) && cycle < max_cycles) {
         // Inputs for this cycle: junk first, then whatever is meant to be read.
-        uint32_t j[3];
-        for (auto *w : {&dut->hp_pos_i, &dut->hp_f_i, &dut->hp_tau_i, &dut->ph_pos_i, &dut->ph_phi_i,
-                        &dut->l_i}) {
+        uint32_t j[PREU_STATE_MAX];
+        for (auto *w : {&dut->hp_pos_i, &dut->hp_f_i, &dut->ph_pos_i, &dut->ph_phi_i, &dut->l_i}) {
             j[0] = junk(); j[1] = junk(); j[2] = junk();
-            put96(*w, j);
+            put(*w, j);
         }
-        dut->hp_r2_i = junk(); dut->hp_n_i = junk(); dut->tag_i = junk();
+        for (int k = 0; k < NST; k++) j[k] = junk();
+        put(dut->hp_state_i, j);
+        dut->tag_i = junk();
         dut->valid_i = 0;
         dut->mode_i = mode;
-        if (l_due) put96(dut->l_i, seq[l_index].l);
+        if (l_due) put(dut->l_i, seq[l_index].l);
         dut->eval();
 
         bool offer = next < count && gap_left == 0;
@@ -130,17 +141,21 @@ int main(int argc, char **argv)
             else { mode = seq[next].mode; dut->mode_i = mode; switches++; }
         }
         // NE is held for a whole radiance phase; junk in update mode, where nothing reads it.
+        // alpha and kappa are held for a whole update phase (they change only at a phase
+        // change, when the pipeline has drained); junk in radiance mode.
         if (offer && mode == 1) ne_cur = seq[next].ne;
+        if (offer && mode == 0) { alpha_cur = seq[next].alpha; kappa_cur = seq[next].kappa; }
         dut->ne_i = mode ? ne_cur : junk();
+        dut->alpha_i = mode ? junk() : alpha_cur;
+        dut->kappa_i = mode ? junk() : kappa_cur;
         if (offer) {
             const preu_vec_t &v = seq[next];
             dut->valid_i = 1;
             dut->tag_i = (uint32_t)next;
-            put96(dut->hp_pos_i, v.hp.pos); put96(dut->hp_f_i, v.hp.f);
-            put96(dut->hp_tau_i, v.hp.tau);
-            dut->hp_r2_i = v.hp.r2; dut->hp_n_i = v.hp.n;
-            put96(dut->ph_pos_i, v.ph.pos); put96(dut->ph_phi_i, v.ph.phi);
-            results.push_back({(uint32_t)next, cycle + (mode ? 12u : 10u)});
+            put(dut->hp_pos_i, v.hp.pos); put(dut->hp_f_i, v.hp.f);
+            put(dut->hp_state_i, v.hp.st);
+            put(dut->ph_pos_i, v.ph.pos); put(dut->ph_phi_i, v.ph.phi);
+            results.push_back({(uint32_t)next, cycle + (mode ? 12u : UPD_LAT)});
             if (mode) lreqs.push_back({(uint32_t)next, cycle + 9u});
             issued++;
             next++;
@@ -173,22 +188,21 @@ int main(int argc, char **argv)
                 Pending p = results.front();
                 results.pop_front();
                 const preu_vec_t &v = seq[p.index];
-                char msg[200];
+                char msg[240];
                 if (p.due != cycle || dut->tag_o != p.index) {
                     std::snprintf(msg, sizeof msg, "result at cycle %" PRIu64 " tag %u, expected cycle %" PRIu64 " tag %u",
                                   cycle, dut->tag_o, p.due, p.index);
                     report(v, p.index, msg, cycle);
                 } else if (v.mode == 0) {
-                    if (dut->accept_o != v.accept || !eq96(dut->tau_o, v.tau) || dut->r2_o != v.r2 ||
-                        dut->n_o != v.n) {
-                        std::snprintf(msg, sizeof msg, "got accept %d tau %08x %08x %08x r2 %08x n %08x",
-                                      dut->accept_o, dut->tau_o[0], dut->tau_o[1], dut->tau_o[2], dut->r2_o,
-                                      dut->n_o);
+                    if (dut->accept_o != v.accept || !eq(dut->state_o, v.sto)) {
+                        int n = std::snprintf(msg, sizeof msg, "got accept %d state", dut->accept_o);
+                        for (int k = NST; k-- > 0 && n < (int)sizeof msg - 10;)
+                            n += std::snprintf(msg + n, sizeof msg - n, " %08x", dut->state_o[k]);
                         report(v, p.index, msg, cycle);
                     }
                     accepted += v.accept;
                 } else {
-                    if (dut->accept_o || !eq96(dut->l_o, v.lo)) {
+                    if (dut->accept_o || !eq(dut->l_o, v.lo)) {
                         std::snprintf(msg, sizeof msg, "got accept %d l %08x %08x %08x", dut->accept_o,
                                       dut->l_o[0], dut->l_o[1], dut->l_o[2]);
                         report(v, p.index, msg, cycle);
@@ -209,9 +223,9 @@ int main(int argc, char **argv)
     if (tfp) tfp->close();
 
     bool ok = errors == 0 && checked == (uint64_t)count && results.empty();
-    std::printf("preu_bench: seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "
+    std::printf("preu_bench: %s datapath, seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "
                 "(%" PRIu64 " update accepted), %" PRIu64 " mode switches, %" PRIu64 " cycles, %" PRIu64
                 " idle, %" PRIu64 " mismatches: %s\n",
-                seed, issued, checked, accepted, switches, cycle, idle, errors, ok ? "PASS" : "FAIL");
+                DP ? "stable" : "paper", seed, issued, checked, accepted, switches, cycle, idle, errors, ok ? "PASS" : "FAIL");
     return ok ? 0 : 1;
 }

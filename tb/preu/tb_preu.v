@@ -1,11 +1,12 @@
 // tb_preu: self-checking Icarus Verilog testbench for pree_preu over a vector file.
 //
 // The vector file (tb/preu/preu_vecgen.c, layout in tb/preu/preu_vec.c: preu_vec_words) holds
-// NOps operations of PREU_VEC_WORDS = 32 hex words each: mode, gap, inputs, expected outputs,
-// computed by model/preu_fp32.c. The bench plays them in order as a top would: it leaves `gap`
+// NOps operations of PREU_VEC_WORDS = 44 hex words each: mode, gap, inputs, expected outputs,
+// computed by model/preu_fp32.c (Datapath 0) or model/preu_stable.c (Datapath 1). The bench plays them in order as a top would: it leaves `gap`
 // idle cycles before each, switches mode_i only when the pipeline is empty, answers lreq_o with
 // the operation's pixel sum on l_i in the next cycle, and drives junk on unread inputs. Every
-// result is checked against its vector by tag, with its latency (10 update, 12 radiance);
+// result is checked against its vector by tag, with its latency (update 10 paper / 12 stable,
+// radiance 12);
 // the first 20 mismatches are printed; any failure ends in $fatal (run as `vvp -N`).
 // With BadSwitch = 1 it breaks the mode-switch rule on purpose: pree_preu's PREE_ASSERT check
 // must then stop the run (mk/preu.mk: sim-preu-badswitch expects that failure).
@@ -16,7 +17,13 @@ module tb_preu;
   parameter NOps    = 100;
   parameter VecFile = "preu_vec.hex";
   parameter BadSwitch = 0;   // 1: switch modes without waiting for the drain (the RTL must stop)
-  localparam W = 32;
+  parameter Datapath  = 0;   // 0 paper, 1 stable
+  localparam W   = 44;
+  localparam SW  = (Datapath != 0) ? 320 : 160;   // state bits
+  localparam UPD = (Datapath != 0) ? 12 : 10;     // update latency
+  // Word offsets in a vector (tb/preu/preu_vec.c preu_vec_words).
+  localparam O_POS = 2, O_F = 5, O_ST = 8, O_PPOS = 18, O_PHI = 21, O_NE = 24, O_L = 25;
+  localparam O_ALPHA = 28, O_KAPPA = 29, O_ACC = 30, O_STO = 31, O_LO = 41;
 
   reg [31:0] vec [0:NOps*W-1];
   initial $readmemh(VecFile, vec);
@@ -26,18 +33,20 @@ module tb_preu;
   reg rst_n = 1'b0;
 
   reg         mode, valid;
-  reg  [31:0] tag, hp_r2, hp_n, ne;
-  reg  [95:0] hp_pos, hp_f, hp_tau, ph_pos, ph_phi, l_in;
+  reg  [31:0] tag, ne, alpha, kappa;
+  reg  [95:0] hp_pos, hp_f, ph_pos, ph_phi, l_in;
+  reg  [SW-1:0] hp_state;
   wire        lreq, valid_out, accept, busy;
-  wire [31:0] lreq_tag, tag_out, r2_out, n_out;
-  wire [95:0] tau_out, l_out;
+  wire [31:0] lreq_tag, tag_out;
+  wire [95:0] l_out;
+  wire [SW-1:0] state_out;
 
-  pree_preu #(.TagW(32)) dut (
+  pree_preu #(.TagW(32), .Datapath(Datapath)) dut (
     .clk_i(clk), .rst_ni(rst_n), .mode_i(mode), .valid_i(valid), .tag_i(tag),
-    .hp_pos_i(hp_pos), .hp_f_i(hp_f), .hp_tau_i(hp_tau), .hp_r2_i(hp_r2), .hp_n_i(hp_n),
-    .ph_pos_i(ph_pos), .ph_phi_i(ph_phi), .ne_i(ne), .lreq_o(lreq), .lreq_tag_o(lreq_tag),
-    .l_i(l_in), .valid_o(valid_out), .tag_o(tag_out), .accept_o(accept), .tau_o(tau_out),
-    .r2_o(r2_out), .n_o(n_out), .l_o(l_out), .busy_o(busy));
+    .hp_pos_i(hp_pos), .hp_f_i(hp_f), .hp_state_i(hp_state),
+    .ph_pos_i(ph_pos), .ph_phi_i(ph_phi), .alpha_i(alpha), .kappa_i(kappa), .ne_i(ne),
+    .lreq_o(lreq), .lreq_tag_o(lreq_tag), .l_i(l_in), .valid_o(valid_out), .tag_o(tag_out),
+    .accept_o(accept), .state_o(state_out), .l_o(l_out), .busy_o(busy));
 
   function [95:0] w96;
     input integer base;
@@ -46,11 +55,20 @@ module tb_preu;
     end
   endfunction
 
+  // The SW/32 state words at base, low word first.
+  function [SW-1:0] wst;
+    input integer base;
+    integer i;
+    begin
+      for (i = 0; i < SW / 32; i = i + 1) wst[32*i +: 32] = vec[base + i];
+    end
+  endfunction
+
   // Issue-cycle bookkeeping for the latency check.
   reg [63:0] issue_cycle [0:NOps-1];
   reg [63:0] cycle = 0;
   integer next = 0, gap_left = 0, checked = 0, errors = 0, accepted = 0, switches = 0;
-  integer expect_next = 0, b;
+  integer expect_next = 0, b, jk;
   reg     can_switch;
 
   task fail;
@@ -61,13 +79,11 @@ module tb_preu;
       if (errors <= 20) begin
         b = idx * W;
         $display("MISMATCH op %0d (mode %0d) cycle %0d: %0s", idx, vec[b], cycle, what);
-        $display("  got  accept %0d tau %h r2 %h n %h l %h tag %0d", accept, tau_out, r2_out, n_out,
-                 l_out, tag_out);
-        $display("  want accept %0d tau %h r2 %h n %h l %h", vec[b+23], w96(b+24), vec[b+27],
-                 vec[b+28], w96(b+29));
-        $display("  in   hp pos %h f %h tau %h r2 %h n %h", w96(b+2), w96(b+5), w96(b+8), vec[b+11],
-                 vec[b+12]);
-        $display("       ph pos %h phi %h ne %h l %h", w96(b+13), w96(b+16), vec[b+19], w96(b+20));
+        $display("  got  accept %0d state %h l %h tag %0d", accept, state_out, l_out, tag_out);
+        $display("  want accept %0d state %h l %h", vec[b+O_ACC], wst(b+O_STO), w96(b+O_LO));
+        $display("  in   hp pos %h f %h state %h", w96(b+O_POS), w96(b+O_F), wst(b+O_ST));
+        $display("       ph pos %h phi %h alpha %h kappa %h ne %h l %h", w96(b+O_PPOS), w96(b+O_PHI),
+                 vec[b+O_ALPHA], vec[b+O_KAPPA], vec[b+O_NE], w96(b+O_L));
       end
     end
   endtask
@@ -79,9 +95,7 @@ module tb_preu;
       tag    <= $random;
       hp_pos <= {$random, $random, $random};
       hp_f   <= {$random, $random, $random};
-      hp_tau <= {$random, $random, $random};
-      hp_r2  <= $random;
-      hp_n   <= $random;
+      for (jk = 0; jk < SW / 32; jk = jk + 1) hp_state[32*jk +: 32] <= $random;
       ph_pos <= {$random, $random, $random};
       ph_phi <= {$random, $random, $random};
     end
@@ -89,7 +103,7 @@ module tb_preu;
 
   initial begin
     mode = 1'b0; valid = 1'b0; ne = 32'd0; l_in = 96'd0; tag = 32'd0;
-    hp_pos = 0; hp_f = 0; hp_tau = 0; hp_r2 = 0; hp_n = 0; ph_pos = 0; ph_phi = 0;
+    hp_pos = 0; hp_f = 0; hp_state = 0; ph_pos = 0; ph_phi = 0; alpha = 0; kappa = 0;
     can_switch = 1'b0;
     repeat (2) @(posedge clk);
     @(negedge clk);
@@ -106,12 +120,11 @@ module tb_preu;
       else begin
         if (tag_out != expect_next)
           fail("result out of order (tag)", expect_next);
-        else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? 12 : 10))
+        else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? 12 : UPD))
           fail("wrong latency", expect_next);
-        else if (vec[b] == 0 && (accept !== vec[b+23][0] || tau_out !== w96(b+24) ||
-                                 r2_out !== vec[b+27] || n_out !== vec[b+28]))
+        else if (vec[b] == 0 && (accept !== vec[b+O_ACC][0] || state_out !== wst(b+O_STO)))
           fail("update result", expect_next);
-        else if (vec[b] == 1 && (accept !== 1'b0 || l_out !== w96(b+29)))
+        else if (vec[b] == 1 && (accept !== 1'b0 || l_out !== w96(b+O_LO)))
           fail("radiance result", expect_next);
         if (vec[b] == 0 && accept) accepted = accepted + 1;
         checked = checked + 1;
@@ -119,7 +132,7 @@ module tb_preu;
       end
     end
     // ---- next cycle's inputs
-    l_in <= lreq ? w96(lreq_tag * W + 20) : {$random, $random, $random};
+    l_in <= lreq ? w96(lreq_tag * W + O_L) : {$random, $random, $random};
     junk;
     // The pipeline is empty in the next cycle if it is empty now and nothing enters now.
     can_switch = !busy && !valid;
@@ -134,14 +147,13 @@ module tb_preu;
         mode   <= vec[b][0];
         valid  <= 1'b1;
         tag    <= next;
-        hp_pos <= w96(b + 2);
-        hp_f   <= w96(b + 5);
-        hp_tau <= w96(b + 8);
-        hp_r2  <= vec[b + 11];
-        hp_n   <= vec[b + 12];
-        ph_pos <= w96(b + 13);
-        ph_phi <= w96(b + 16);
-        if (vec[b][0]) ne <= vec[b + 19];
+        hp_pos <= w96(b + O_POS);
+        hp_f   <= w96(b + O_F);
+        hp_state <= wst(b + O_ST);
+        ph_pos <= w96(b + O_PPOS);
+        ph_phi <= w96(b + O_PHI);
+        if (vec[b][0]) ne <= vec[b + O_NE];
+        else begin alpha <= vec[b + O_ALPHA]; kappa <= vec[b + O_KAPPA]; end
         issue_cycle[next] = cycle + 1;
         next = next + 1;
         if (next < NOps) gap_left = vec[next * W + 1];

@@ -1,18 +1,21 @@
 #!/usr/bin/env bash
 # Co-simulation of cornell3 at 64x48 / 20k photons through the Verilated pree_top with 4, 8 and
-# 16 PREUs: the final hit-point memory and the image must match the fp32 model word for word.
+# 16 PREUs (paper datapath) and 4 PREUs (stable datapath, alpha 0.7 and 0.5): the final
+# hit-point memory and the image must match the fp32 model word for word.
 set -u
 cd "$(dirname "$0")/../.."
 mkdir -p build/cosim
 fail=0
-for p in 4 8 16; do
-  cmd="build/pree cosim scenes/cornell3 --width 64 --height 48 --photons 20000 --preu $p --quiet --no-reference --stats build/cosim/check_small_p$p.json"
+for cfg in "4" "8" "16" "4 --datapath stable" "4 --datapath stable --alpha 0.5"; do
+  tag=$(echo "$cfg" | tr -d ' -' | tr . _)
+  p=${cfg%% *}
+  j=build/cosim/check_small_$tag.json
+  cmd="build/pree cosim scenes/cornell3 --width 64 --height 48 --photons 20000 --preu $cfg --quiet --no-reference --stats $j"
   if ! $cmd; then echo "FAIL: $cmd"; fail=1; continue; fi
-  j=build/cosim/check_small_p$p.json
   grep -E '"(hp|image)_words_differing"|"preu_utilization"' "$j" | head -3
   if ! grep -q '"hp_words_differing": 0,' "$j" || ! grep -q '"image_words_differing": 0,' "$j" \
      || ! grep -q '"pass": true' "$j"; then
-    echo "FAIL: differing words with $p PREUs; reproduce: $cmd"; fail=1
+    echo "FAIL: differing words with --preu $cfg; reproduce: $cmd"; fail=1
   fi
 done
 exit $fail

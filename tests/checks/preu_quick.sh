@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# preu_quick.sh: PREU lint (verilator -Wall, four configurations), Yosys structural checks (no
-# latch, no combinational loop) and a short Verilator run against the C model (20,000 operations).
+# preu_quick.sh: PREU lint (verilator -Wall, four configurations a datapath), Yosys structural checks (no
+# latch, no combinational loop) and a short Verilator run against the C model (20,000 operations),
+# both datapaths (paper, stable).
 # level: quick
 set -u
 cd "$(dirname "$0")/../.."

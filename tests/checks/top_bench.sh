@@ -5,7 +5,8 @@
 # conflicts), a small hit-point set (radiance hazards), index entries misplaced on purpose (stage-A
 # bank conflicts in update mode; the bench also requires its abank counter to be non-zero);
 # 4 PREUs here, and the misplaced entries with 8 and 16 too; the other scenarios with 8 and 16
-# in `make sim`.
+# in `make sim`. The stable PREU datapath (13-cycle update hazard window) with 4 PREUs: random,
+# one hit point, dense, gaps and misplaced entries, at alpha 0.7 and 0.3.
 set -u
 cd "$(dirname "$0")/../.."
 bench=${BUILD:-build}/cosim/top_bench
@@ -27,4 +28,9 @@ run --preu 4 --scenario abank --photons 300
 run --preu 4 --scenario abank --photons 300 --gap 0.3 --seed 2
 run --preu 8 --scenario abank --photons 300
 run --preu 16 --scenario abank --photons 300 --gap 0.3 --seed 3
+run --preu 4 --datapath 1 --scenario random --photons 400
+run --preu 4 --datapath 1 --scenario one --photons 200
+run --preu 4 --datapath 1 --scenario dense --hp 100 --photons 60
+run --preu 4 --datapath 1 --alpha 0.3 --scenario mixed --photons 300 --gap 0.3
+run --preu 4 --datapath 1 --scenario abank --photons 300 --seed 2
 exit $fail

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16.
+# verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16, both datapaths.
 # (Full level: it also lints the PREU and fp32 units as instantiated under the top.)
 set -u
 cd "$(dirname "$0")/../.."
-srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
+srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
 fail=0
-for p in 4 8 16; do
-  cmd="verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$p $srcs"
-  if ! $cmd; then echo "FAIL: $cmd"; fail=1; fi
+for d in 0 1; do
+  for p in 4 8 16; do
+    cmd="verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$p -GDatapath=$d $srcs"
+    if ! $cmd; then echo "FAIL: $cmd"; fail=1; fi
+  done
 done
 exit $fail

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
 # level: quick
-# Yosys structural check of pree_top (NumPreu 4, small memories): no latch, no combinational
-# loop, no multiple drivers. The full synth_xilinx run is `make synth-top`.
+# Yosys structural check of pree_top (NumPreu 4, small memories), both PREU datapaths: no latch,
+# no combinational loop, no multiple drivers. The full synth_xilinx run is `make synth-top`.
 set -u
 cd "$(dirname "$0")/../.."
-srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr '\n' ' ')"
-cmd="read_verilog -Irtl $srcs; chparam -set NumPreu 4 -set HpAW 10 -set HpBankW 4 -set IdxAW 8 -set PxAW 8 -set PxBankW 2 pree_top; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$sr; check -assert"
+srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
 mkdir -p build/cosim
-if ! yosys -q -l build/cosim/top_yosys.log -p "$cmd" >/dev/null; then
-  echo "FAIL (log build/cosim/top_yosys.log); reproduce: yosys -p '$cmd'"; tail -15 build/cosim/top_yosys.log; exit 1
-fi
-echo "pree_top: no latch, no loop"
+for d in 0 1; do
+  cmd="read_verilog -Irtl $srcs; chparam -set NumPreu 4 -set HpAW 10 -set HpBankW 4 -set IdxAW 8 -set PxAW 8 -set PxBankW 2 -set Datapath $d pree_top; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$sr; check -assert"
+  if ! yosys -q -l build/cosim/top_yosys.log -p "$cmd" >/dev/null; then
+    echo "FAIL (log build/cosim/top_yosys.log); reproduce: yosys -p '$cmd'"; tail -15 build/cosim/top_yosys.log; exit 1
+  fi
+  echo "pree_top (datapath $d): no latch, no loop"
+done
