@@ -140,6 +140,10 @@ int pree_cmd_render(int argc, char **argv)
         fprintf(stderr, "pree render: warning: %s: no eye ray reaches a diffuse surface; the image is black\n", scene_path);
     else if (res.stats.photon_hits == 0)
         fprintf(stderr, "pree render: warning: %s: no photon reaches a diffuse surface; the image is black\n", scene_path);
+    if (res.stats.hit_points_saturated)
+        fprintf(stderr, "pree render: warning: %s: %llu hit points reached the stable datapath's wide-format limit "
+                "(1/r2 or tau/r2 beyond binary32's range: the radius stopped shrinking there; docs/numerics.md)\n",
+                scene_path, res.stats.hit_points_saturated);
     if (rc == 1)
         fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
                 (unsigned long long)res.stats.photons_emitted);

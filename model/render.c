@@ -4,6 +4,7 @@
  * chunk buffers, then each thread updates the hit points it owns from all of the block's
  * hits in photon order. So every hit point sees its photons in index order, and the result
  * does not depend on the number of threads. */
+#include <math.h>
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -149,6 +150,49 @@ static void hash_results(render_result_t *res, precision_t prec)
     res->stats.state_hash = s;
 }
 
+/* fp32 mode: every photon hit crosses into the PREE as binary32 (update_photon_fp32); a flux or
+ * position beyond binary32's range there is an error naming the photon. */
+static int fp32_check_hits(const block_buffers_t *bb, char *err, size_t errlen)
+{
+    for (unsigned c = 0; c < TRACE_CHUNKS; c++)
+        for (size_t i = 0; i < bb->chunk[c].n; i++) {
+            const photon_hit_t *h = &bb->chunk[c].hits[i];
+            const double v[6] = {h->flux.x, h->flux.y, h->flux.z, h->x.x, h->x.y, h->x.z};
+            for (int k = 0; k < 6; k++)
+                if (!isfinite((float)v[k])) {
+                    snprintf(err, errlen, "fp32: photon %llu's %s (%g, %g, %g) is beyond binary32's range at the "
+                             "PREE boundary: scale the light or the scene down, or use --precision double",
+                             (unsigned long long)h->photon, k < 3 ? "flux" : "hit position",
+                             v[k < 3 ? 0 : 3], v[k < 3 ? 1 : 4], v[k < 3 ? 2 : 5]);
+                    return -1;
+                }
+        }
+    return 0;
+}
+
+/* fp32 mode: count the stable datapath's saturated hit points, and refuse an image with an
+ * infinite or NaN pixel (docs/numerics.md: what overflows where). */
+static int fp32_result_check(render_result_t *res, char *err, size_t errlen)
+{
+    const hitpoints_t *h = &res->hp;
+    unsigned long long sat = 0;
+    for (size_t i = 0; h->stable && i < h->n; i++) {
+        const preu_shp_t *s = &h->stable[i];
+        sat += s->w == WIDE_MAX || s->T[0] == WIDE_MAX || s->T[1] == WIDE_MAX || s->T[2] == WIDE_MAX;
+    }
+    res->stats.hit_points_saturated = sat;
+    const size_t n = (size_t)res->width * (size_t)res->height * 3;
+    size_t bad = 0, first = 0;
+    for (size_t j = 0; j < n; j++)
+        if (!isfinite(res->rgb[j]) && !bad++) first = j / 3;
+    if (!bad) return 0;
+    snprintf(err, errlen, "fp32: %zu pixel values are infinite or NaN (first at pixel %zu, %zu): a value left "
+             "binary32's range (light flux above 3.4e38, or the %s datapath's radius collapsed); "
+             "try --precision double%s", bad, first % (size_t)res->width, first / (size_t)res->width,
+             h->stable ? "stable" : "paper", h->stable ? "" : " or --datapath stable");
+    return -1;
+}
+
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen)
 {
@@ -247,6 +291,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
             goto done;
         }
         st->sec_trace += omp_get_wtime() - t;
+        if (opt->precision == PRECISION_FP32 && fp32_check_hits(bb, err, errlen)) { free(ust); goto done; }
         t = omp_get_wtime();
         if (photon_major) {
 #pragma omp parallel num_threads(T)
@@ -319,6 +364,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         goto done;
     }
     st->sec_radiance = omp_get_wtime() - t;
+    if (opt->precision == PRECISION_FP32 && fp32_result_check(res, err, errlen)) goto done;
     hash_results(res, opt->precision);
     rc = interrupted ? 1 : 0;
 done:

@@ -2,7 +2,9 @@
  * updates, radiance evaluation. The output image is bit-identical for every thread count.
  *
  * render_run() returns 0 (complete), 1 (interrupted: the image holds the whole photon
- * batches done so far) or -1 with a one-line message in err. */
+ * batches done so far) or -1 with a one-line message in err. An fp32 render whose image holds
+ * an infinity or a NaN (binary32 overflow of the light's flux, or the paper datapath's radius
+ * collapsing) is an error (-1), never a silent image. */
 #ifndef PREE_RENDER_H
 #define PREE_RENDER_H
 
@@ -43,6 +45,7 @@ typedef struct {
     unsigned long long photons_emitted, photon_segments, photon_hits, photon_hits_no_cell;
     update_stats_t upd;
     unsigned long long radiance_skipped;
+    unsigned long long hit_points_saturated; /* stable datapath: w or T stopped at WIDE_MAX */
     double r0, r_safe;
     size_t grid_entries;
     double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_radiance, sec_total;

@@ -30,6 +30,7 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
     fprintf(f, "  \"precision\": \"%s\",\n  \"grid\": \"%s\",\n  \"skips\": %s,\n  \"threads\": %d,\n",
             opt->precision == PRECISION_FP32 ? "fp32" : "double", grid_name(opt->grid),
             (!opt->no_skip && opt->grid == GRID_CELLS) ? "true" : "false", st->threads);
+    fprintf(f, "  \"hit_points_saturated\": %llu,\n", st->hit_points_saturated);
     fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.17g,\n",
             opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper",
             opt->alpha > 0 ? opt->alpha : UPDATE_ALPHA);

@@ -61,6 +61,17 @@ scene "camera origin 0 0 0 dir 0 0 -1 scale 0.5 near 0" "material m diffuse .5 .
 expect_error "duplicate material" "bad.scene:3: material 'm' is defined twice" render "$TMP/bad.scene" "${out[@]}"
 scene "camera origin 0 0 0 dir 0 0 -1 scale 0.5 near 0" "depth 40"
 expect_error "absurd depth" "bad.scene:2: depth 40" render "$TMP/bad.scene" "${out[@]}"
+# The update rule's options, and values beyond binary32's range at the PREE boundary (fp32).
+expect_error "alpha zero" "--alpha: 0 is out of range" render "$good" --alpha 0 "${out[@]}"
+expect_error "alpha above one" "--alpha: 1.5 is out of range" render "$good" --alpha 1.5 "${out[@]}"
+expect_error "alpha not a number" "--alpha: 'nan' is not a number" render "$good" --alpha nan "${out[@]}"
+expect_error "bad datapath" "--datapath: 'fast' is not paper or stable" render "$good" --datapath fast "${out[@]}"
+expect_error "stable datapath in double" "--datapath stable needs --precision fp32" render "$good" --datapath stable "${out[@]}"
+sed 's/intensity 2500 2500 2500/intensity 1e38 1e38 1e38/' "$good" > "$TMP/hot.scene"
+for dp in paper stable; do
+  expect_error "light flux beyond binary32 ($dp)" "photon 0's flux .* beyond binary32's range" render "$TMP/hot.scene" \
+    --width 16 --height 12 --photons 1000 --precision fp32 --datapath $dp "${out[@]}"
+done
 head -c 3000 /dev/urandom > "$TMP/bad.scene"
 "$PREE" render "$TMP/bad.scene" "${out[@]}" 2>"$TMP/stderr" && fail "binary garbage accepted"
 [ "$(wc -l < "$TMP/stderr")" -eq 1 ] && grep -q "bad.scene:" "$TMP/stderr" || fail "binary garbage: $(cat "$TMP/stderr")"
