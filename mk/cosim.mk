@@ -5,7 +5,8 @@
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
 #   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation for the PREU
 #                      counts in SIM_FULL_PREUS (default 4 8; about 0.5 and 1 CPU minutes; 16 takes
-#                      about 25 on a slower machine), figures in $(COSIM_DIR)/full_p*.json
+#                      about 25 on a slower machine) and, with the stable datapath, in
+#                      SIM_FULL_STABLE_PREUS (default 4); figures in $(COSIM_DIR)/full_{p,s}*.json
 #   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
@@ -108,13 +109,16 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree
 	  $(BUILD)/pree cosim $(COSIM_SMALL) --preu $$p --datapath stable --stats $(COSIM_DIR)/small_s$$p.json --out $(COSIM_DIR)/small_s$$p.png; \
 	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_s$$p.json; done
 
-# Whole frame: cornell3 320x240, 768k photons.
+# Whole frame: cornell3 320x240, 768k photons; the paper datapath with SIM_FULL_PREUS PREUs, the
+# stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS).
 SIM_FULL_PREUS ?= 4 8
+SIM_FULL_STABLE_PREUS ?= 4
 sim-full: $(BUILD)/pree
-	@set -e; for p in $(SIM_FULL_PREUS); do \
-	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json"; \
-	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --quiet \
-	    --out $(COSIM_DIR)/full_p$$p.png --stats $(COSIM_DIR)/full_p$$p.json; cat $(COSIM_DIR)/full_p$$p.json; done
+	@set -e; for m in $(SIM_FULL_PREUS:%=%:paper) $(SIM_FULL_STABLE_PREUS:%=%:stable); do \
+	  p=$${m%%:*}; d=$${m##*:}; tag=$${d:0:1}$$p; \
+	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json"; \
+	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --quiet \
+	    --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json; cat $(COSIM_DIR)/full_$$tag.json; done
 
 # Waveforms: TEST=cosim or a bench scenario; opens with tb/cosim/pree_top.gtkw.
 TEST ?= mixed

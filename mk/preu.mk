@@ -5,6 +5,9 @@
 #                        PREU_IV_N vectors under Icarus and under Verilator --binary, both modes;
 #                        and a run that breaks the mode-switch rule, which the RTL assertion must stop
 #   make sim-preu-full   the thorough level: PREU_N_FULL Verilator ops over several seeds, each datapath
+#   make sim-preu-chain  one hit point fed PREU_CHAIN_N accepted photons (default 10 million)
+#                        through each datapath's Verilated PREU, state written back each time,
+#                        every word against the model; r2 and radiance against double per decade
 #   make sim-preu-vl-dp1 one datapath's Verilator bench (dp0 paper, dp1 stable); sim-preu-vl: both
 #   make wave-preu       an FST waveform of a short Verilator run (PREU_N=200, PREU_WAVE_DP=0|1)
 #   make lint-preu       verilator --lint-only -Wall, with and without PREE_ASSERT, TagW 1/8/32, both datapaths
@@ -22,13 +25,14 @@ PREU_N_FULL ?= 2000000
 PREU_IV_N   ?= 4000
 PREU_SEED   ?= 1
 PREU_WAVE_DP ?= 0
+PREU_CHAIN_N ?= 10000000
 PREU_CFLAGS := -std=c11 -D_GNU_SOURCE -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel -Itb/preu
 PREU_HDRS   := tb/preu/preu_vec.h model/preu_state.h model/preu_fp32.h model/preu_stable.h model/wide_acc.h model/fp32_ops.h
 PREU_C_OBJ  := $(PREU_DIR)/preu_fp32.o $(PREU_DIR)/preu_stable.o $(PREU_DIR)/preu_vec.o
 preu_bench   = $(PREU_DIR)/vl_dp$(1)/preu_bench
 preu_hex     = $(PREU_DIR)/preu_vec_dp$(1)_$(PREU_IV_N)_$(PREU_SEED).hex
 
-.PHONY: sim-preu-badswitch wave-preu lint-preu sim-preu sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-full synth-preu yosys-check-preu
+.PHONY: sim-preu-chain sim-preu-badswitch wave-preu lint-preu sim-preu sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-full synth-preu yosys-check-preu
 LINT_TARGETS  += lint-preu
 SIM_TARGETS   += sim-preu
 SYNTH_TARGETS += synth-preu
@@ -113,6 +117,9 @@ sim-preu: sim-preu-vl sim-preu-iv sim-preu-vlbin sim-preu-badswitch
 
 sim-preu-full: $(foreach dp,$(PREU_DPS),$(call preu_bench,$(dp)))
 	for dp in $(PREU_DPS); do for s in 1 2 3 4 5; do $(PREU_DIR)/vl_dp$$dp/preu_bench $(PREU_N_FULL) $$s || exit 1; done; done
+
+sim-preu-chain: $(foreach dp,$(PREU_DPS),$(call preu_bench,$(dp)))
+	for dp in $(PREU_DPS); do $(PREU_DIR)/vl_dp$$dp/preu_bench --chain $(PREU_CHAIN_N) || exit 1; done
 
 # Structural checks (quick, part of make test and make check through tests/checks/preu_quick.sh): no latches,
 # no combinational loops. synth-preu adds the 7-series figures (several minutes a datapath).

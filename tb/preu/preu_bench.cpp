@@ -4,6 +4,11 @@
 // the RTL's Datapath parameter to match.
 //
 // Usage: preu_bench [count [seed]] [+trace=FILE.fst]   (defaults 200000, 1; no trace)
+//        preu_bench --chain N [alpha]   one hit point fed N accepted photons in update mode,
+//                                       each result written back as a top would (one operation
+//                                       in flight), every state word checked against the model;
+//                                       prints r2 and radiance against a double reference at
+//                                       every decade (the stress suite's RTL leg, make stress)
 // The sequence (preu_seq_gen) starts with directed cases, then alternates update and radiance
 // phases of random length with back-to-back and gapped valid_i. The bench behaves as a top
 // would: it switches mode_i only in a cycle where busy_o = 0, answers lreq_o by driving the
@@ -67,10 +72,78 @@ template <std::size_t N> bool eq(const VlWide<N> &port, const uint32_t *w)
     return true;
 }
 
+// One hit point at distance 0 from every photon (all accepted), constant flux, state written
+// back after each result: the RTL must equal the model word for word at every step.
+int chain(Vpree_preu *dut, uint64_t n, double alpha)
+{
+    auto tick = [dut]() { dut->clk_i = 1; dut->eval(); dut->clk_i = 0; dut->eval(); };
+    const uint32_t a32 = preu_f32(alpha), k32 = preu_kappa(a32);
+    preu_hpw_t hw;
+    std::memset(&hw, 0, sizeof hw);
+    const uint32_t pos[3] = {preu_f32(1.0), preu_f32(2.0), preu_f32(3.0)};
+    const uint32_t f[3] = {preu_f32(0.5), preu_f32(0.25), preu_f32(1.0)};
+    preu_photon_t ph;
+    for (int c = 0; c < 3; c++) { ph.pos[c] = pos[c]; ph.phi[c] = preu_f32(1.0 + c); }
+    preu_hp_t hp;
+    preu_shp_t sp;
+    std::memcpy(hp.pos, pos, sizeof pos); std::memcpy(hp.f, f, sizeof f);
+    hp.tau[0] = hp.tau[1] = hp.tau[2] = 0; hp.r2 = preu_f32(1.0); hp.n = 0;
+    std::memcpy(sp.pos, pos, sizeof pos); std::memcpy(sp.f, f, sizeof f);
+    preu_stable_init(&sp, 1.0);
+    if (DP) preu_hpw_from_stable(&hw, &sp); else preu_hpw_from_paper(&hw, &hp);
+    double r2d = 1.0, taud = 0.0;                 // smallppm's double update, integer count
+    const double md = 0.5 * (1.0 / 3.14159265358979);   // f_r * phi_r / PI, channel r
+    uint64_t next = 10, errors = 0, cycles = 0;
+    dut->mode_i = 0; dut->alpha_i = a32; dut->kappa_i = k32;
+    for (uint64_t i = 1; i <= n; i++) {
+        put(dut->hp_pos_i, hw.pos); put(dut->hp_f_i, hw.f); put(dut->hp_state_i, hw.st);
+        put(dut->ph_pos_i, ph.pos); put(dut->ph_phi_i, ph.phi);
+        dut->valid_i = 1; dut->tag_i = (uint32_t)i;
+        tick(); cycles++;
+        dut->valid_i = 0;
+        while (!dut->valid_o && cycles < 20 * n + 100) { tick(); cycles++; }
+        const int acc = DP ? preu_stable_update(&sp, &ph, k32) : preu_update(&hp, &ph, a32);
+        preu_hpw_t want;
+        if (DP) preu_hpw_from_stable(&want, &sp); else preu_hpw_from_paper(&want, &hp);
+        if (!dut->valid_o || dut->accept_o != acc || !eq(dut->state_o, want.st)) {
+            if (errors++ < 5) std::printf("MISMATCH chain step %llu: valid %d accept %d (model %d)\n",
+                                          (unsigned long long)i, dut->valid_o, dut->accept_o, acc);
+            if (!dut->valid_o) break;
+        }
+        for (int k = 0; k < NST; k++) hw.st[k] = dut->state_o[k];
+        const double g = ((double)(i - 1) * alpha + alpha) / ((double)(i - 1) * alpha + 1.0);
+        r2d *= g;
+        taud = (taud + md) * g;
+        if (i == next || i == n) {
+            const double r2 = DP ? preu_stable_r2(&sp) : (double)fp32_from_bits(hp.r2);
+            const double tau = DP ? preu_stable_tau(&sp, 0) : (double)fp32_from_bits(hp.tau[0]);
+            std::printf("preu_bench chain: %s datapath, accepts %12llu: r2 %+.3e  radiance %+.3e (relative to double)\n",
+                        DP ? "stable" : "paper", (unsigned long long)i, r2 / r2d - 1, (tau / r2) / (taud / r2d) - 1);
+            if (i == next) next *= 10;
+        }
+        tick(); cycles++;
+    }
+    std::printf("preu_bench chain: %s datapath, alpha %g: %llu updates, %llu cycles, %llu mismatches: %s\n",
+                DP ? "stable" : "paper", alpha, (unsigned long long)n, (unsigned long long)cycles,
+                (unsigned long long)errors, errors ? "FAIL" : "PASS");
+    return errors ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char **argv)
 {
+    if (argc >= 3 && !std::strcmp(argv[1], "--chain")) {
+        const uint64_t n = std::strtoull(argv[2], nullptr, 0);
+        const double alpha = argc >= 4 ? std::atof(argv[3]) : 0.7;
+        if (n < 1 || !(alpha > 0 && alpha <= 1)) { std::fprintf(stderr, "preu_bench: bad --chain arguments\n"); return 2; }
+        const std::unique_ptr<VerilatedContext> cctx{new VerilatedContext};
+        const std::unique_ptr<Vpree_preu> d{new Vpree_preu{cctx.get()}};
+        d->clk_i = 0; d->rst_ni = 0; d->valid_i = 0; d->eval();
+        for (int i = 0; i < 2; i++) { d->clk_i = 1; d->eval(); d->clk_i = 0; d->eval(); }
+        d->rst_ni = 1; d->eval();
+        return chain(d.get(), n, alpha);
+    }
     std::vector<const char *> pos;
     for (int i = 1; i < argc; i++) if (argv[i][0] != '+') pos.push_back(argv[i]);
     int count = pos.size() > 0 ? std::atoi(pos[0]) : 200000;
