@@ -193,53 +193,88 @@ static int fp32_result_check(render_result_t *res, char *err, size_t errlen)
     return -1;
 }
 
-int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
-               char *err, size_t errlen)
+struct render_session {
+    const scene_t *scene;
+    render_options_t opt;
+    render_result_t *res;
+    double t_start, t_photons;
+    int T, skip, photon_major, interrupted, last_decile;
+    size_t npix;
+    grid_t grid;
+    block_buffers_t *bb;
+    tracer_t *tr;
+    uint32_t *perm;
+    uint16_t *owner;
+    update_batch_t batch;
+    update_scratch_t *scratch;
+    update_stats_t *ust;
+    update_ops_t ops;
+    uint64_t emitted_target, done_photons;
+    int failed;              /* a step failed: close only releases */
+};
+
+static void session_free(render_session_t *s)
+{
+    if (s->bb) {
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&s->bb->chunk[c]);
+        free(s->bb);
+    }
+    grid_free(&s->grid);
+    free(s->perm);
+    free(s->owner);
+    update_batch_free(&s->batch);
+    if (s->scratch)
+        for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
+    free(s->scratch);
+    free(s->ust);
+    update_ops_free(&s->ops);
+    tracer_destroy(s->tr);
+    free(s);
+}
+
+render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+                              char *err, size_t errlen)
 {
     memset(res, 0, sizeof *res);
+    render_session_t *s = calloc(1, sizeof *s);
+    if (!s) { snprintf(err, errlen, "out of memory"); return NULL; }
+    s->scene = scene;
+    s->opt = *opt;
+    s->res = res;
     render_stats_t *st = &res->stats;
-    const double t_start = omp_get_wtime();
-    if (opt->threads > 0) omp_set_num_threads(opt->threads);
-    const int T = opt->sink ? 1 : omp_get_max_threads();
+    s->t_start = omp_get_wtime();
     if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
         snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
-        return -1;
+        goto fail;
     }
-    if (opt->sink && opt->precision != PRECISION_FP32) {
-        snprintf(err, errlen, "co-simulation needs --precision fp32");
-        return -1;
+    if (opt->record_ops && opt->precision != PRECISION_FP32) {
+        snprintf(err, errlen, "recording the PREE operations needs --precision fp32");
+        goto fail;
     }
-    st->threads = T;
+    if (opt->threads > 0) omp_set_num_threads(opt->threads);
+    s->T = opt->record_ops ? 1 : omp_get_max_threads();
+    st->threads = s->T;
     st->scene_spheres = (unsigned long long)scene->num_spheres;
     for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
     st->scene_lights = (unsigned long long)scene->num_lights;
     st->scene_mirror = scene->has_mirror;
     st->scene_glass = scene->has_glass;
-    const int skip = !opt->no_skip && opt->grid == GRID_CELLS;
-    const size_t npix = (size_t)opt->width * (size_t)opt->height;
-    int rc = -1;
-    grid_t grid;
-    memset(&grid, 0, sizeof grid);
-    block_buffers_t *bb = calloc(1, sizeof *bb);
-    res->rgb = calloc(npix * 3, sizeof *res->rgb);
-    tracer_t *tr = NULL;
-    uint32_t *perm = NULL;
-    uint16_t *owner = NULL;
-    update_batch_t batch;
-    memset(&batch, 0, sizeof batch);
-    update_scratch_t *scratch = NULL;
-    if (!bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto done; }
+    s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
+    s->npix = (size_t)opt->width * (size_t)opt->height;
+    s->bb = calloc(1, sizeof *s->bb);
+    res->rgb = calloc(s->npix * 3, sizeof *res->rgb);
+    if (!s->bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto fail; }
     res->width = opt->width;
     res->height = opt->height;
 
     /* Acceleration structure and eye pass. */
     double t = omp_get_wtime();
-    tr = tracer_create(scene, err, errlen);
-    if (!tr) goto done;
+    s->tr = tracer_create(scene, err, errlen);
+    if (!s->tr) goto fail;
     st->sec_bvh = omp_get_wtime() - t;
     t = omp_get_wtime();
     eye_stats_t es;
-    if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, err, errlen)) goto done;
+    if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, err, errlen)) goto fail;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
     st->eye_rays = es.rays;
@@ -252,138 +287,156 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     /* Initial radius, hit-point state, and the grid. */
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
-    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-    if (opt->begin && opt->begin(opt->sink->user, &res->hp, render_emitted(opt->photons))) {
-        snprintf(err, errlen, "the co-simulation could not start");
-        goto done;
-    }
+    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon pass holds the hit points in spatial order (model/hp_order.c). */
-    perm = hp_order_spatial(&res->hp, opt->width, T, st->r0);
-    if (!perm || hp_order_apply(&res->hp, perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-    if (opt->sink) opt->sink->addr = perm;
+    s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
+    if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
      * grid of every hit point and routes what it keeps to the owning part. */
-    const int photon_major = opt->sink || opt->scan == SCAN_PHOTON;
-    owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *owner);
-    if (!owner) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-    for (size_t i = 0; i < res->hp.n; i++) owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, T);
-    if (res->hp.n && grid_build(&grid, opt->grid, &res->hp, st->r0, opt->width, photon_major ? T : 1, !skip, err, errlen))
-        goto done;
-    st->r_safe = grid.r_safe;
-    for (int p = 0; p < grid.num_parts; p++) st->grid_entries += grid.parts[p].num_entries;
+    s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
+    s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
+    if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
+    for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
+    if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
+                                !s->skip, err, errlen))
+        goto fail;
+    st->r_safe = s->grid.r_safe;
+    for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
     st->sec_grid = omp_get_wtime() - t;
 
-    /* Photon pass: trace a block in parallel, then ordered updates per owned part. */
-    const uint64_t emitted_target = render_emitted(opt->photons);
-    uint64_t done_photons = 0;
-    update_stats_t *ust = calloc((size_t)T, sizeof *ust);
-    scratch = calloc((size_t)T, sizeof *scratch);
-    if (!ust || !scratch) { snprintf(err, errlen, "out of memory"); goto done; }
-    const double t_photons = omp_get_wtime();
-    int interrupted = 0, last_decile = 0;
-    while (done_photons < emitted_target && res->hp.n) {
-        uint64_t count = emitted_target - done_photons;
-        if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
-        t = omp_get_wtime();
-        if (trace_block(scene, tr, &grid, skip, opt->photon_offset + done_photons, count, bb)) {
-            snprintf(err, errlen, "out of memory in the photon pass");
-            free(ust);
-            goto done;
-        }
-        st->sec_trace += omp_get_wtime() - t;
-        if (opt->precision == PRECISION_FP32 && fp32_check_hits(bb, err, errlen)) { free(ust); goto done; }
-        t = omp_get_wtime();
-        if (photon_major) {
+    s->emitted_target = render_emitted(opt->photons);
+    s->ust = calloc((size_t)s->T, sizeof *s->ust);
+    s->scratch = calloc((size_t)s->T, sizeof *s->scratch);
+    if (!s->ust || !s->scratch) { snprintf(err, errlen, "out of memory"); goto fail; }
+    s->t_photons = omp_get_wtime();
+    return s;
+fail:
+    session_free(s);
+    return NULL;
+}
+
+/* The update of one traced block: photon-major per owned part, or screened bucket-major and
+ * applied per part. 0 or -1 (out of memory). */
+static int update_block(render_session_t *s)
+{
+    hitpoints_t *h = &s->res->hp;
+    const precision_t prec = s->opt.precision;
+    const int T = s->T;
+    block_buffers_t *bb = s->bb;
+    if (s->photon_major) {
+        update_ops_t *ops = s->opt.record_ops ? &s->ops : NULL;
 #pragma omp parallel num_threads(T)
-            {
-                const int p = omp_get_thread_num();
-                for (unsigned c = 0; c < TRACE_CHUNKS; c++)
-                    update_part(&res->hp, &grid, p, opt->precision, skip, bb->chunk[c].hits, bb->chunk[c].n, &ust[p], opt->sink);
-            }
-        } else {
-            int failed = update_batch_prepare(&batch, bb->chunk, TRACE_CHUNKS, grid.num_buckets);
-            batch.owner = T > 1 ? owner : NULL;
-            for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&scratch[p], T);
-            if (!failed) {
-                /* Screening: any thread, bucket groups; applying: each thread its own part. */
+        {
+            const int p = omp_get_thread_num();
+            for (unsigned c = 0; c < TRACE_CHUNKS; c++)
+                update_part(h, &s->grid, p, prec, s->skip, bb->chunk[c].hits, bb->chunk[c].n, &s->ust[p], ops);
+        }
+        return ops && ops->failed ? -1 : 0;
+    }
+    int failed = update_batch_prepare(&s->batch, bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
+    s->batch.owner = T > 1 ? s->owner : NULL;
+    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], T);
+    if (failed) return -1;
+    /* Screening: any thread, bucket groups; applying: each thread its own part. */
 #pragma omp parallel num_threads(T) reduction(| : failed)
-                {
-                    const int p = omp_get_thread_num();
+    {
+        const int p = omp_get_thread_num();
 #pragma omp for schedule(dynamic, 1)
-                    for (size_t gi = 0; gi < batch.n_groups; gi += SCREEN_GROUPS)
-                        failed |= update_batch_screen(&res->hp, &grid, opt->precision, skip, &batch, gi, gi + SCREEN_GROUPS,
-                                                      &ust[p], &scratch[p]);
+        for (size_t gi = 0; gi < s->batch.n_groups; gi += SCREEN_GROUPS)
+            failed |= update_batch_screen(h, &s->grid, prec, s->skip, &s->batch, gi, gi + SCREEN_GROUPS,
+                                          &s->ust[p], &s->scratch[p]);
 #pragma omp for schedule(static, 1)
-                    for (int q = 0; q < T; q++)
-                        failed |= update_batch_apply(&res->hp, opt->precision, &batch, q, scratch, T, &ust[p]);
-                }
-            }
-            if (failed) {
-                snprintf(err, errlen, "out of memory in the photon pass");
-                free(ust);
-                goto done;
-            }
-        }
-        if (opt->sink && opt->sink->failed) {
-            snprintf(err, errlen, "the co-simulation stopped");
-            free(ust);
-            goto done;
-        }
-        st->sec_update += omp_get_wtime() - t;
-        for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-            st->photon_hits += bb->chunk[c].n;
-            st->photon_segments += bb->chunk[c].segments;
-            bb->chunk[c].segments = 0;
-        }
-        done_photons += count;
-        progress(opt, done_photons, emitted_target, t_photons, &last_decile);
-        if (opt->interrupt && *opt->interrupt && done_photons < emitted_target) {
-            /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
-            interrupted = 1;
-            if (opt->progress) fputc('\n', stderr);
-            break;
-        }
+        for (int q = 0; q < T; q++)
+            failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[p]);
     }
-    for (int p = 0; p < T; p++) {
-        st->upd.candidates += ust[p].candidates;
-        st->upd.skipped_radius += ust[p].skipped_radius;
-        st->upd.normal_passed += ust[p].normal_passed;
-        st->upd.accepted += ust[p].accepted;
+    return failed ? -1 : 0;
+}
+
+static int step_block(render_session_t *s, char *err, size_t errlen)
+{
+    render_stats_t *st = &s->res->stats;
+    if (s->interrupted || s->done_photons >= s->emitted_target || !s->res->hp.n) return 0;
+    uint64_t count = s->emitted_target - s->done_photons;
+    if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
+    update_ops_clear(&s->ops);
+    double t = omp_get_wtime();
+    if (trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + s->done_photons, count, s->bb)) {
+        snprintf(err, errlen, "out of memory in the photon pass");
+        return -1;
     }
-    free(ust);
-    st->photon_hits_no_cell = bb->no_cell;
-    st->photon_hits += bb->no_cell;
-    st->photons_emitted = res->hp.n ? done_photons : emitted_target;
-    if (hp_order_restore(&res->hp, perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+    st->sec_trace += omp_get_wtime() - t;
+    if (s->opt.precision == PRECISION_FP32 && fp32_check_hits(s->bb, err, errlen)) return -1;
+    t = omp_get_wtime();
+    if (update_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
+    st->sec_update += omp_get_wtime() - t;
+    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
+        st->photon_hits += s->bb->chunk[c].n;
+        st->photon_segments += s->bb->chunk[c].segments;
+        s->bb->chunk[c].segments = 0;
+    }
+    s->done_photons += count;
+    progress(&s->opt, s->done_photons, s->emitted_target, s->t_photons, &s->last_decile);
+    if (s->opt.interrupt && *s->opt.interrupt && s->done_photons < s->emitted_target) {
+        /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
+        s->interrupted = 1;
+        if (s->opt.progress) fputc('\n', stderr);
+    }
+    return 1;
+}
+
+int render_step(render_session_t *s, char *err, size_t errlen)
+{
+    int r = step_block(s, err, errlen);
+    if (r < 0) s->failed = 1;
+    return r;
+}
+
+const update_ops_t *render_block_ops(const render_session_t *s) { return &s->ops; }
+
+const uint32_t *render_hp_address(const render_session_t *s) { return s->perm; }
+
+int render_close(render_session_t *s, char *err, size_t errlen)
+{
+    render_result_t *res = s->res;
+    render_stats_t *st = &res->stats;
+    int rc = -1;
+    if (s->failed) goto done;
+    for (int p = 0; p < s->T; p++) {
+        st->upd.candidates += s->ust[p].candidates;
+        st->upd.skipped_radius += s->ust[p].skipped_radius;
+        st->upd.normal_passed += s->ust[p].normal_passed;
+        st->upd.accepted += s->ust[p].accepted;
+    }
+    st->photon_hits_no_cell = s->bb->no_cell;
+    st->photon_hits += s->bb->no_cell;
+    st->photons_emitted = res->hp.n ? s->done_photons : s->emitted_target;
+    if (hp_order_restore(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
 
     /* Radiance evaluation. */
-    t = omp_get_wtime();
-    if (radiance_evaluate_preu(&res->hp, opt->precision, st->photons_emitted, skip, opt->preu ? opt->preu : 4,
-                               res->rgb, npix, &st->radiance_skipped)) {
+    double t = omp_get_wtime();
+    if (radiance_evaluate_preu(&res->hp, s->opt.precision, st->photons_emitted, s->skip, s->opt.preu ? s->opt.preu : 4,
+                               res->rgb, s->npix, &st->radiance_skipped)) {
         snprintf(err, errlen, "out of memory in radiance evaluation");
         goto done;
     }
     st->sec_radiance = omp_get_wtime() - t;
-    if (opt->precision == PRECISION_FP32 && fp32_result_check(res, err, errlen)) goto done;
-    hash_results(res, opt->precision);
-    rc = interrupted ? 1 : 0;
+    if (s->opt.precision == PRECISION_FP32 && fp32_result_check(res, err, errlen)) goto done;
+    hash_results(res, s->opt.precision);
+    rc = s->interrupted ? 1 : 0;
 done:
-    if (bb) {
-        for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&bb->chunk[c]);
-        free(bb);
-    }
-    grid_free(&grid);
-    free(perm);
-    free(owner);
-    update_batch_free(&batch);
-    if (scratch)
-        for (int p = 0; p < T; p++) update_batch_scratch_free(&scratch[p]);
-    free(scratch);
-    if (opt->sink) opt->sink->addr = NULL;
-    tracer_destroy(tr);
-    st->sec_total = omp_get_wtime() - t_start;
+    st->sec_total = omp_get_wtime() - s->t_start;
+    session_free(s);
     st->peak_rss_kb = peak_rss_kb();
     return rc;
+}
+
+int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+               char *err, size_t errlen)
+{
+    render_session_t *s = render_open(scene, opt, res, err, errlen);
+    if (!s) return -1;
+    while (render_step(s, err, errlen) > 0) {}
+    return render_close(s, err, errlen);   /* -1 after a failed step, with its message */
 }
 
 void render_result_free(render_result_t *res)

@@ -33,11 +33,8 @@ typedef struct {
     int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
-    /* Co-simulation: with a sink (fp32 precision only), the update runs on one thread and
-     * every photon hit's PREE operations are handed to sink->fn in photon order; begin
-     * (if set) sees the hit points with their initial PREU state first. */
-    update_sink_t *sink;
-    int (*begin)(void *user, const hitpoints_t *hp, uint64_t photons_to_emit);
+    int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
+                              * update then runs photon-major on one thread */
 } render_options_t;
 
 typedef struct {
@@ -67,6 +64,24 @@ typedef struct {
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen);
+
+/* The same render driven step by step by its caller, who may look at each block's operations:
+ *   render_open       eye pass, initial state, grid; NULL with err on failure (res is then to
+ *                     be freed by render_result_free). res->hp holds the hit points in the
+ *                     photon pass's order from here until render_close.
+ *   render_hp_address photon-pass index -> hit-point address (the order of res->hp before
+ *                     render_open reordered it and after render_close restores it)
+ *   render_step       trace and apply the next photon block: 1 (a block done), 0 (no block
+ *                     left, or interrupted), -1 with err
+ *   render_block_ops  with opt->record_ops: the last block's operations, in photon order
+ *   render_close      radiance, hashes; releases the session; returns as render_run */
+typedef struct render_session render_session_t;
+render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+                              char *err, size_t errlen);
+const uint32_t *render_hp_address(const render_session_t *s);
+int render_step(render_session_t *s, char *err, size_t errlen);
+const update_ops_t *render_block_ops(const render_session_t *s);
+int render_close(render_session_t *s, char *err, size_t errlen);
 void render_result_free(render_result_t *res);
 
 /* The emitted photon count for a request (whole batches of 1000, at least one). */

@@ -2,6 +2,7 @@
  * Candidates are read from the grid's entry copies in sequence; only an accepted update
  * touches the hit point's own state (and rewrites the radius copies). */
 #include <stdlib.h>
+#include <string.h>
 #include "update.h"
 
 /* Radii are prefetched this many candidates ahead within a bucket. */
@@ -32,17 +33,51 @@ static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const
 /* fp32 mode: the host's normal test in double, then the PREU datapath in binary32. The
  * distance test reads the entry's position rounded to binary32 (= the PREU's stored
  * position) and the compact copy of the PREU's r2, as preu_update_inline does. */
+static int grow_to(void **p, size_t *cap, size_t need, size_t sz)
+{
+    if (need <= *cap) return 0;
+    size_t c = *cap ? *cap : 1024;
+    while (c < need) c *= 2;
+    void *q = realloc(*p, c * sz);
+    if (!q) return -1;
+    *p = q;
+    *cap = c;
+    return 0;
+}
+
+void update_ops_clear(update_ops_t *o)
+{
+    o->n_hits = o->n_ops = 0;
+    o->failed = 0;
+}
+
+void update_ops_free(update_ops_t *o)
+{
+    free(o->ph);
+    free(o->end);
+    free(o->hp);
+    memset(o, 0, sizeof *o);
+}
+
+/* Room in ops for one more photon hit with up to count operations: 0, or -1 (memory). */
+static int ops_reserve(update_ops_t *o, size_t count)
+{
+    if (grow_to((void **)&o->hp, &o->cap_ops, o->n_ops + count, sizeof *o->hp)) return -1;
+    if (o->n_hits < o->cap_hits) return 0;
+    size_t cap = o->cap_hits;
+    if (grow_to((void **)&o->end, &cap, o->n_hits + 1, sizeof *o->end)) return -1;
+    preu_photon_t *ph = realloc(o->ph, cap * sizeof *ph);
+    if (!ph) return -1;
+    o->ph = ph;
+    o->cap_hits = cap;
+    return 0;
+}
+
 static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
-                      const grid_cands_t *e, update_stats_t *s, update_sink_t *sink)
+                      const grid_cands_t *e, update_stats_t *s, update_ops_t *ops)
 {
     const size_t count = e->count;
-    size_t streamed = 0;
-    if (sink && sink->cap < count) {
-        uint32_t *b = realloc(sink->buf, count * sizeof *b);
-        if (!b) { sink->failed = 1; return; }
-        sink->buf = b;
-        sink->cap = count;
-    }
+    if (ops && ops_reserve(ops, count)) { ops->failed = 1; return; }
     const double rs2 = g->r_safe * g->r_safe;
     const preu_photon_t ph32 = update_photon_fp32(ph);
     const float fx = fp32_from_bits(ph32.pos[0]), fy = fp32_from_bits(ph32.pos[1]), fz = fp32_from_bits(ph32.pos[2]);
@@ -55,13 +90,16 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const p
         if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
         const uint32_t hp = e->hp[c];
-        if (sink) sink->buf[streamed++] = sink->addr ? sink->addr[hp] : hp;
+        if (ops) ops->hp[ops->n_ops++] = hp;
         float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (!(d2 <= fp32_from_bits(h->r2_f32[hp]))) continue;
         s->accepted += (unsigned long long)update_apply_fp32(h, hp, &ph32, d2);
     }
-    if (sink && !sink->failed && sink->fn(sink->user, ph, &ph32, sink->buf, streamed)) sink->failed = 1;
+    if (ops) {
+        ops->ph[ops->n_hits] = ph32;
+        ops->end[ops->n_hits++] = ops->n_ops;
+    }
 }
 
 /* Look-ups run this many photon hits ahead of the scan, with their first entries and
@@ -88,7 +126,7 @@ static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const
 }
 
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
-                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_sink_t *sink)
+                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_ops_t *ops)
 {
     update_stats_t s = *st;
     lookup_t ring[LOOKAHEAD];
@@ -105,7 +143,7 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
         }
         s.candidates += cur.count;
         if (prec == PRECISION_DOUBLE) { if (cur.count) scan_double(h, g, p, skip_radius, &hits[k], &cur, &s); }
-        else scan_fp32(h, g, p, skip_radius, &hits[k], &cur, &s, sink);
+        else if (!(ops && ops->failed)) scan_fp32(h, g, p, skip_radius, &hits[k], &cur, &s, ops);
     }
     *st = s;
 }

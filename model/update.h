@@ -26,23 +26,25 @@ typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
 /* fp32 mode: the paper's PREU datapath, or the stable one (model/preu_stable.h). */
 typedef enum { DATAPATH_PAPER = 0, DATAPATH_STABLE = 1 } datapath_t;
 
-/* Where the PREE operations go besides the model: for every photon hit, in photon order,
- * the hit points that pass the host's tests (the candidates streamed to the PREUs), given
- * after the model has applied them. Used by the co-simulation host; fn returns 0 or -1 to
- * stop. */
+/* The hit-point update operations as the PREE must see them, in photon order: per photon hit,
+ * its binary32 photon and the hit points (photon-pass indices) that passed the host's tests
+ * (the candidates streamed to the PREUs; the PREU's own distance test decides). */
 typedef struct {
-    int (*fn)(void *user, const photon_hit_t *hit, const preu_photon_t *ph32, const uint32_t *hps, size_t n);
-    void *user;
-    const uint32_t *addr; /* set by the render: hit-point address (pixel-order index) of each
-                           * photon-pass index (model/hp_order.h) */
-    uint32_t *buf;      /* scratch, grown as needed */
-    size_t cap;
-    int failed;
-} update_sink_t;
+    size_t n_hits, cap_hits;
+    preu_photon_t *ph;        /* photon hit i */
+    size_t *end;              /* its operations are hp[update_ops_begin(i) .. end[i]) */
+    size_t n_ops, cap_ops;
+    uint32_t *hp;
+    int failed;               /* out of memory while recording */
+} update_ops_t;
 
-/* Apply hits[0..n) to the hit points of part p; sink may be NULL. */
+void update_ops_clear(update_ops_t *o);
+void update_ops_free(update_ops_t *o);
+static inline size_t update_ops_begin(const update_ops_t *o, size_t i) { return i ? o->end[i - 1] : 0; }
+
+/* Apply hits[0..n) to the hit points of part p; with ops (fp32 only), record the operations. */
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
-                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_sink_t *sink);
+                 const photon_hit_t *hits, size_t n, update_stats_t *st, update_ops_t *ops);
 
 /* The reference program's double update of one hit point by flux F. */
 static inline void update_accept_double(hitpoints_t *h, size_t e, vec3 F)

@@ -22,7 +22,6 @@ typedef struct {
     cosim_drv_t *drv;
     double sec_rtl, cpu_rtl;     /* wall and CPU time spent clocking the RTL in the update phase */
     unsigned long long photons_sent, photons_empty;
-    int failed;
 } cosim_ctx_t;
 
 static double now(void)
@@ -66,30 +65,48 @@ static void model_words(const hitpoints_t *hp, size_t i, preu_hpw_t *w)
     else preu_hpw_from_paper(w, &hp->fp32[i]);
 }
 
-static int on_begin(void *user, const hitpoints_t *hp, uint64_t photons)
+/* The hit points with their initial state into the RTL's memory, each at its address (the
+ * session holds them in photon-pass order). 0, or -1 with a message. */
+static int load_hit_points(cosim_ctx_t *c, const hitpoints_t *hp, const uint32_t *addr, char *err, size_t errlen)
 {
-    cosim_ctx_t *c = user;
-    (void)photons;
-    if (hp->n > (1u << COSIM_HPAW)) { c->failed = 1; return -1; }
+    if (hp->n > (1u << COSIM_HPAW)) {
+        snprintf(err, errlen, "%zu hit points, more than the RTL's hit-point memory (%u)", hp->n, 1u << COSIM_HPAW);
+        return -1;
+    }
     preu_hpw_t *w = malloc((hp->n ? hp->n : 1) * sizeof *w);
-    if (!w) { c->failed = 1; return -1; }
-    for (size_t i = 0; i < hp->n; i++) model_words(hp, i, &w[i]);
-    cosim_drv_load_hp(c->drv, w, hp->pixel, hp->n);
+    int32_t *px = malloc((hp->n ? hp->n : 1) * sizeof *px);
+    if (!w || !px) { free(w); free(px); snprintf(err, errlen, "out of memory"); return -1; }
+    for (size_t j = 0; j < hp->n; j++) {
+        model_words(hp, j, &w[addr[j]]);
+        px[addr[j]] = hp->pixel[j];
+    }
+    cosim_drv_load_hp(c->drv, w, px, hp->n);
     free(w);
+    free(px);
     return 0;
 }
 
-static int on_hit(void *user, const photon_hit_t *hit, const preu_photon_t *ph32, const uint32_t *hps, size_t n)
+/* A block's operations into the RTL, photon by photon, hit points by address. 0 or -1. */
+static int stream_block(cosim_ctx_t *c, const update_ops_t *ops, const uint32_t *addr, uint32_t **buf, size_t *cap)
 {
-    cosim_ctx_t *c = user;
-    (void)hit;
-    if (n == 0) { c->photons_empty++; return 0; }
-    double t0 = now(), c0 = cpu_now();
-    int rc = cosim_drv_photon(c->drv, ph32, hps, n);
-    c->sec_rtl += now() - t0;
-    c->cpu_rtl += cpu_now() - c0;
-    c->photons_sent++;
-    return rc;
+    for (size_t i = 0; i < ops->n_hits; i++) {
+        const size_t b = update_ops_begin(ops, i), n = ops->end[i] - b;
+        if (n == 0) { c->photons_empty++; continue; }
+        if (n > *cap) {
+            uint32_t *q = realloc(*buf, n * sizeof *q);
+            if (!q) return -1;
+            *buf = q;
+            *cap = n;
+        }
+        for (size_t k = 0; k < n; k++) (*buf)[k] = addr[ops->hp[b + k]];
+        double t0 = now(), c0 = cpu_now();
+        int rc = cosim_drv_photon(c->drv, &ops->ph[i], *buf, n);
+        c->sec_rtl += now() - t0;
+        c->cpu_rtl += cpu_now() - c0;
+        c->photons_sent++;
+        if (rc) return -1;
+    }
+    return 0;
 }
 
 static int hp_words_differ(const preu_hpw_t *a, uint32_t pa, const preu_hpw_t *b, uint32_t pb, int datapath)
@@ -174,21 +191,30 @@ int pree_cmd_cosim(int argc, char **argv)
                               .schedule = schedule, .window = window, .gap = gap, .seed = 1};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
-    update_sink_t sink = {.fn = on_hit, .user = &ctx};
-    opt.sink = &sink;
-    opt.begin = on_begin;
+    opt.record_ops = 1;
 
     int status = 1;
     render_result_t res = {0}, ref = {0};
-    uint32_t *Lr = NULL, *Lm = NULL;
+    uint32_t *Lr = NULL, *Lm = NULL, *abuf = NULL;
+    size_t acap = 0;
     double *rgb = NULL;
     double t_start = now();
-    int rc = ctx.drv ? render_run(&scene, &opt, &res, err, sizeof err) : -1;
+    /* The engine's photon blocks and the RTL, driven from this loop: each block's operations
+     * (the candidates that pass the host's tests) go to the RTL after the model applied them. */
+    render_session_t *rs = ctx.drv ? render_open(&scene, &opt, &res, err, sizeof err) : NULL;
+    if (!ctx.drv) snprintf(err, sizeof err, "out of memory");
+    int rc = rs ? load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err) : -1;
+    int streamed = 0;
+    while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
+        if (stream_block(&ctx, render_block_ops(rs), render_hp_address(rs), &abuf, &acap)) { streamed = -1; break; }
+    }
+    if (rs) {
+        int rc2 = render_close(rs, err, sizeof err);
+        if (rc == 0) rc = rc2;
+    }
     double sec_engine = now() - t_start;
-    if (rc != 0) {
-        fprintf(stderr, "pree cosim: %s: %s\n", scene_path,
-                ctx.failed ? "more hit points than the RTL's hit-point memory" :
-                sink.failed ? cosim_drv_error(ctx.drv) : err);
+    if (rc != 0 || streamed) {
+        fprintf(stderr, "pree cosim: %s: %s\n", scene_path, streamed ? cosim_drv_error(ctx.drv) : err);
         goto out;
     }
     double t0 = now(), c0 = cpu_now();
@@ -336,7 +362,7 @@ out:
     free(rgb);
     render_result_free(&res);
     if (reference) render_result_free(&ref);
-    free(sink.buf);
+    free(abuf);
     cosim_drv_free(ctx.drv);
     cosim_rtl_free(rtl);
     scene_free(&scene);
