@@ -51,10 +51,10 @@ $(DEPS_STAMP): scripts/install-deps.sh
 include mk/model.mk
 include $(sort $(filter-out mk/model.mk,$(wildcard mk/*.mk)))
 
-# The pree program: the engine, plus whatever fragments add (PREE_EXTRA_OBJS: the
-# co-simulation host and the Verilated RTL; PREE_EXTRA_LIBS: their libraries).
-$(BUILD)/pree: $(BUILD)/model/main.o $(LIBPREE) $(PREE_EXTRA_OBJS)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) $(PREE_EXTRA_LIBS)
+# The pree program: the command line (cli/) over the engine (libpree.a); no Verilator. Its
+# `cosim` command runs the co-simulation programs of mk/cosim.mk.
+$(BUILD)/pree: $(CLI_OBJ) $(LIBPREE)
+	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
 
 build: $(DEPS_STAMP) $(BUILD)/pree
 
@@ -64,7 +64,7 @@ PARALLEL := -j$(JOBS)
 
 run: $(DEPS_STAMP)
 	@$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree
-	@scripts/make-run.sh $(BUILD)/pree $(OUT)
+	@scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
 
 test-prereqs: $(DEPS_STAMP) $(TEST_PREREQS)
 

@@ -1,4 +1,4 @@
-# The PREE top (rtl/pree_top.v) and its co-simulation with the C engine (tb/cosim/):
+# The PREE top (rtl/pree_top.v), its benches (tb/cosim/) and the co-simulation host (host/):
 # docs/pree_top.md.
 #
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
@@ -12,9 +12,11 @@
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
 #
-# The Verilated models are linked into build/pree for `pree cosim`: the paper datapath for
-# NumPreu 4, 8, 16 (COSIM_PREUS) and the stable datapath for COSIM_STABLE_PREUS (default 4;
-# `make COSIM_STABLE_PREUS="4 8 16"` builds all three).
+# `pree cosim` runs build/pree-cosim-<d><n> (d: p paper, s stable; n PREUs), one program per
+# Verilated model, each built only when asked (make build/pree-cosim-s8); build/pree itself
+# needs no Verilator. The regression uses the paper datapath with NumPreu 4, 8, 16
+# (COSIM_PREUS) and the stable one with COSIM_STABLE_PREUS (default 4); the top bench links
+# those models.
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
@@ -45,15 +47,14 @@ COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -I$(VERILATOR_ROOT_DIR)/include -I$(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
-COSIM_OBJS   := $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o $(COSIM_DIR)/cosim_main.o \
-                $(COSIM_DIR)/cosim_sched.o $(COSIM_DIR)/cosim_shadow.o
+HOST_DIR     := $(BUILD)/host
+HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
-COSIM_CFLAGS := $(CFLAGS) -Itb/cosim
+COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
+COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_d,$(m))$(call cosim_n,$(m)))
+cosim_have   = -DCOSIM_HAVE_$(shell echo $(1) | tr ps PS)
 
-PREE_EXTRA_OBJS += $(COSIM_OBJS)
-PREE_EXTRA_LIBS += $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -lz -pthread
-
-TEST_PREREQS  += $(COSIM_BENCH)
+TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS)
 SIM_TARGETS   += sim-top
 LINT_TARGETS  += lint-top
 SYNTH_TARGETS += synth-top
@@ -77,24 +78,39 @@ $(COSIM_DIR)/vlrt/%.o: $(VERILATOR_ROOT_DIR)/include/%.cpp | $(DEPS_STAMP)
 $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 	rm -f $@ && ar rcs $@ $^
 
-$(COSIM_DIR)/cosim_rtl.o: tb/cosim/cosim_rtl.cpp tb/cosim/cosim_rtl.h $(COSIM_LIBS) $(COSIM_VLIB)
-	$(CXX) $(COSIM_VLRT_FLAGS) -g -Wall -Imodel -Itb/cosim \
-	  $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p))) \
-	  $(foreach m,$(COSIM_MODELS),-I$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) -DCOSIM_HAVE_$(shell echo $(call cosim_d,$(m)) | tr ps PS)$(call cosim_n,$(m))) \
+# The C interface to the models: one object per model for its program, one with every model of
+# the regression for the top bench.
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP -Imodel -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
+define COSIM_PROG_RULE
+$(HOST_DIR)/cosim_rtl_$(2)$(1).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a
+	@mkdir -p $$(@D)
+	$(CXX) $(COSIM_RTL_FLAGS) -I$(call COSIM_MDIR,$(1),$(2)) $(call cosim_have,$(2))$(1) -c $$< -o $$@
+$(BUILD)/pree-cosim-$(2)$(1): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(2)$(1).o \
+                          $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a $(COSIM_VLIB)
+	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
+endef
+$(foreach p,4 8 16,$(foreach d,p s,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
+$(foreach p,4 8 16,$(foreach d,p s,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
+
+$(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_LIBS)
+	@mkdir -p $(@D)
+	$(CXX) $(COSIM_RTL_FLAGS) \
+	  $(foreach m,$(COSIM_MODELS),-I$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) $(call cosim_have,$(call cosim_d,$(m)))$(call cosim_n,$(m))) \
 	  -c $< -o $@
-$(COSIM_DIR)/%.o: tb/cosim/%.c tb/cosim/cosim_drv.h tb/cosim/cosim_rtl.h | $(DEPS_STAMP)
+$(HOST_DIR)/%.o: host/%.c | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(COSIM_CFLAGS) -c $< -o $@
+$(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
-$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/cosim_rtl.o $(COSIM_DIR)/cosim_drv.o \
-                $(COSIM_DIR)/cosim_sched.o $(COSIM_DIR)/cosim_shadow.o $(LIBPREE)
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE)
 	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
-# The host's photon scheduler (cosim_sched.h, cosim_shadow.h; cosim_drv.h includes the first).
-$(filter-out $(COSIM_DIR)/cosim_rtl.o,$(COSIM_OBJS)) $(COSIM_DIR)/top_bench.o: tb/cosim/cosim_sched.h tb/cosim/cosim_shadow.h
+-include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 
 # Simulation: the bench's traces, then the reduced co-simulation.
 COSIM_SMALL := scenes/cornell3 --width 64 --height 48 --photons 20000 --quiet
-sim-top: $(COSIM_BENCH) $(BUILD)/pree
+sim-top: $(COSIM_BENCH) $(BUILD)/pree $(COSIM_PROGS)
 	@set -e; for p in $(COSIM_PREUS); do \
 	  for s in random one dense mixed abank; do $(COSIM_BENCH) --preu $$p --scenario $$s --photons 600 | tail -1; done; \
 	  $(COSIM_BENCH) --preu $$p --scenario random --hp 150 --photons 400 --gap 0.3 | tail -1; \
@@ -113,7 +129,7 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree
 # stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS).
 SIM_FULL_PREUS ?= 4 8
 SIM_FULL_STABLE_PREUS ?= 4
-sim-full: $(BUILD)/pree
+sim-full: $(BUILD)/pree $(foreach p,$(SIM_FULL_PREUS),$(BUILD)/pree-cosim-p$(p)) $(foreach p,$(SIM_FULL_STABLE_PREUS),$(BUILD)/pree-cosim-s$(p))
 	@set -e; for m in $(SIM_FULL_PREUS:%=%:paper) $(SIM_FULL_STABLE_PREUS:%=%:stable); do \
 	  p=$${m%%:*}; d=$${m##*:}; tag=$${d:0:1}$$p; \
 	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json"; \
@@ -122,7 +138,7 @@ sim-full: $(BUILD)/pree
 
 # Waveforms: TEST=cosim or a bench scenario; opens with tb/cosim/pree_top.gtkw.
 TEST ?= mixed
-wave: $(COSIM_BENCH) $(BUILD)/pree
+wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 	@mkdir -p $(COSIM_DIR)
 	@if [ "$(TEST)" = cosim ]; then \
 	  $(BUILD)/pree cosim scenes/cornell3 --width 32 --height 24 --photons 2000 --quiet --no-reference \

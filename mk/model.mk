@@ -1,8 +1,9 @@
-# The C reference engine: libpree.a from model/*.c and model/*.cpp, the `pree` program,
-# and the cmocka unit tests in tests/unit (one binary per test_*.c).
+# The C reference engine: libpree.a from model/*.c and model/*.cpp, the `pree` program's
+# command line (cli/*.c), and the cmocka unit tests in tests/unit (one binary per test_*.c).
 
-MODEL_C   := $(filter-out model/main.c,$(wildcard model/*.c))
+MODEL_C   := $(wildcard model/*.c)
 MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o)
+CLI_OBJ   := $(patsubst %.c,$(BUILD)/%.o,$(wildcard cli/*.c))
 
 # OpenImageIO (model/image_io.cpp) is a shared module that model/image.c loads on the first PNG
 # or EXR read/write: loading libOpenImageIO costs ~0.3 s of CPU per process, which runs that only
@@ -39,4 +40,4 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
 	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
 
--include $(wildcard $(BUILD)/model/*.d $(BUILD)/tests/*.d)
+-include $(wildcard $(BUILD)/model/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # make run: render the default scene (cornell3, 320x240, 768,000 photons) in both precisions,
-# compare them, and, when the co-simulation is built, render it through the Verilated RTL.
-# Usage: make-run.sh PREE OUTDIR
+# compare them, then build the 4-PREU co-simulation (only that Verilated model) with BUILD_COSIM
+# and render through the Verilated RTL.
+# Usage: make-run.sh PREE OUTDIR [BUILD_COSIM]   (BUILD_COSIM: a command; none: skip the RTL)
 set -euo pipefail
-pree=$1; out=$2
+pree=$1; out=$2; build_cosim=${3:-}
 mkdir -p "$out"
 scene=scenes/cornell3
 size=(${PREE_RUN_SIZE:-})   # e.g. PREE_RUN_SIZE="--width 64 --height 48 --photons 20000" for a quick look
@@ -16,6 +17,10 @@ echo "== software render, fp32 (the PREE datapath's arithmetic, the RTL's golden
 echo "== fp32 against double"
 "$pree" compare "$out/cornell3-double.exr" "$out/cornell3-fp32.exr" --diff "$out/cornell3-fp32-vs-double-diff.png" \
     | tee "$out/cornell3-fp32-vs-double.txt"
+if [ -n "$build_cosim" ]; then
+  echo "== building the 4-PREU co-simulation (one Verilated model; a few minutes the first time)"
+  $build_cosim
+fi
 if "$pree" cosim --help >/dev/null 2>&1; then
   echo "== RTL co-simulation: the Verilated PREE (4 PREUs) does every hit-point update and the radiance pass"
   echo "   (a few minutes: about 10.5 million operations through the RTL)"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # level: quick
-# The co-simulation host's photon scheduler (tb/cosim/cosim_sched.c): cornell3 64x48 / 20k
+# The co-simulation host's photon scheduler (host/cosim_sched.c): cornell3 64x48 / 20k
 # photons through the Verilated pree_top with 4 PREUs, scheduled (the default) and in photon order
 # (--no-schedule). Both must match the fp32 model word for word (hit points and image). The
 # scheduled run must move photons, reach at least MIN_UTIL PREU utilization in update mode

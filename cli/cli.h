@@ -1,4 +1,4 @@
-/* cli.h: the subcommands of the `pree` program, one function each, dispatched by main.c.
+/* cli.h: the subcommands of the `pree` program, one function each, dispatched by cli/main.c.
  * Each takes the arguments after its own name (argv[0] is the subcommand name) and returns
  * the process exit status: 0 on success, 1 on a runtime failure, 2 on a usage error.
  * Errors are printed as one line on stderr: "pree <cmd>: <what>: <why>". */
@@ -7,6 +7,7 @@
 
 int pree_cmd_render(int argc, char **argv);
 int pree_cmd_compare(int argc, char **argv);
+/* host/cosim_main.c: the co-simulation program's own entry (pree-cosim-*). */
 int pree_cmd_cosim(int argc, char **argv);
 
 #endif

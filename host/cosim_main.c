@@ -1,6 +1,7 @@
-/* cosim_main.c: `pree cosim SCENE [options]`: the renderer in fp32 mode as the host of the
- * Verilated PREE (rtl/pree_top.v). Every photon hit's operations are streamed into the RTL in
- * photon order; after the last photon the RTL's hit-point memory is compared word for word with
+/* cosim_main.c: `pree cosim SCENE [options]` (the program build/pree-cosim-<config>, which
+ * `pree cosim` runs): the renderer in fp32 mode as the host of the Verilated PREE
+ * (rtl/pree_top.v), the engine and the RTL driven from one loop. Every photon hit's operations
+ * are streamed into the RTL in photon order; after the last photon the RTL's hit-point memory is compared word for word with
  * the fp32 model, the radiance pass runs in RTL, and its pixel memory (the image) is compared
  * with the model's radiance in the same order. A double-precision render of the same scene
  * gives SSIM and SNR. Exit status: 0 when both comparisons show 0 differing words, 1 otherwise
@@ -368,3 +369,5 @@ out:
     scene_free(&scene);
     return status;
 }
+
+int main(int argc, char **argv) { return pree_cmd_cosim(argc, argv); }

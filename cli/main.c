@@ -1,0 +1,67 @@
+/* main.c: the `pree` program: git-style subcommands over the PREE reference engine.
+ *
+ * `pree cosim` is a program of its own (host/, built with the Verilated RTL only when asked):
+ * one per RTL configuration, build/pree-cosim-p4 .. -p16 (paper datapath) and -s4 .. -s16
+ * (stable). `pree cosim ...` runs the one its --preu and --datapath name, from the directory
+ * this program lives in, with the same arguments. */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "cli.h"
+
+typedef struct { const char *name; int (*run)(int, char **); const char *summary; } command_t;
+
+static int run_cosim(int argc, char **argv);
+
+static const command_t commands[] = {
+    {"render",  pree_cmd_render,  "render a scene with progressive photon mapping"},
+    {"compare", pree_cmd_compare, "compare two images: SSIM, SNR, PSNR, RMSE, max difference"},
+    {"cosim",   run_cosim,        "render with the Verilated PREE RTL doing the radiance estimation"},
+};
+
+/* The co-simulation program for the configuration the arguments ask for, next to this one.
+ * The last --preu and --datapath win, as in the program's own parsing; a bad value is left
+ * for that program to report. */
+static int run_cosim(int argc, char **argv)
+{
+    const char *preu = "4", *dp = "paper";
+    for (int i = 1; i + 1 < argc; i++) {
+        if (!strcmp(argv[i], "--preu")) preu = argv[i + 1];
+        else if (!strcmp(argv[i], "--datapath")) dp = argv[i + 1];
+    }
+    if (strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16")) preu = "4";
+    const char d = strcmp(dp, "stable") ? 'p' : 's';
+    char self[PATH_MAX], path[PATH_MAX + 32];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n < 0) { fprintf(stderr, "pree cosim: cannot find this program's directory: %s\n", strerror(errno)); return 1; }
+    self[n] = '\0';
+    char *slash = strrchr(self, '/');
+    if (slash) *slash = '\0';
+    snprintf(path, sizeof path, "%s/pree-cosim-%c%s", self, d, preu);
+    execv(path, argv);
+    fprintf(stderr, "pree cosim: %s: %s (build it with 'make %s')\n", path, strerror(errno),
+            strstr(path, "build/") ? strstr(path, "build/") : path);
+    return 1;
+}
+
+static void usage(FILE *f)
+{
+    fprintf(f, "usage: pree <command> [options]\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
+    fprintf(f, "\n'pree <command> --help' describes a command's options.\n");
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2) { usage(stderr); return 2; }
+    if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { usage(stdout); return 0; }
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].run(argc - 1, argv + 1);
+    fprintf(stderr, "pree: unknown command '%s' (try 'pree --help')\n", argv[1]);
+    return 2;
+}
