@@ -39,6 +39,7 @@ struct cosim_drv {
     uint32_t *cand;                    /* reorder scratch */
     cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
     int started;                       /* a photon has been offered */
+    int hung;                          /* a wait ran out (stuck): every later call fails */
 };
 
 static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p);
@@ -165,6 +166,18 @@ static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
     }
 }
 
+/* A wait that has lasted WAIT_LIMIT cycles: the RTL is not making progress. Sets the error
+ * (and d->hung, which every later call reports) and returns 1. */
+#define WAIT_LIMIT 10000000u
+static int stuck(cosim_drv_t *d, uint64_t *guard)
+{
+    if (d->hung) return 1;
+    if (++*guard < WAIT_LIMIT) return 0;
+    snprintf(d->err, sizeof d->err, "the PREE made no progress for %u cycles", WAIT_LIMIT);
+    d->hung = 1;
+    return 1;
+}
+
 /* Place one photon (candidates in d->cand, in stream order) in the index table, queue its
  * entries and itself, and clock the model while the queues are long. Returns its p. */
 static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
@@ -174,11 +187,13 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
     uint64_t target = (d->prev_p + (uint64_t)np * MAX_CAND - n) % np;
     uint64_t p = d->alloc_end + (target + np - d->alloc_end % np) % np;
     /* Wait for index-table space: everything from the oldest unretired photon on is in use. */
+    uint64_t guard = 0;
     for (;;) {
         uint64_t low = d->aq_head != d->aq_tail ? d->aq[d->aq_head & (AQ_CAP - 1)].start : p;
         if (p + n - low <= IDX_DEPTH && d->aq_tail - d->aq_head < AQ_CAP &&
             d->pq_tail - d->pq_head < PQ_CAP)
             break;
+        if (stuck(d, &guard)) return p;
         pump(d);
     }
     d->aq[d->aq_tail++ & (AQ_CAP - 1)] = (alloc_entry_t){p, p + n};
@@ -197,7 +212,8 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
     pe->widx_end = d->iq_tail;
     d->ops += n;
     d->in->cnt_en = 1;
-    while (d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) pump(d);
+    guard = 0;
+    while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) && !stuck(d, &guard)) pump(d);
     return p;
 }
 
@@ -207,7 +223,7 @@ static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32
     cosim_drv_t *d = user;
     memcpy(d->cand, hps, n * sizeof *hps);
     *p = (uint32_t)(send(d, ph, n) & (IDX_DEPTH - 1));
-    return 0;
+    return d->hung ? -1 : 0;
 }
 
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
@@ -217,14 +233,15 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
         snprintf(d->err, sizeof d->err, "a photon with %zu candidates (at most %u)", n, MAX_CAND);
         return -1;
     }
+    if (d->hung) return -1;
     if (d->sched) {
-        if (cosim_sched_add(d->sched, ph, hps, (uint32_t)n) == 0) return 0;
-        snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
+        if (cosim_sched_add(d->sched, ph, hps, (uint32_t)n) == 0) return d->hung ? -1 : 0;
+        if (!d->hung) snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
         return -1;
     }
     reorder(d, hps, n);
     send(d, ph, n);
-    return 0;
+    return d->hung ? -1 : 0;
 }
 
 int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
@@ -236,8 +253,9 @@ int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
 
 int cosim_drv_drain(cosim_drv_t *d)
 {
+    if (d->hung) return -1;
     if (d->sched && cosim_sched_flush(d->sched)) {
-        snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
+        if (!d->hung) snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
         return -1;
     }
     uint64_t guard = 0;
@@ -280,7 +298,7 @@ void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pix
     cosim_rtl_hp_rdata(d->rtl, hp, pixel);
 }
 
-void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L)
+int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L)
 {
     cosim_in_t *in = d->in;
     /* Clear the pixel sums to +0. */
@@ -300,7 +318,11 @@ void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix
     in->cnt_en = 1;
     cosim_rtl_tick(d->rtl);
     in->rad_start = 0;
-    while (!cosim_rtl_idle(d->rtl)) cosim_rtl_tick(d->rtl);
+    uint64_t guard = 0;
+    while (!cosim_rtl_idle(d->rtl)) {
+        if (stuck(d, &guard)) return -1;
+        cosim_rtl_tick(d->rtl);
+    }
     in->cnt_en = 0;
     /* Read the pixels back. */
     for (size_t p = 0; p < npix; p++) {
@@ -312,4 +334,5 @@ void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix
     in->px_re = 0;
     in->mode = 0;
     cosim_rtl_tick(d->rtl);
+    return 0;
 }

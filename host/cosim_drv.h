@@ -14,7 +14,10 @@
  *   cosim_drv_drain(d)            send everything queued and wait until the PREE is idle
  *   cosim_drv_read_hp(d, i, hp, pixel)  read hit point i back (one model cycle)
  *   cosim_drv_radiance(d, n_hit, ne, npix, L)  clear npix pixels, run the radiance pass over
- *                                 [0, n_hit) with N_emitted = ne, read the pixels into L
+ *                                 [0, n_hit) with N_emitted = ne, read the pixels into L;
+ *                                 0, or -1 with a message when the PREE does not finish
+ * Every wait for the RTL is bounded (10 million cycles without the awaited progress): the call
+ * then fails with a message, and so does every later call.
  *   cosim_drv_counters(d, cnt)    pree_top's counters now
  *   cosim_drv_sched_stats(d, st)  the scheduler's figures (-1 when not scheduling)
  *
@@ -54,7 +57,7 @@ void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixe
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n);
 int cosim_drv_drain(cosim_drv_t *d);
 void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pixel);
-void cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
+int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);
 uint64_t cosim_drv_ops_sent(const cosim_drv_t *d);
 int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st);

@@ -18,6 +18,7 @@
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
+#include "stats_json.h"
 
 typedef struct {
     cosim_drv_t *drv;
@@ -249,7 +250,10 @@ int pree_cmd_cosim(int argc, char **argv)
     if (!Lr || !Lm || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
     const uint32_t ne = preu_n_emitted(res.stats.photons_emitted);
     t0 = now();
-    cosim_drv_radiance(ctx.drv, (uint32_t)res.hp.n, ne, npix, Lr);
+    if (cosim_drv_radiance(ctx.drv, (uint32_t)res.hp.n, ne, npix, Lr)) {
+        fprintf(stderr, "pree cosim: radiance pass: %s\n", cosim_drv_error(ctx.drv));
+        goto out;
+    }
     double sec_rad_rtl = now() - t0;
     cosim_drv_counters(ctx.drv, cnt_all);
     unsigned long long skipped;
@@ -309,8 +313,10 @@ int pree_cmd_cosim(int argc, char **argv)
     if (stats_path) {
         FILE *f = fopen(stats_path, "w");
         if (!f) { fprintf(stderr, "pree cosim: %s: cannot write\n", stats_path); goto out; }
-        fprintf(f, "{\n  \"scene\": \"%s\",\n  \"width\": %d,\n  \"height\": %d,\n  \"photons_emitted\": %llu,\n",
-                scene_path, opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
+        fprintf(f, "{\n  \"scene\": ");
+        stats_json_string(f, scene_path);
+        fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n  \"photons_emitted\": %llu,\n",
+                opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
         fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
                 (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
         fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",

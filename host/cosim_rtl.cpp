@@ -103,7 +103,6 @@ struct cosim_rtl {
     virtual ~cosim_rtl() {}
     cosim_in_t in;
     uint64_t cycles = 0;
-    virtual void eval() = 0;
     virtual void tick() = 0;
     virtual int ph_ready() = 0;
     virtual int idle() = 0;
@@ -202,11 +201,6 @@ struct Rtl : cosim_rtl {
         if (in.px_we)
             for (int c = 0; c < 3; c++) put32(t.px_wdata_i, 32 * c, in.px_wdata[c]);
     }
-    void eval() override
-    {
-        apply();
-        top->eval();
-    }
     // One cycle. Untraced: one evaluation with the new inputs and clk_i rising (the clock-low
     // state is marked in the model, see mark_clock_low): Verilator settles the logic fed by the
     // inputs before it runs the edge, exactly as with a separate clock-low evaluation.
@@ -300,7 +294,6 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, s
 
 void cosim_rtl_free(cosim_rtl_t *r) { delete r; }
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
-void cosim_rtl_eval(cosim_rtl_t *r) { r->eval(); }
 void cosim_rtl_tick(cosim_rtl_t *r) { r->tick(); }
 int cosim_rtl_ph_ready(cosim_rtl_t *r) { return r->ph_ready(); }
 int cosim_rtl_idle(cosim_rtl_t *r) { return r->idle(); }
@@ -308,7 +301,6 @@ uint32_t cosim_rtl_photons_done(cosim_rtl_t *r) { return r->photons_done(); }
 void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp_rdata(hp, pixel); }
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
-uint64_t cosim_rtl_cycles(cosim_rtl_t *r) { return r->cycles; }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 
 }  // extern "C"

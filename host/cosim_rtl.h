@@ -8,7 +8,6 @@
  *                                  is not built or the trace cannot be opened.
  *   cosim_rtl_free(r)              close the trace, release the model
  *   cosim_rtl_in(r)                the input set applied at the next eval/tick (write it)
- *   cosim_rtl_eval(r)              apply the inputs and settle the combinational logic
  *   cosim_rtl_tick(r)              apply the inputs, one rising clock edge, settle (traced)
  *   cosim_rtl_ph_ready/idle/photons_done, cosim_rtl_hp_rdata, cosim_rtl_px_rdata,
  *   cosim_rtl_counters             read outputs (after eval or tick)
@@ -57,7 +56,6 @@ typedef struct cosim_rtl cosim_rtl_t;
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen);
 void cosim_rtl_free(cosim_rtl_t *r);
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r);
-void cosim_rtl_eval(cosim_rtl_t *r);
 void cosim_rtl_tick(cosim_rtl_t *r);
 int cosim_rtl_ph_ready(cosim_rtl_t *r);
 int cosim_rtl_idle(cosim_rtl_t *r);
@@ -65,7 +63,6 @@ uint32_t cosim_rtl_photons_done(cosim_rtl_t *r);
 void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel);
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
-uint64_t cosim_rtl_cycles(cosim_rtl_t *r);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 
 #ifdef __cplusplus

@@ -29,12 +29,6 @@ int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, i
     return 0;
 }
 
-int radiance_evaluate(const hitpoints_t *h, precision_t prec, uint64_t emitted, int skip_zero,
-                       double *rgb, size_t num_pixels, unsigned long long *skipped)
-{
-    return radiance_evaluate_preu(h, prec, emitted, skip_zero, RADIANCE_DEFAULT_PREU, rgb, num_pixels, skipped);
-}
-
 int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emitted, int skip_zero,
                            int preu, double *rgb, size_t num_pixels, unsigned long long *skipped)
 {

@@ -13,15 +13,11 @@
 #include "hitpoints.h"
 #include "update.h"
 
-#define RADIANCE_DEFAULT_PREU 4   /* PREUs assumed by radiance_evaluate() */
 #define RADIANCE_PREU_STAGES 12   /* radiance pipeline stages of a PREU (ADISO-REC's Npip_stage) */
 
 /* Returns 0, or -1 when out of memory or preu is not a power of two in 1..64. */
 int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emitted, int skip_zero,
                            int preu, double *rgb, size_t num_pixels, unsigned long long *skipped);
-/* The same with RADIANCE_DEFAULT_PREU PREUs. */
-int radiance_evaluate(const hitpoints_t *h, precision_t prec, uint64_t emitted, int skip_zero,
-                       double *rgb, size_t num_pixels, unsigned long long *skipped);
 /* fp32 only: add every hit point's contribution to the binary32 pixel sums L (3 words per pixel,
  * zeroed by the caller), in the issue order for `preu` PREUs. Returns 0 or -1 as above. */
 int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu,

@@ -13,6 +13,7 @@
 #include "mesh_light.h"
 
 #define MAX_TOKENS 64
+#define SCENE_LINE_MAX (1 << 20)   /* bytes in one line, comments included */
 
 typedef struct {
     const char *file;
@@ -320,14 +321,17 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
     memset(&s, 0, sizeof s);
     snprintf(s.path, sizeof s.path, "%s", path);
     s.max_depth = 20;
-    char line[4096];
+    char *line = NULL;
+    size_t cap = 0;
+    ssize_t got;
     char *tok[MAX_TOKENS];
     int rc = 0;
-    while (fgets(line, sizeof line, f)) {
+    while ((got = getline(&line, &cap, f)) >= 0) {
         pc.line++;
-        size_t len = strlen(line);
-        if (len == sizeof line - 1 && line[len - 1] != '\n') { rc = fail(&pc, "line too long"); break; }
-        if (memchr(line, '\0', len) != NULL && strlen(line) != len) { rc = fail(&pc, "binary data"); break; }
+        /* getline gives the true length, so a NUL byte inside the line is seen (strlen would
+         * stop at it and drop the rest of the line). */
+        if (got > SCENE_LINE_MAX) { rc = fail(&pc, "line longer than %d bytes", SCENE_LINE_MAX); break; }
+        if (strlen(line) != (size_t)got) { rc = fail(&pc, "binary data (a NUL byte)"); break; }
         int ntok = tokenize(line, tok);
         if (ntok < 0) { rc = fail(&pc, "too many values on one line"); break; }
         if (ntok == 0) continue;
@@ -338,6 +342,7 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
         if (directives[d].fn(&pc, &s, tok, ntok) < 0) { rc = -1; break; }
     }
     if (rc == 0 && ferror(f)) { pc.line = 0; rc = fail(&pc, "read error"); }
+    free(line);
     fclose(f);
     if (rc == 0) { pc.line++; rc = scene_validate(&pc, &s); }
     if (rc) { scene_free(&s); return -1; }

@@ -10,7 +10,7 @@ static const char *grid_name(grid_kind_t g)
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
 }
 
-static void json_string(FILE *f, const char *s)
+void stats_json_string(FILE *f, const char *s)
 {
     fputc('"', f);
     for (; *s; s++) {
@@ -25,7 +25,7 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
                       const render_stats_t *st, int interrupted)
 {
     fprintf(f, "{\n  \"scene\": ");
-    json_string(f, scene);
+    stats_json_string(f, scene);
     fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n", opt->width, opt->height);
     fprintf(f, "  \"precision\": \"%s\",\n  \"grid\": \"%s\",\n  \"skips\": %s,\n  \"threads\": %d,\n",
             opt->precision == PRECISION_FP32 ? "fp32" : "double", grid_name(opt->grid),

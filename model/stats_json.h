@@ -8,6 +8,8 @@
 
 int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
                      const render_stats_t *st, int interrupted, char *err, size_t errlen);
+/* s as a JSON string literal, quoted and escaped. */
+void stats_json_string(FILE *f, const char *s);
 void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
                       const render_stats_t *st, int interrupted);
 

@@ -181,13 +181,13 @@ static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint
     return 0;
 }
 
-/* Phase 1 for one hit against its bucket's entries (double mode), entries [c0, count). */
+/* Phase 1 for one hit against its bucket's entries (double mode). */
 static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                         const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
+                         const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const double x = ph->x, y = ph->y, z = ph->z;
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
-    for (size_t c = c0; c < e->count; c++) {
+    for (size_t c = 0; c < e->count; c++) {
         double vx = e->px[c] - x, vy = e->py[c] - y, vz = e->pz[c] - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         if (skip_radius && v2 > rs2) { st->skipped_radius++; continue; }
@@ -272,11 +272,11 @@ static int screen_avx2(const hitpoints_t *h, double rs2, int skip_radius, const 
 /* Phase 1 for one hit (fp32 mode): the host's tests in double, the PREU's distance in binary32
  * (the same expressions as update.c's photon-major scan). */
 static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const batch_hit_t *ph,
-                       const grid_cands_t *e, size_t c0, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
+                       const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
 {
     const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
-    for (size_t c = c0; c < e->count; c++) {
+    for (size_t c = 0; c < e->count; c++) {
         if (skip_radius) {
             double vx = e->px[c] - ph->x, vy = e->py[c] - ph->y, vz = e->pz[c] - ph->z;
             if (vx * vx + vy * vy + vz * vz > rs2) { st->skipped_radius++; continue; }
@@ -357,8 +357,8 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
             if (b->avx2) rc = screen_avx2(h, rs2, skip_radius, &sh[j], prec != PRECISION_DOUBLE, &cand, &t, s, b);
             else
 #endif
-            if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s, b);
-            else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, 0, &t, s, b);
+            if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
+            else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
             if (rc) return -1;
         }
     }

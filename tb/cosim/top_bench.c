@@ -264,7 +264,7 @@ int main(int argc, char **argv)
         if (dp) preu_stable_radiance(L, &sp[order[k]], ne);
         else preu_radiance(L, &hp[order[k]], ne);
     }
-    cosim_drv_radiance(drv, (uint32_t)nhp, ne, (size_t)npix, Lr);
+    if (cosim_drv_radiance(drv, (uint32_t)nhp, ne, (size_t)npix, Lr)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
     uint64_t cnt2[COSIM_NCNT];
     cosim_drv_counters(drv, cnt2);
     for (int j = 0; j < npix * 3; j++) {

@@ -72,6 +72,10 @@ for dp in paper stable; do
   expect_error "light flux beyond binary32 ($dp)" "photon 0's flux .* beyond binary32's range" render "$TMP/hot.scene" \
     --width 16 --height 12 --photons 1000 --precision fp32 --datapath $dp "${out[@]}"
 done
+printf 'camera origin 0 0 0 dir 0 0 -1 scale 0.5 near 0\n\0sphere 1 0 0 -5 m\n' > "$TMP/bad.scene"
+expect_error "NUL byte in a line" "bad.scene:2: binary data \\(a NUL byte\\)" render "$TMP/bad.scene" "${out[@]}"
+{ printf '#'; head -c 5000 /dev/zero | tr '\0' x; printf ' sphere\n'; } > "$TMP/bad.scene"
+expect_error "long comment stays a comment" "bad.scene:2: the scene has no camera" render "$TMP/bad.scene" "${out[@]}"
 head -c 3000 /dev/urandom > "$TMP/bad.scene"
 "$PREE" render "$TMP/bad.scene" "${out[@]}" 2>"$TMP/stderr" && fail "binary garbage accepted"
 [ "$(wc -l < "$TMP/stderr")" -eq 1 ] && grep -q "bad.scene:" "$TMP/stderr" || fail "binary garbage: $(cat "$TMP/stderr")"

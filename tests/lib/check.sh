@@ -11,10 +11,17 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # Run a command, echoing it; fail with the command line when it fails.
 run() { echo "+ $*"; "$@" || fail "command failed (exit $?): $*"; }
 
-# json FILE KEY: a top-level (or seconds.X) value from a stats file.
+# json FILE KEY: a top-level (or seconds.X) value from a stats file. A missing key or file
+# prints "<missing KEY in FILE>" (and a message on stderr), which no expected value equals,
+# so that two missing values never compare equal as "" and "".
 json() {
-  python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); k=sys.argv[2].split("."); v=d
-for p in k: v=v[p]
+  python3 -c 'import json,sys
+try:
+    v=json.load(open(sys.argv[1]))
+    for p in sys.argv[2].split("."): v=v[p]
+except (OSError, ValueError, KeyError, TypeError) as e:
+    print("json: %s: no %s (%s)" % (sys.argv[1], sys.argv[2], e), file=sys.stderr)
+    v="<missing %s in %s>" % (sys.argv[2], sys.argv[1])
 print(v)' "$1" "$2"
 }
 
