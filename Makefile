@@ -15,7 +15,7 @@ THREADS ?= 2
 CC      := gcc
 CXX     := g++
 FPFLAGS := -ffp-contract=off -fno-fast-math
-WARN    := -Wall -Wextra -Wshadow -Wno-unused-parameter
+WARN    := -Wall -Wextra -Wshadow
 ifeq ($(WERROR),1)
 WARN    += -Werror
 endif

@@ -9,7 +9,7 @@
 #define RADIUS_AHEAD 6
 
 /* Double mode: the reference program's tests, normal first, then distance. */
-static void scan_double(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
+static void scan_double(hitpoints_t *h, grid_t *g, int skip_radius, const photon_hit_t *ph,
                         const grid_cands_t *e, update_stats_t *s)
 {
     const double rs2 = g->r_safe * g->r_safe;
@@ -73,7 +73,7 @@ static int ops_reserve(update_ops_t *o, size_t count)
     return 0;
 }
 
-static void scan_fp32(hitpoints_t *h, grid_t *g, int p, int skip_radius, const photon_hit_t *ph,
+static void scan_fp32(hitpoints_t *h, grid_t *g, int skip_radius, const photon_hit_t *ph,
                       const grid_cands_t *e, update_stats_t *s, update_ops_t *ops)
 {
     const size_t count = e->count;
@@ -142,8 +142,8 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
             prefetch_lookup(h, prec, next);
         }
         s.candidates += cur.count;
-        if (prec == PRECISION_DOUBLE) { if (cur.count) scan_double(h, g, p, skip_radius, &hits[k], &cur, &s); }
-        else if (!(ops && ops->failed)) scan_fp32(h, g, p, skip_radius, &hits[k], &cur, &s, ops);
+        if (prec == PRECISION_DOUBLE) { if (cur.count) scan_double(h, g, skip_radius, &hits[k], &cur, &s); }
+        else if (!(ops && ops->failed)) scan_fp32(h, g, skip_radius, &hits[k], &cur, &s, ops);
     }
     *st = s;
 }
