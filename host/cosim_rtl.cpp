@@ -11,27 +11,21 @@
 #include "verilated_fst_c.h"
 #ifdef COSIM_HAVE_P4
 #include "Vpree_top_p4.h"
-#include "Vpree_top_p4___024root.h"
 #endif
 #ifdef COSIM_HAVE_P8
 #include "Vpree_top_p8.h"
-#include "Vpree_top_p8___024root.h"
 #endif
 #ifdef COSIM_HAVE_P16
 #include "Vpree_top_p16.h"
-#include "Vpree_top_p16___024root.h"
 #endif
 #ifdef COSIM_HAVE_S4
 #include "Vpree_top_s4.h"
-#include "Vpree_top_s4___024root.h"
 #endif
 #ifdef COSIM_HAVE_S8
 #include "Vpree_top_s8.h"
-#include "Vpree_top_s8___024root.h"
 #endif
 #ifdef COSIM_HAVE_S16
 #include "Vpree_top_s16.h"
-#include "Vpree_top_s16___024root.h"
 #endif
 
 namespace {
@@ -78,23 +72,6 @@ template <std::size_t N>
 uint32_t get32(const VlWide<N> &port, unsigned lsb)
 {
     return lsb % 32 == 0 ? port[lsb / 32] : static_cast<uint32_t>(get(port, lsb, 32));
-}
-
-// One evaluation per cycle. Verilator 5 detects the rising edge by comparing clk_i with the
-// value it saw at the previous evaluation (the root's __Vtrigrprev__TOP__clk_i). Clearing that
-// value before an evaluation with clk_i = 1 makes the evaluation a rising edge without a
-// separate clock-low evaluation, which would only re-settle the input logic. Where a Verilator
-// version names it differently, the overload below reports false and tick() evaluates twice.
-template <class Root>
-auto mark_clock_low(Root *root, int) -> decltype(root->__Vtrigrprev__TOP__clk_i = 0, bool())
-{
-    root->__Vtrigrprev__TOP__clk_i = 0;
-    return true;
-}
-template <class Root>
-bool mark_clock_low(Root *, long)
-{
-    return false;
 }
 
 }  // namespace
@@ -201,21 +178,12 @@ struct Rtl : cosim_rtl {
         if (in.px_we)
             for (int c = 0; c < 3; c++) put32(t.px_wdata_i, 32 * c, in.px_wdata[c]);
     }
-    // One cycle. Untraced: one evaluation with the new inputs and clk_i rising (the clock-low
-    // state is marked in the model, see mark_clock_low): Verilator settles the logic fed by the
-    // inputs before it runs the edge, exactly as with a separate clock-low evaluation.
-    // Traced (or where the marking is not available): two evaluations, clock low with the new
-    // inputs, then the rising edge, each dumped. The clock stays high until the next tick,
-    // which is harmless (nothing in pree_top uses the falling edge).
+    // One cycle, traced or not, through Verilator's public interface only: clock low with the
+    // new inputs (evaluated, dumped), then the rising edge (evaluated, dumped). The clock stays
+    // high until the next tick, which is harmless (nothing in pree_top uses the falling edge).
     void tick() override
     {
         apply();
-        if (!tfp && mark_clock_low(top->rootp, 0)) {
-            top->clk_i = 1;
-            top->eval();
-            cycles++;
-            return;
-        }
         top->clk_i = 0;
         top->eval();
         if (tfp) tfp->dump(time);

@@ -45,7 +45,7 @@ cosim_d = $(word 2,$(subst :, ,$(1)))
 COSIM_LIBS   := $(foreach m,$(COSIM_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_d,$(m))$(call cosim_n,$(m))__ALL.a)
 COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
-COSIM_VLRT_FLAGS := -std=c++17 -O2 -I$(VERILATOR_ROOT_DIR)/include -I$(VERILATOR_ROOT_DIR)/include/vltstd \
+COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
 HOST_DIR     := $(BUILD)/host
 HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
@@ -84,7 +84,7 @@ COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP -Imodel -Ihost $(forea
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(2)$(1).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) -I$(call COSIM_MDIR,$(1),$(2)) $(call cosim_have,$(2))$(1) -c $$< -o $$@
+	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call COSIM_MDIR,$(1),$(2)) $(call cosim_have,$(2))$(1) -c $$< -o $$@
 $(BUILD)/pree-cosim-$(2)$(1): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(2)$(1).o \
                           $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
@@ -95,7 +95,7 @@ $(foreach p,4 8 16,$(foreach d,p s,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(e
 $(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_LIBS)
 	@mkdir -p $(@D)
 	$(CXX) $(COSIM_RTL_FLAGS) \
-	  $(foreach m,$(COSIM_MODELS),-I$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) $(call cosim_have,$(call cosim_d,$(m)))$(call cosim_n,$(m))) \
+	  $(foreach m,$(COSIM_MODELS),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) $(call cosim_have,$(call cosim_d,$(m)))$(call cosim_n,$(m))) \
 	  -c $< -o $@
 $(HOST_DIR)/%.o: host/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
