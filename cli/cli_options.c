@@ -53,16 +53,55 @@ int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, 
     return 0;
 }
 
-int cli_update_rule(cli_args_t *a, const char *arg, datapath_t *datapath, double *alpha)
+/* The value of a keyword option: the index of it in names[0..n), or -1 (error printed). */
+static int cli_keyword(cli_args_t *a, const char *opt, const char *const *names, int n, const char *list)
 {
-    if (!strcmp(arg, "--alpha")) return cli_real(a, arg, 0, 1, 1, alpha);
-    if (strcmp(arg, "--datapath")) return 1;
-    const char *s = cli_value(a, arg);
-    if (!s) return 2;
-    if (!strcmp(s, "paper")) *datapath = DATAPATH_PAPER;
-    else if (!strcmp(s, "stable")) *datapath = DATAPATH_STABLE;
-    else return cli_error(a, "--datapath: '%s' is not paper or stable", s);
-    return 0;
+    const char *s = cli_value(a, opt);
+    if (!s) return -1;
+    for (int k = 0; k < n; k++)
+        if (!strcmp(s, names[k])) return k;
+    cli_error(a, "%s: '%s' is not %s", opt, s, list);
+    return -1;
+}
+
+int cli_render_option(cli_args_t *a, const char *arg, render_options_t *opt, int min_size)
+{
+    long long v;
+    if (!strcmp(arg, "--alpha")) return cli_real(a, arg, 0, 1, 1, &opt->alpha);
+    if (!strcmp(arg, "--datapath")) {
+        static const char *const names[] = {"paper", "stable"};
+        int k = cli_keyword(a, arg, names, 2, "paper or stable");
+        if (k < 0) return 2;
+        opt->datapath = k ? DATAPATH_STABLE : DATAPATH_PAPER;
+        return 0;
+    }
+    if (!strcmp(arg, "--grid")) {
+        static const char *const names[] = {"cells", "smallppm", "brute"};
+        static const grid_kind_t kinds[] = {GRID_CELLS, GRID_SMALLPPM, GRID_BRUTE};
+        int k = cli_keyword(a, arg, names, 3, "cells, smallppm or brute");
+        if (k < 0) return 2;
+        opt->grid = kinds[k];
+        return 0;
+    }
+    if (!strcmp(arg, "--width") || !strcmp(arg, "--height")) {
+        if (cli_int(a, arg, min_size, 16384, &v)) return 2;
+        *(arg[2] == 'w' ? &opt->width : &opt->height) = (int)v;
+        return 0;
+    }
+    if (!strcmp(arg, "--photons")) {
+        if (cli_int(a, arg, 1, 10000000000LL, &v)) return 2;
+        opt->photons = (uint64_t)v;
+        return 0;
+    }
+    if (!strcmp(arg, "--preu")) {
+        if (cli_int(a, arg, 4, 16, &v)) return 2;
+        if (v != 4 && v != 8 && v != 16) return cli_error(a, "--preu: %lld is not 4, 8 or 16", v);
+        opt->preu = (int)v;
+        return 0;
+    }
+    if (!strcmp(arg, "--no-skip")) { opt->no_skip = 1; return 0; }
+    if (!strcmp(arg, "--quiet")) { opt->progress = 0; return 0; }
+    return 1;
 }
 
 int cli_image_ext(cli_args_t *a, const char *path)

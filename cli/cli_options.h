@@ -3,7 +3,7 @@
 #ifndef PREE_CLI_OPTIONS_H
 #define PREE_CLI_OPTIONS_H
 
-#include "update.h"
+#include "render.h"
 
 typedef struct {
     int argc;
@@ -20,9 +20,10 @@ const char *cli_value(cli_args_t *a, const char *opt);
 int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long long *out);
 /* A real value in (lo, hi] (lo_open) or [lo, hi]; 0, or 2 with the error printed. */
 int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, double *out);
-/* The update-rule options shared by render and cosim: --datapath paper|stable, --alpha A.
+/* The render options that `pree render` and `pree cosim` share: --width/--height (at least
+ * min_size), --photons, --preu, --grid, --no-skip, --quiet, --datapath paper|stable, --alpha A.
  * Returns 1 when arg is not one of them, 0 when it was taken, 2 on an error (printed). */
-int cli_update_rule(cli_args_t *a, const char *arg, datapath_t *datapath, double *alpha);
+int cli_render_option(cli_args_t *a, const char *arg, render_options_t *opt, int min_size);
 /* 0 when path ends in .png, .ppm or .exr; else 2 with the error printed. */
 int cli_image_ext(cli_args_t *a, const char *path);
 

@@ -56,20 +56,12 @@ int pree_cmd_render(int argc, char **argv)
     while (a.i < argc) {
         const char *arg = argv[a.i++];
         long long v;
-        int r = cli_update_rule(&a, arg, &opt.datapath, &opt.alpha);
+        int r = cli_render_option(&a, arg, &opt, 1);
         if (r != 1) { if (r) return r; continue; }
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { render_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.width = (int)v; }
-        else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 1, 16384, &v)) return 2; opt.height = (int)v; }
-        else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
         else if (!strcmp(arg, "--photon-offset")) {
             if (cli_int(&a, arg, 0, 10000000000LL, &v)) return 2;
             opt.photon_offset = (uint64_t)v;
-        }
-        else if (!strcmp(arg, "--preu")) {
-            if (cli_int(&a, arg, 4, 16, &v)) return 2;
-            if (v != 4 && v != 8 && v != 16) return cli_error(&a, "--preu: %lld is not 4, 8 or 16", v);
-            opt.preu = (int)v;
         } else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; opt.threads = (int)v; }
         else if (!strcmp(arg, "--precision")) {
             const char *s = cli_value(&a, arg);
@@ -77,22 +69,13 @@ int pree_cmd_render(int argc, char **argv)
             if (!strcmp(s, "double")) opt.precision = PRECISION_DOUBLE;
             else if (!strcmp(s, "fp32")) opt.precision = PRECISION_FP32;
             else return cli_error(&a, "--precision: '%s' is not double or fp32", s);
-        } else if (!strcmp(arg, "--grid")) {
-            const char *s = cli_value(&a, arg);
-            if (!s) return 2;
-            if (!strcmp(s, "cells")) opt.grid = GRID_CELLS;
-            else if (!strcmp(s, "smallppm")) opt.grid = GRID_SMALLPPM;
-            else if (!strcmp(s, "brute")) opt.grid = GRID_BRUTE;
-            else return cli_error(&a, "--grid: '%s' is not cells, smallppm or brute", s);
         } else if (!strcmp(arg, "--scan")) {
             const char *s = cli_value(&a, arg);
             if (!s) return 2;
             if (!strcmp(s, "bucket")) opt.scan = SCAN_BUCKET;
             else if (!strcmp(s, "photon")) opt.scan = SCAN_PHOTON;
             else return cli_error(&a, "--scan: '%s' is not bucket or photon", s);
-        } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
-        else if (!strcmp(arg, "--quiet")) opt.progress = 0;
-        else if (!strcmp(arg, "--out")) {
+        } else if (!strcmp(arg, "--out")) {
             const char *s = cli_value(&a, arg);
             if (!s) return 2;
             if (nout == MAX_OUTPUTS) return cli_error(&a, "--out: at most %d outputs", MAX_OUTPUTS);

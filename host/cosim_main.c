@@ -136,36 +136,20 @@ int pree_cmd_cosim(int argc, char **argv)
     while (a.i < argc) {
         const char *arg = argv[a.i++];
         long long v;
-        int r = cli_update_rule(&a, arg, &opt.datapath, &opt.alpha);
+        int r = cli_render_option(&a, arg, &opt, 11);
         if (r != 1) { if (r) return r; continue; }
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { cosim_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--width")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.width = (int)v; }
-        else if (!strcmp(arg, "--height")) { if (cli_int(&a, arg, 11, 16384, &v)) return 2; opt.height = (int)v; }
-        else if (!strcmp(arg, "--photons")) { if (cli_int(&a, arg, 1, 10000000000LL, &v)) return 2; opt.photons = (uint64_t)v; }
         else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; threads = (int)v; }
-        else if (!strcmp(arg, "--preu")) {
-            if (cli_int(&a, arg, 4, 16, &v)) return 2;
-            if (v != 4 && v != 8 && v != 16) return cli_error(&a, "--preu: %lld is not 4, 8 or 16", v);
-            opt.preu = (int)v;
-        } else if (!strcmp(arg, "--grid")) {
-            const char *s = cli_value(&a, arg);
-            if (!s) return 2;
-            if (!strcmp(s, "cells")) opt.grid = GRID_CELLS;
-            else if (!strcmp(s, "smallppm")) opt.grid = GRID_SMALLPPM;
-            else if (!strcmp(s, "brute")) opt.grid = GRID_BRUTE;
-            else return cli_error(&a, "--grid: '%s' is not cells, smallppm or brute", s);
-        } else if (!strcmp(arg, "--gap")) {
+        else if (!strcmp(arg, "--gap")) {
             const char *s = cli_value(&a, arg);
             char *end;
             if (!s) return 2;
             gap = strtod(s, &end);
             if (*end || !(gap >= 0 && gap < 1)) return cli_error(&a, "--gap: '%s' is not in [0, 1)", s);
-        } else if (!strcmp(arg, "--no-skip")) opt.no_skip = 1;
-        else if (!strcmp(arg, "--no-reference")) reference = 0;
+        } else if (!strcmp(arg, "--no-reference")) reference = 0;
         else if (!strcmp(arg, "--no-reorder")) reorder = 0;
         else if (!strcmp(arg, "--no-schedule")) schedule = 0;
         else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
-        else if (!strcmp(arg, "--quiet")) opt.progress = 0;
         else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
         else if (!strcmp(arg, "--out")) {
             if (!(out_path = cli_value(&a, arg))) return 2;

@@ -81,16 +81,22 @@ static inline void preu_update_accepted(preu_hp_t *hp, const preu_photon_t *ph, 
     hp->n = na;
 }
 
-/* One update operation. The distance test runs as plain float arithmetic: every non-NaN result
+/* One update operation. The distance (preu_distance2, shared with the stable datapath) runs as
+ * plain float arithmetic: every non-NaN result
  * equals the fp32_ops result bit for bit, and whether a result is NaN does not depend on which
  * NaN came in, so d2 <= r2 decides exactly as fp32_cmp(d2, r2).le does (NaN: not accepted).
  * Only the written-back values need fp32_ops' NaN rules. */
+static inline float preu_distance2(const uint32_t hp_pos[3], const preu_photon_t *ph)
+{
+    float dx = fp32_from_bits(hp_pos[0]) - fp32_from_bits(ph->pos[0]);
+    float dy = fp32_from_bits(hp_pos[1]) - fp32_from_bits(ph->pos[1]);
+    float dz = fp32_from_bits(hp_pos[2]) - fp32_from_bits(ph->pos[2]);
+    return (dx * dx + dy * dy) + dz * dz;
+}
+
 static inline int preu_update_inline(preu_hp_t *hp, const preu_photon_t *ph, uint32_t alpha)
 {
-    float dx = fp32_from_bits(hp->pos[0]) - fp32_from_bits(ph->pos[0]);
-    float dy = fp32_from_bits(hp->pos[1]) - fp32_from_bits(ph->pos[1]);
-    float dz = fp32_from_bits(hp->pos[2]) - fp32_from_bits(ph->pos[2]);
-    float d2 = (dx * dx + dy * dy) + dz * dz;
+    const float d2 = preu_distance2(hp->pos, ph);
     if (!(d2 <= fp32_from_bits(hp->r2)))
         return 0;
     preu_update_accepted(hp, ph, alpha);

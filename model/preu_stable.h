@@ -95,11 +95,7 @@ static inline void preu_stable_update_accepted(preu_shp_t *hp, const preu_photon
 /* One update operation; the distance in plain float, as preu_update_inline. */
 static inline int preu_stable_update_inline(preu_shp_t *hp, const preu_photon_t *ph, uint32_t kappa)
 {
-    float dx = fp32_from_bits(hp->pos[0]) - fp32_from_bits(ph->pos[0]);
-    float dy = fp32_from_bits(hp->pos[1]) - fp32_from_bits(ph->pos[1]);
-    float dz = fp32_from_bits(hp->pos[2]) - fp32_from_bits(ph->pos[2]);
-    float d2 = (dx * dx + dy * dy) + dz * dz;
-    if (!preu_stable_accepts(fp32_to_bits(d2), hp->w)) return 0;
+    if (!preu_stable_accepts(fp32_to_bits(preu_distance2(hp->pos, ph)), hp->w)) return 0;
     preu_stable_update_accepted(hp, ph, kappa);
     return 1;
 }

@@ -3,6 +3,7 @@
  * touches the hit point's own state (and rewrites the radius copies). */
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "update.h"
 
 /* Radii are prefetched this many candidates ahead within a bucket. */
@@ -33,18 +34,6 @@ static void scan_double(hitpoints_t *h, grid_t *g, int skip_radius, const photon
 /* fp32 mode: the host's normal test in double, then the PREU datapath in binary32. The
  * distance test reads the entry's position rounded to binary32 (= the PREU's stored
  * position) and the compact copy of the PREU's r2, as preu_update_inline does. */
-static int grow_to(void **p, size_t *cap, size_t need, size_t sz)
-{
-    if (need <= *cap) return 0;
-    size_t c = *cap ? *cap : 1024;
-    while (c < need) c *= 2;
-    void *q = realloc(*p, c * sz);
-    if (!q) return -1;
-    *p = q;
-    *cap = c;
-    return 0;
-}
-
 void update_ops_clear(update_ops_t *o)
 {
     o->n_hits = o->n_ops = 0;
@@ -62,10 +51,10 @@ void update_ops_free(update_ops_t *o)
 /* Room in ops for one more photon hit with up to count operations: 0, or -1 (memory). */
 static int ops_reserve(update_ops_t *o, size_t count)
 {
-    if (grow_to((void **)&o->hp, &o->cap_ops, o->n_ops + count, sizeof *o->hp)) return -1;
+    if (grow_array((void **)&o->hp, &o->cap_ops, o->n_ops + count, sizeof *o->hp)) return -1;
     if (o->n_hits < o->cap_hits) return 0;
     size_t cap = o->cap_hits;
-    if (grow_to((void **)&o->end, &cap, o->n_hits + 1, sizeof *o->end)) return -1;
+    if (grow_array((void **)&o->end, &cap, o->n_hits + 1, sizeof *o->end)) return -1;
     preu_photon_t *ph = realloc(o->ph, cap * sizeof *ph);
     if (!ph) return -1;
     o->ph = ph;

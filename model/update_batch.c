@@ -13,6 +13,7 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#include "grow.h"
 #include "update_batch.h"
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
@@ -25,18 +26,6 @@
 #define RADIX_PARALLEL_MIN 32768   /* keys below which a radix pass runs on one thread */
 #define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
 #define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
-
-static int grow(void **p, size_t *cap, size_t need, size_t sz)
-{
-    if (need <= *cap) return 0;
-    size_t c = *cap ? *cap : 1024;
-    while (c < need) c *= 2;
-    void *q = realloc(*p, c * sz);
-    if (!q) return -1;
-    *p = q;
-    *cap = c;
-    return 0;
-}
 
 void update_batch_free(update_batch_t *b)
 {
@@ -55,7 +44,7 @@ void update_batch_free(update_batch_t *b)
 static int radix_pass(update_batch_t *b, size_t m, unsigned shift)
 {
     const int nt = m >= RADIX_PARALLEL_MIN ? omp_get_max_threads() : 1;
-    if (grow((void **)&b->hist, &b->hist_cap, (size_t)nt * RADIX_SIZE, sizeof *b->hist)) return -1;
+    if (grow_array((void **)&b->hist, &b->hist_cap, (size_t)nt * RADIX_SIZE, sizeof *b->hist)) return -1;
     uint32_t *hist = b->hist;
     const uint64_t *src = b->key;
     uint64_t *dst = b->tmp;
@@ -86,9 +75,9 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
 {
     size_t n = 0;
     for (unsigned c = 0; c < nchunks; c++) n += chunks[c].n;
-    if (grow((void **)&b->hit, &b->hit_cap, n, sizeof *b->hit) ||
-        grow((void **)&b->key, &b->key_cap, n, sizeof *b->key) ||
-        grow((void **)&b->tmp, &b->tmp_cap, n, sizeof *b->tmp))
+    if (grow_array((void **)&b->hit, &b->hit_cap, n, sizeof *b->hit) ||
+        grow_array((void **)&b->key, &b->key_cap, n, sizeof *b->key) ||
+        grow_array((void **)&b->tmp, &b->tmp_cap, n, sizeof *b->tmp))
         return -1;
     /* Keys: bucket in the high half, hit index (photon order) in the low half; chunk c's hits
      * start at hit index first[c] and its keys at key index kfirst[c]. */
@@ -126,7 +115,7 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
         size_t tc = b->key_cap; b->key_cap = b->tmp_cap; b->tmp_cap = tc;
     }
     /* Groups: runs of one bucket. */
-    if (grow((void **)&b->group, &b->group_cap, m + 1, sizeof *b->group)) return -1;
+    if (grow_array((void **)&b->group, &b->group_cap, m + 1, sizeof *b->group)) return -1;
     size_t ng = 0;
     for (size_t i = 0; i < m; i++)
         if (i == 0 || (b->key[i] >> 32) != (b->key[i - 1] >> 32)) b->group[ng++] = (uint32_t)i;
@@ -136,7 +125,7 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
     b->avx2 = !getenv("PREE_NO_AVX2") && __builtin_cpu_supports("avx2");
 #endif
     /* Gather the hits in key order: independent loads, which the processor overlaps. */
-    if (grow((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;
+    if (grow_array((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;
 #pragma omp parallel for schedule(static)
     for (size_t i = 0; i < m; i++) {
         const uint32_t hit = (uint32_t)b->key[i];
@@ -176,7 +165,7 @@ int update_batch_scratch_reset(update_scratch_t *s, int num_parts)
 static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint32_t hp, double v2)
 {
     kept_list_t *l = &s->list[b->owner ? b->owner[hp] : 0];
-    if (l->n == l->cap && grow(&l->v, &l->cap, l->n + 1, sizeof(kept_t))) return -1;
+    if (l->n == l->cap && grow_array(&l->v, &l->cap, l->n + 1, sizeof(kept_t))) return -1;
     ((kept_t *)l->v)[l->n++] = (kept_t){hit, hp, v2};
     return 0;
 }
@@ -296,8 +285,8 @@ static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthrea
 {
     size_t total = 0;
     for (int t = 0; t < nthreads; t++) total += all[t].list[p].n;
-    if (grow(&out->sorted, &out->sorted_cap, total, sizeof(kept_t)) ||
-        grow((void **)&out->start, &out->start_cap, n_hits + 1, sizeof *out->start))
+    if (grow_array(&out->sorted, &out->sorted_cap, total, sizeof(kept_t)) ||
+        grow_array((void **)&out->start, &out->start_cap, n_hits + 1, sizeof *out->start))
         return -1;
     kept_t *dst = out->sorted;
     uint32_t *start = out->start;
