@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# make run: render the default scene (cornell3, 320x240, 768,000 photons) in both precisions,
-# compare them, then build the 4-PREU co-simulation (only that Verilated model) with BUILD_COSIM
+# make run: render the default scene (cornell3, 320x240, 768,000 photons) in both precisions and
+# with both fp32 datapaths, compare them with the double render, then build the 4-PREU co-simulation (only that Verilated model) with BUILD_COSIM
 # and render through the Verilated RTL.
 # Usage: make-run.sh PREE OUTDIR [BUILD_COSIM]   (BUILD_COSIM: a command; none: skip the RTL)
 set -euo pipefail
@@ -17,6 +17,12 @@ echo "== software render, fp32 (the PREE datapath's arithmetic, the RTL's golden
 echo "== fp32 against double"
 "$pree" compare "$out/cornell3-double.exr" "$out/cornell3-fp32.exr" --diff "$out/cornell3-fp32-vs-double-diff.png" \
     | tee "$out/cornell3-fp32-vs-double.txt"
+echo "== software render, fp32 with the stable datapath (exact count, wide 1/r2 and tau/r2)"
+"$pree" render $scene "${size[@]}" --precision fp32 --datapath stable --out "$out/cornell3-fp32-stable.png" \
+    --out "$out/cornell3-fp32-stable.exr" --stats "$out/cornell3-fp32-stable.json"
+echo "== fp32 stable against double"
+"$pree" compare "$out/cornell3-double.exr" "$out/cornell3-fp32-stable.exr" \
+    --diff "$out/cornell3-fp32-stable-vs-double-diff.png" | tee "$out/cornell3-fp32-stable-vs-double.txt"
 if [ -n "$build_cosim" ]; then
   echo "== building the 4-PREU co-simulation (one Verilated model; a few minutes the first time)"
   $build_cosim
