@@ -53,7 +53,8 @@ plot "$d/main-paper-tau.dat" w lp pt 7 ps 0.5 lc rgb "#c0392b" t "paper", \
      "$d/main-double-tau.dat" w lp pt 1 ps 0.6 lc rgb "#555555" t "double"
 unset multiplot
 set output "$out/numerics-alpha.png"
-set multiplot layout 1,2 title "|relative error of r2| against the closed form, r2_0 = 1, flux 1, per alpha"
+set multiplot layout 1,2 title "|relative error of r2| against the closed form, r2_0 = 1, flux 1, per alpha (alpha 0.1 leaves the top: r2 below binary32's range)"
+set yrange [1e-18:1e3]
 set title "paper datapath"
 set ylabel "|relative error of r2|"
 plot $(first=1; for a in $alphas; do [ $first = 1 ] || printf ', '; first=0; printf '"%s" w lp pt 7 ps 0.4 t "alpha %s"' "$d/alpha-$a-paper-r2.dat" "$a"; done)
