@@ -3,12 +3,15 @@
 #   stress-hitpoint  one hit point fed up to 1e9 (stable count: 2^32 + 1e6) accepted photons through
 #                    both fp32 datapaths against double, long double and the closed form; sweeps of
 #                    alpha, initial r2 and flux; non-finite inputs; N_emitted beyond 2^24 and 2^32
+#   stress-rtl       one hit point fed 10 million accepted photons through each datapath's
+#                    Verilated PREU, state written back every time, every word against the model
+#                    (make sim-preu-chain; about 2 minutes a datapath)
 #   stress-render    whole-render drift (fp32 paper/stable against double, 16x12, 1e6..1e8 photons,
 #                    cornell3 and cornell-sphere) and scale invariance (scaled copies, 1e-4..1e6)
 # The quick level runs inside make test: tests/checks/stress_quick.sh.
 STRESS_DIR := $(OUT)/stress
 STRESS_HP  := $(BUILD)/stress/stress_hitpoint
-.PHONY: stress stress-hitpoint stress-render stress-plots
+.PHONY: stress stress-hitpoint stress-rtl stress-render stress-plots
 
 $(BUILD)/stress/stress_hitpoint.o: tests/stress/stress_hitpoint.c $(DEPS_STAMP)
 	@mkdir -p $(@D)
@@ -18,7 +21,10 @@ $(STRESS_HP): $(BUILD)/stress/stress_hitpoint.o $(LIBPREE)
 
 TEST_PREREQS += $(STRESS_HP)
 
-stress: stress-hitpoint stress-render
+stress: stress-hitpoint stress-rtl stress-render
+stress-rtl:
+	@mkdir -p $(STRESS_DIR)
+	@$(MAKE) --no-print-directory sim-preu-chain | tee $(STRESS_DIR)/rtl-chain.txt
 stress-hitpoint: $(DEPS_STAMP) $(STRESS_HP)
 	@scripts/stress-hitpoint.sh $(STRESS_HP) $(STRESS_DIR)
 stress-render: build

@@ -67,6 +67,8 @@ typedef struct {
     mesh_t *meshes;        int num_meshes;
     light_t *lights;       int num_lights;
     int max_depth;         /* path length limit (default 20) */
+    double epsilon;        /* ray offset and nearest sphere hit, scene units (default TRACER_EPSILON
+                            * = 1e-4, smallppm's; scale it with the scene, `epsilon E`) */
     /* What the scene contains, so that the engine can skip what it does not need. */
     int has_mirror, has_glass, has_diffuse;
 } scene_t;

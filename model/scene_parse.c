@@ -269,6 +269,16 @@ static int parse_depth(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     return 1;
 }
 
+static int parse_epsilon(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
+{
+    double e;
+    if (need(pc, ntok, 2, "epsilon E")) return -1;
+    if (parse_number(pc, tok[1], &e)) return -1;
+    if (!(e > 0 && e <= 1e30)) return fail(pc, "epsilon %s is not a positive distance up to 1e30", tok[1]);
+    s->epsilon = e;
+    return 1;
+}
+
 static int parse_mesh(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     char e[512];
@@ -281,7 +291,7 @@ typedef int (*directive_fn)(parse_ctx_t *, scene_t *, char **, int);
 static const struct { const char *name; directive_fn fn; } directives[] = {
     {"camera", parse_camera},     {"material", parse_material}, {"sphere", parse_sphere},
     {"light", parse_light},       {"triangle", parse_triangle}, {"mesh", parse_mesh},
-    {"depth", parse_depth},
+    {"depth", parse_depth},       {"epsilon", parse_epsilon},
 };
 
 static int tokenize(char *line, char **tok)
@@ -321,6 +331,7 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
     memset(&s, 0, sizeof s);
     snprintf(s.path, sizeof s.path, "%s", path);
     s.max_depth = 20;
+    s.epsilon = 1e-4;   /* TRACER_EPSILON: the reference program's */
     char *line = NULL;
     size_t cap = 0;
     ssize_t got;

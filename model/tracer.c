@@ -42,9 +42,9 @@ static void embree_error(void *user, enum RTCError code, const char *msg)
 }
 
 /* The reference program's ray-sphere test (sphere_group.h): returns t, or 0 for a miss. */
-static inline double sphere_hit_t(const sphere_t *s, vec3 o, vec3 d)
+static inline double sphere_hit_t(const sphere_t *s, vec3 o, vec3 d, double eps)
 {
-    return sphere_group_t_scalar(s->centre.x, s->centre.y, s->centre.z, s->radius * s->radius, o, d, TRACER_EPSILON);
+    return sphere_group_t_scalar(s->centre.x, s->centre.y, s->centre.z, s->radius * s->radius, o, d, eps);
 }
 
 static void sphere_bounds(const struct RTCBoundsFunctionArguments *args)
@@ -72,7 +72,7 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
     const int first = (int)args->primID * tr->spheres_per_prim;
     double tg[SPHERE_GROUP_MAX];
     const int grouped = tr->spheres_per_prim > 1;
-    if (grouped) sphere_group_t_all(&tr->group, ctx->o, ctx->d, TRACER_EPSILON, tg);
+    if (grouped) sphere_group_t_all(&tr->group, ctx->o, ctx->d, tr->src->epsilon, tg);
     /* The nearest sphere that may replace the current hit: t beats the best so far (ties to the
      * lower index) and, while a triangle holds the hit, is not beyond it. Choosing the minimum
      * of these at once is what accepting them one by one in index order ends with: every sphere
@@ -85,7 +85,7 @@ static void sphere_intersect(const struct RTCIntersectFunctionNArguments *args)
         const int i = sphere_group_pick(&tr->group, tg, first, best0, best_id0, triangle_holds, tfar0);
         if (i >= 0) { pick = first + i; pick_t = tg[i]; }
     } else {
-        const double t = sphere_hit_t(&tr->src->spheres[first], ctx->o, ctx->d);
+        const double t = sphere_hit_t(&tr->src->spheres[first], ctx->o, ctx->d, tr->src->epsilon);
         if (sphere_may_replace(t, first, best0, best_id0, triangle_holds, tfar0)) {
             pick = first;
             pick_t = t;
@@ -115,7 +115,7 @@ static void sphere_occluded(const struct RTCOccludedFunctionNArguments *args)
     struct RTCRay *ray = (struct RTCRay *)args->ray;
     const int first = (int)args->primID * tr->spheres_per_prim;
     for (int id = first; id < first + tr->spheres_per_prim; id++) {
-        double t = sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d);
+        double t = sphere_hit_t(&tr->src->spheres[id], ctx->o, ctx->d, tr->src->epsilon);
         if (t != 0 && t < (double)ray->tfar) { ray->tfar = -INFINITY; return; }
     }
 }
@@ -212,7 +212,7 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
     struct RTCRayHit rh;
     rh.ray.org_x = (float)o.x; rh.ray.org_y = (float)o.y; rh.ray.org_z = (float)o.z;
     rh.ray.dir_x = (float)d.x; rh.ray.dir_y = (float)d.y; rh.ray.dir_z = (float)d.z;
-    rh.ray.tnear = (float)TRACER_EPSILON;
+    rh.ray.tnear = (float)tr->src->epsilon;
     rh.ray.tfar = INFINITY;
     rh.ray.time = 0.0f;
     rh.ray.mask = 0xFFFFFFFFu;

@@ -11,7 +11,8 @@
 #include "scene.h"
 
 /* Rays start this far along their direction from a surface (triangles), and a sphere hit
- * closer than this is ignored, as in the reference program. */
+ * closer than this is ignored, as in the reference program: the scene's `epsilon` (scene_t),
+ * this by default. An absolute distance, so a scene scaled by s wants epsilon 1e-4 * s. */
 #define TRACER_EPSILON 1e-4
 
 typedef struct tracer tracer_t;

@@ -78,44 +78,8 @@ done
 # 2. Scale invariance: scaled scene files in a temporary folder.
 tmp=$(mktemp -d "${TMPDIR:-/tmp}/pree-stress-scale.XXXXXX")
 trap 'rm -rf "$tmp"' EXIT
-scale_scene() {  # scale_scene SCENE S -> prints the path of the scaled copy
-  python3 - "$root/scenes/$1" "$2" "$tmp/$1-$2" "$root/scenes" <<'PY'
-import sys
-src, s, dst, scenes = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4]
-s = 2.0 ** int(s[2:]) if s.startswith("2^") else float(s)   # "2^K": exact in binary
-def num(t):  # the scene format's numbers: a C literal or a sum A+B of two, evaluated in double
-    for i in range(1, len(t)):
-        if t[i] in "+-" and t[i - 1] not in "eE":
-            return float(t[:i]) + float(t[i:])
-    return float(t)
-def fmt(v): return repr(v)
-out = []
-for line in open(src):
-    body = line.split("#", 1)[0].split()
-    if not body: out.append(line.rstrip("\n")); continue
-    k = body[0]
-    if k == "sphere":
-        body[1:5] = [fmt(num(x) * s) for x in body[1:5]]
-    elif k == "camera" and body[1] == "origin":
-        for key in ("origin",):
-            i = body.index(key); body[i + 1:i + 4] = [fmt(num(x) * s) for x in body[i + 1:i + 4]]
-        if "near" in body: i = body.index("near"); body[i + 1] = fmt(num(body[i + 1]) * s)
-    elif k == "camera" and body[1] == "position":
-        for key in ("position", "lookat"):
-            i = body.index(key); body[i + 1:i + 4] = [fmt(num(x) * s) for x in body[i + 1:i + 4]]
-        if "near" in body: i = body.index("near"); body[i + 1] = fmt(num(body[i + 1]) * s)
-    elif k == "light" and body[1] == "point":
-        body[2:5] = [fmt(num(x) * s) for x in body[2:5]]
-        if body[5] in ("intensity", "flux"): body[6:9] = [fmt(num(x) * s * s) for x in body[6:9]]
-    elif k == "mesh":
-        body[1] = scenes + "/" + body[1]
-        body += ["scale", fmt(s)] if "scale" not in body else []
-    elif k == "triangle" or (k == "light" and body[1] == "triangle"):
-        raise SystemExit("stress-render: scale_scene: %s lines are not handled" % k)
-    out.append(" ".join(body))
-open(dst, "w").write("\n".join(out) + "\n")
-print(dst)
-PY
+scale_scene() {  # scale_scene SCENE S -> prints the path of the scaled copy (scripts/scale-scene.py)
+  "$root/scripts/scale-scene.py" "$root/scenes/$1" "$2" "$tmp/$1-$2" && echo "$tmp/$1-$2"
 }
 {
 echo "| scene | scale | datapath | render s (wall) | accepted | initial radius / scale | rel. L2 vs scale 1 | max abs / peak |"
