@@ -8,14 +8,34 @@
 #   make sim-fp32-full     thorough level: FP32_FULL random per unit in Verilator (>= 10 million)
 #                          and FP32_IV_FULL per unit in Icarus, and the squarer's exhaustive
 #                          significand sweep (sim-fp32-sweep-sqr)
-#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one unit (u = add mul sqr div cmp div8 wacc u2f)
-#   make lint-fp32         verilator --lint-only -Wall on every unit and divider configuration
-#   make synth-fp32        yosys synth_xilinx per unit, latch and loop checks, resource table
-#                          in $(BUILD)/fp32/synth/resources.md
+#   make sim-fp32-vl-<u>, sim-fp32-iv-<u>   one configuration (u = a name of FP32_UNITS or
+#                          FP32_DEEP)
+#   make sim-fp32-deep     the deep and other-Stages configurations (FP32_DEEP), both simulators
+#   make sim-fp32-stages   Icarus, every unit at every supported Stages value (quick counts)
+#   make lint-fp32         verilator --lint-only -Wall on every unit and configuration
+#   make synth-fp32        yosys synth_xilinx per configuration (FP32_UNITS and the PipeFast = 1
+#                          ones), latch and loop checks, resource table in
+#                          $(BUILD)/fp32/synth/resources.md
 # "div8" is the divider's deeper configuration (parameter Stages = 8, latency 8); it goes
-# through the same benches as the default (Stages = 4).
+# through the same benches as the default (Stages = 4). The configurations of FP32_DEEP
+# (docs/fpga.md): <unit>_fast = the unit with PipeFast = 1, its deep stage plan; div2, div12,
+# div20 = the divider with Stages 2, 12, 20. They go through the same benches; their Verilator
+# models are built on demand (not in TEST_PREREQS), so that the quick regression stays fast.
 
 FP32_UNITS    := add mul sqr div cmp div8 wacc u2f
+# Deep configurations: <name> := <unit> <PipeFast> <Stages, or - for PipeFast's> <latency>.
+# The latency is what the benches require; for PipeFast = 1 it pins the unit's deep plan.
+FP32_CFG_add_fast  := add 1 - 6
+FP32_CFG_mul_fast  := mul 1 - 6
+FP32_CFG_sqr_fast  := sqr 1 - 5
+FP32_CFG_div_fast  := div 1 - 30
+FP32_CFG_wacc_fast := wacc 1 - 4
+FP32_CFG_u2f_fast  := u2f 1 - 4
+FP32_CFG_div2      := div 0 2 2
+FP32_CFG_div12     := div 0 12 12
+FP32_CFG_div20     := div 0 20 20
+FP32_FAST     := add_fast mul_fast sqr_fast div_fast wacc_fast u2f_fast
+FP32_DEEP     := $(FP32_FAST) div2 div12 div20
 FP32_DIR      := $(BUILD)/fp32
 FP32_RTL      := $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 # The module of each unit: pree_fp32_<unit> unless named here.
@@ -86,19 +106,55 @@ endef
 $(foreach u,add mul sqr div cmp wacc u2f,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
 $(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAGES=8))
 
+# A deep configuration $(1) from its FP32_CFG_ line: words 1 unit, 2 PipeFast, 3 Stages, 4 latency.
+fp32_cfg        = $(word $(2),$(FP32_CFG_$(1)))
+fp32_cfg_stages = $(if $(filter -,$(call fp32_cfg,$(1),3)),,$(call fp32_cfg,$(1),3))
+fp32_cfg_vl     = -GPipeFast=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-GStages=$(call fp32_cfg_stages,$(1)))
+fp32_cfg_iv     = -DUNIT_PIPEFAST=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-DUNIT_STAGES=$(call fp32_cfg_stages,$(1))) -DUNIT_LATENCY=$(call fp32_cfg,$(1),4)
+$(foreach c,$(FP32_DEEP),$(eval $(call FP32_UNIT_RULES,$(c),$(call fp32_cfg,$(c),1),$(call fp32_cfg_vl,$(c)),-DFP32_LATENCY=$(call fp32_cfg,$(c),4),$(call fp32_cfg_iv,$(c)))))
+
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
 sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u)) sim-fp32-sweep-sqr
+
+.PHONY: sim-fp32-deep sim-fp32-full-deep sim-fp32-stages
+sim-fp32-deep: $(foreach u,$(FP32_DEEP),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
+sim-fp32-full-deep: $(foreach u,$(FP32_DEEP),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u))
+
+# Every supported Stages value of every unit, Icarus (compiles in about a second), directed
+# list plus FP32_STAGES_N random vectors each: the stage plans between the named configurations.
+FP32_STAGES_N ?= 5000
+FP32_STAGES_add  := 1 2 3 4 5 6 7
+FP32_STAGES_mul  := 1 2 3 4 5 6 7 8
+FP32_STAGES_sqr  := 1 2 3 4 5 6
+FP32_STAGES_div  := $(shell seq 2 31)
+FP32_STAGES_wacc := 1 2 3 4 5
+FP32_STAGES_u2f  := 1 2 3 4 5
+sim-fp32-stages: $(FP32_DIR)/fp32_vecgen | $(DEPS_STAMP)
+	@set -e; mkdir -p $(FP32_DIR)/stages; \
+	$(foreach u,add mul sqr div wacc u2f, \
+	  $(FP32_DIR)/fp32_vecgen $(u) $(FP32_STAGES_N) $(FP32_SEED) $(FP32_DIR)/stages/vec_$(u).txt; \
+	  for s in $(FP32_STAGES_$(u)); do \
+	    cmd="iverilog -g2005 -Wall -DUNIT_$(shell echo $(u) | tr a-z A-Z) -DUNIT_STAGES=$$s -DUNIT_LATENCY=$$s -o $(FP32_DIR)/stages/$(u)$$s.vvp -y rtl tb/fp32/tb_fp32_pipe.v rtl/$(call fp32_top,$(u)).v"; \
+	    $$cmd; \
+	    vvp -N $(FP32_DIR)/stages/$(u)$$s.vvp +vec=$(FP32_DIR)/stages/vec_$(u).txt +seed=$(FP32_SEED) \
+	      || { echo "sim-fp32-stages: $(u) Stages=$$s failed; rerun: $$cmd && vvp -N $(FP32_DIR)/stages/$(u)$$s.vvp +vec=$(FP32_DIR)/stages/vec_$(u).txt"; exit 1; }; \
+	  done;) true
 
 # The squarer has one operand: every significand at six exponents (50 million cases).
 .PHONY: sim-fp32-sweep-sqr
 sim-fp32-sweep-sqr: $(FP32_DIR)/vl_sqr/fp32_bench_sqr
 	$< 0 $(FP32_SEED) sweep
 
-# Lint: every unit as a top, with the helpers it instantiates, and the divider at Stages 2, 4
-# and 8; warnings are errors.
+# Lint: every unit as a top, with the helpers it instantiates, at its default, at PipeFast = 1
+# and at the ends of its Stages range; the divider also at Stages 8, 12 and 20; warnings are
+# errors.
+FP32_LINT_CFGS := $(foreach u,add mul sqr wacc u2f,"$(call fp32_top,$(u)) -GPipeFast=1" \
+                    "$(call fp32_top,$(u)) -GStages=1" \
+                    "$(call fp32_top,$(u)) -GStages=$(lastword $(FP32_STAGES_$(u)))") \
+                  "pree_fp32_div -GPipeFast=1" $(foreach s,2 8 12 20,"pree_fp32_div -GStages=$(s)")
 lint-fp32: | $(DEPS_STAMP)
 	@set -e; for u in $(foreach u,add mul sqr div cmp wacc u2f,$(call fp32_top,$(u))) \
-	    "pree_fp32_div -GStages=2" "pree_fp32_div -GStages=8"; do \
+	    $(FP32_LINT_CFGS); do \
 	  set -- $$u; \
 	  echo "verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v"; \
 	  verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v; \
@@ -109,7 +165,7 @@ synth-fp32: | $(DEPS_STAMP)
 	@set -e; mkdir -p $(FP32_DIR)/synth; \
 	{ echo "| unit | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | LUT levels per stage | cells on longest path per stage |"; \
 	  echo "|---|---|---|---|---|---|---|---|"; } > $(FP32_DIR)/synth/resources.md.tmp; \
-	for u in $(FP32_UNITS); do \
+	for u in $(FP32_UNITS) $(FP32_FAST); do \
 	  echo "scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; \
 	  scripts/fp32_synth.sh $$u $(FP32_DIR)/synth >/dev/null || { echo "synth-fp32: $$u failed; rerun: scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; exit 1; }; \
 	  cat $(FP32_DIR)/synth/$$u.row >> $(FP32_DIR)/synth/resources.md.tmp; \

@@ -1,24 +1,46 @@
-// pree_fp32_add: IEEE-754 binary32 adder/subtractor, round to nearest even, 2 pipeline stages.
+// pree_fp32_add: IEEE-754 binary32 adder/subtractor, round to nearest even, Stages pipeline
+// stages (2 by default, the paper's; 7 with PipeFast = 1).
 //
 // y = a + b, or a - b when sub_i. Subnormal inputs and outputs in full, x - x = +0,
 // (-0) + (-0) = -0, overflow to a signed infinity. NaN result (x86-64 SSE rule): a NaN -> a
 // quieted; else b NaN -> b quieted, its sign not flipped by sub_i; else inf - inf -> 0xFFC00000.
 //
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
+//             clock rates (Stages = 7: every seam below registered). docs/fpga.md.
+//   Stages    1 .. 7, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
+//
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
 // y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Stage 1 (input -> s1 registers): classify, order the operands by magnitude, align the smaller
-//   significand (3 extra bits plus a sticky bit), add or subtract: an unnormalised 28-bit sum.
-//   Special results (NaN, infinity) are decided here and carried beside the datapath.
-// Stage 2 (s1 -> s2 registers): normalise the sum (one right shift on carry-out, or a left shift
-//   by its leading-zero count, limited so the exponent does not fall below 1: an exact
-//   subnormal), round to nearest even (pree_fp32_round), final mux with the special result.
+// The datapath is cut at seven seams (pree_fp32_pipe each, a register or a wire):
+//   A1 classify: special results (NaN, infinity) decided and carried beside the datapath;
+//      compare the magnitudes (binary32 magnitudes order as integers) and, beside the compare,
+//      both exponent differences clamped to shift amounts                           -> seam 1
+//   A2 order the operands by the comparison: L the larger, S the smaller             -> seam 2
+//   B  align: the smaller significand, extended by 3 bits, shifted right; every bit shifted
+//      out beyond those 3 is ORed into the lowest one (sticky)                       -> seam 3
+//   C  add or subtract: a 28-bit unnormalised sum                                    -> seam 4
+//   D  leading-zero count of the sum, limited to exponent - 1 (so that the exponent never
+//      falls below 1: the result is then an exact subnormal) by a sentinel bit that B
+//      places at bit 27 - exponent, zero test                                        -> seam 5
+//   E  normalise: one right shift on a carry out (the lost bit becomes sticky), else the
+//      left shift                                                                    -> seam 6
+//   F  round to nearest even (pree_fp32_round, Denorm = 0), final mux with the special
+//      result and the signed zero                                                    -> seam 7
+// Stage plan (registered seams per Stages; the last seam is always the output register):
+//   Stages 1: 7 | 2: 4 7 | 3: 3 5 7 | 4: 3 5 6 7 | 5: 2 3 5 6 7 | 6: 2 3 4 5 6 7 | 7: all
+// Stages = 2 is the paper's split (stage 1 = A1 A2 B C, stage 2 = D E F).
 // Why 3 extra bits suffice: with an exponent difference of 0 or 1 the aligned sum is exact; with
 // 2 or more, cancellation removes at most one leading bit, so guard and sticky survive.
 `default_nettype none
 
-module pree_fp32_add (
+module pree_fp32_add #(
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 7 : 2
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -29,9 +51,36 @@ module pree_fp32_add (
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = 2;
+  localparam LATENCY    = Stages;
+  localparam MAX_STAGES = 7;
 
-  // ---------------------------------------------------------------- stage 1: align and add
+  // Registers at seam s (1 .. 7) under the stage plan above.
+  function integer seam_regs;
+    input integer s;
+    reg [6:0] plan;    // bit s-1: seam s registered
+    begin
+      case (Stages)
+        1:       plan = 7'b1000000;
+        2:       plan = 7'b1001000;
+        3:       plan = 7'b1010100;
+        4:       plan = 7'b1110100;
+        5:       plan = 7'b1110110;
+        6:       plan = 7'b1111110;
+        default: plan = 7'b1111111;
+      endcase
+      seam_regs = plan[s-1] ? 1 : 0;
+    end
+  endfunction
+
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < 1 || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_fp32_add: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
+             PipeFast, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- A1: classify, compare
   wire       sign_a = a_i[31];
   wire       sign_b = b_i[31] ^ sub_i;          // effective sign of the second operand
   wire [7:0] exp_a  = a_i[30:23];
@@ -55,95 +104,174 @@ module pree_fp32_add (
     else                                special_d   = 1'b0;
   end
 
-  // Order by magnitude: L is the larger (or equal) operand, S the smaller.
+  // Order by magnitude (L the larger or equal operand, S the smaller) and the alignment
+  // shift, exp_l - exp_s clamped to 31: both differences are formed beside the magnitude
+  // comparison, and the comparison picks one in A2, so no subtraction follows the compare.
   wire        swap    = (b_i[30:0] > a_i[30:0]);
   wire [7:0]  exp_a1  = (exp_a == 8'd0) ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
   wire [7:0]  exp_b1  = (exp_b == 8'd0) ? 8'd1 : exp_b;
-  wire [23:0] man_a   = {exp_a != 8'd0, a_i[22:0]};
-  wire [23:0] man_b   = {exp_b != 8'd0, b_i[22:0]};
-  wire        sign_l  = swap ? sign_b : sign_a;
-  wire        sign_s  = swap ? sign_a : sign_b;
-  wire [7:0]  exp_l   = swap ? exp_b1 : exp_a1;
-  wire [7:0]  exp_s   = swap ? exp_a1 : exp_b1;
-  wire [23:0] man_l   = swap ? man_b  : man_a;
-  wire [23:0] man_s   = swap ? man_a  : man_b;
+  wire [7:0]  diff_ab = exp_a1 - exp_b1;
+  wire [7:0]  diff_ba = exp_b1 - exp_a1;
+  wire [4:0]  sh_ab   = (diff_ab[7:5] != 3'd0) ? 5'd31 : diff_ab[4:0];
+  wire [4:0]  sh_ba   = (diff_ba[7:5] != 3'd0) ? 5'd31 : diff_ba[4:0];
 
-  // Align the smaller significand; everything shifted past the 3 extra bits becomes sticky.
-  wire [7:0]  diff    = exp_l - exp_s;
-  wire [4:0]  sh      = (diff[7:5] != 3'd0) ? 5'd31 : diff[4:0];
-  wire [58:0] aligned = {man_s, 3'd0, 32'd0} >> sh;
-  wire [26:0] al_small   = {aligned[58:33], aligned[32] | (aligned[31:0] != 32'd0)};
-  wire [26:0] al_large   = {man_l, 3'd0};
-  wire        eff_sub = (sign_l != sign_s);
-  wire [27:0] sum_d   = eff_sub ? ({1'b0, al_large} - {1'b0, al_small})
-                                : ({1'b0, al_large} + {1'b0, al_small});
+  // Carried to the end: the special result.
+  localparam WS = 1 + 32;
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  wire          s1_valid;
+  wire [WS-1:0] s1_special;
+  wire          s1_sign_a, s1_sign_b, s1_swap;
+  wire [4:0]    s1_sh_ab, s1_sh_ba;
+  wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
-
-  reg [27:0] s1_sum_q;
-  reg [7:0]  s1_exp_q;
-  reg        s1_sign_q;
-  reg        s1_zero_sign_q;   // sign of an exact zero sum: negative only for (-x) + (-x) = -0
-  reg        s1_special_q;
-  reg [31:0] s1_special_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_sum_q       <= sum_d;
-      s1_exp_q       <= exp_l;
-      s1_sign_q      <= sign_l;
-      s1_zero_sign_q <= sign_l & sign_s;
-      s1_special_q   <= special_d;
-      s1_special_y_q <= special_y_d;
-    end
-  end
-
-  // ---------------------------------------------------------------- stage 2: normalise, round
-  wire [4:0] lz;
-  pree_fp32_lzc #(.Width(27), .CntWidth(5)) u_lzc (
-    .x_i   (s1_sum_q[26:0]),
-    .cnt_o (lz)
+  pree_fp32_pipe #(.Width(WS + 3 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, sh_ab, sh_ba, a_i[30:0], b_i[30:0]}),
+    .valid_o (s1_valid),
+    .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_sh_ab, s1_sh_ba, s1_a, s1_b})
   );
 
-  // Left shift by the leading-zero count, but never below exponent 1 (then the result is an
-  // exact subnormal, which pree_fp32_round packs with exponent field 0).
-  wire [7:0]  exp_m1   = s1_exp_q - 8'd1;
-  wire [7:0]  lshift   = ({3'd0, lz} > exp_m1) ? exp_m1 : {3'd0, lz};
-  wire [26:0] man_left = s1_sum_q[26:0] << lshift;
-  wire        carry    = s1_sum_q[27];
+  // ---------------------------------------------------------------- A2: order the operands
+  wire [7:0]  s1_exp_a = s1_a[30:23];
+  wire [7:0]  s1_exp_b = s1_b[30:23];
+  wire [23:0] man_a    = {s1_exp_a != 8'd0, s1_a[22:0]};
+  wire [23:0] man_b    = {s1_exp_b != 8'd0, s1_b[22:0]};
+  wire [7:0]  exp_a1_q = (s1_exp_a == 8'd0) ? 8'd1 : s1_exp_a;
+  wire [7:0]  exp_b1_q = (s1_exp_b == 8'd0) ? 8'd1 : s1_exp_b;
+  wire        sign_l   = s1_swap ? s1_sign_b : s1_sign_a;
+  wire        sign_s   = s1_swap ? s1_sign_a : s1_sign_b;
+  wire [7:0]  exp_l    = s1_swap ? exp_b1_q  : exp_a1_q;
+  wire [23:0] man_l    = s1_swap ? man_b     : man_a;
+  wire [23:0] man_s    = s1_swap ? man_a     : man_b;
+  wire [4:0]  sh       = s1_swap ? s1_sh_ba  : s1_sh_ab;
 
-  wire [26:0] norm_man    = carry ? s1_sum_q[27:1] : man_left;
-  wire        norm_sticky = carry & s1_sum_q[0];
-  wire [9:0]  norm_exp    = carry ? ({2'b00, s1_exp_q} + 10'd1)
-                                  : ({2'b00, s1_exp_q} - {2'b00, lshift});
+  // Carried to the end: the special result, the sign of the larger operand and the sign of an
+  // exact zero sum (negative only for (-x) + (-x) = -0).
+  localparam WK = WS + 1 + 1;
+  wire [WK-1:0] keep_d = {s1_special, sign_l, sign_l & sign_s};
+
+  wire          s2_valid;
+  wire [WK-1:0] s2_keep;
+  wire          s2_eff_sub;
+  wire [7:0]    s2_exp;
+  wire [4:0]    s2_sh;
+  wire [23:0]   s2_man_l, s2_man_s;
+
+  pree_fp32_pipe #(.Width(WK + 1 + 8 + 5 + 24 + 24), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({keep_d, sign_l != sign_s, exp_l, sh, man_l, man_s}),
+    .valid_o (s2_valid), .q_o ({s2_keep, s2_eff_sub, s2_exp, s2_sh, s2_man_l, s2_man_s})
+  );
+
+  // ---------------------------------------------------------------- B: align
+  // The bits that the shift drops, below the 3 extra bits, are found with a mask of the low
+  // s2_sh bits beside the shifter rather than after it.
+  wire [26:0] aligned  = {s2_man_s, 3'd0} >> s2_sh;
+  wire [26:0] dropped  = ~(27'h7FF_FFFF << s2_sh);
+  wire        lost     = (({s2_man_s, 3'd0} & dropped) != 27'd0);
+  wire [26:0] al_small = {aligned[26:1], aligned[0] | lost};
+
+  // The normalising left shift may not take the exponent below 1, so it is at most exp - 1: a
+  // sentinel one at bit 27 - exp of the sum's 27 low bits (none when exp >= 28) makes the
+  // leading-zero count of D stop there by itself, with no compare after the count.
+  wire [26:0] floor_d  = (s2_exp <= 8'd27) ? (27'd1 << (8'd27 - s2_exp)) : 27'd0;
+
+  wire          s3_valid;
+  wire [WK-1:0] s3_keep;
+  wire          s3_eff_sub;
+  wire [7:0]    s3_exp;
+  wire [26:0]   s3_floor;
+  wire [23:0]   s3_man_l;
+  wire [26:0]   s3_al_small;
+
+  pree_fp32_pipe #(.Width(WK + 1 + 8 + 27 + 24 + 27), .Regs(seam_regs(3))) u_seam3 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
+    .d_i   ({s2_keep, s2_eff_sub, s2_exp, floor_d, s2_man_l, al_small}),
+    .valid_o (s3_valid), .q_o ({s3_keep, s3_eff_sub, s3_exp, s3_floor, s3_man_l, s3_al_small})
+  );
+
+  // ---------------------------------------------------------------- C: add or subtract
+  wire [26:0] al_large = {s3_man_l, 3'd0};
+  wire [27:0] sum_d    = s3_eff_sub ? ({1'b0, al_large} - {1'b0, s3_al_small})
+                                    : ({1'b0, al_large} + {1'b0, s3_al_small});
+
+  wire          s4_valid;
+  wire [WK-1:0] s4_keep;
+  wire [7:0]    s4_exp;
+  wire [26:0]   s4_floor;
+  wire [27:0]   s4_sum;
+
+  pree_fp32_pipe #(.Width(WK + 8 + 27 + 28), .Regs(seam_regs(4))) u_seam4 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
+    .d_i   ({s3_keep, s3_exp, s3_floor, sum_d}),
+    .valid_o (s4_valid), .q_o ({s4_keep, s4_exp, s4_floor, s4_sum})
+  );
+
+  // ---------------------------------------------------------------- D: leading zeros
+  // The left shift: the leading-zero count, but never below exponent 1 (the sentinel of B).
+  wire [4:0] lshift;
+  pree_fp32_lzc #(.Width(27), .CntWidth(5)) u_lzc (
+    .x_i   (s4_sum[26:0] | s4_floor),
+    .cnt_o (lshift)
+  );
+
+  wire       sum_zero = (s4_sum == 28'd0);
+
+  wire          s5_valid;
+  wire [WK-1:0] s5_keep;
+  wire [7:0]    s5_exp;
+  wire [27:0]   s5_sum;
+  wire [4:0]    s5_lshift;
+  wire          s5_zero;
+
+  pree_fp32_pipe #(.Width(WK + 8 + 28 + 5 + 1), .Regs(seam_regs(5))) u_seam5 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
+    .d_i   ({s4_keep, s4_exp, s4_sum, lshift, sum_zero}),
+    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_sum, s5_lshift, s5_zero})
+  );
+
+  // ---------------------------------------------------------------- E: normalise
+  wire        carry       = s5_sum[27];
+  wire [26:0] man_left    = s5_sum[26:0] << s5_lshift;
+  wire [26:0] norm_man    = carry ? s5_sum[27:1] : man_left;
+  wire        norm_sticky = carry & s5_sum[0];
+  wire [9:0]  norm_exp    = carry ? ({2'b00, s5_exp} + 10'd1)
+                                  : ({2'b00, s5_exp} - {5'd0, s5_lshift});
+
+  wire          s6_valid;
+  wire [WK-1:0] s6_keep;
+  wire          s6_zero;
+  wire [9:0]    s6_exp;
+  wire [26:0]   s6_man;
+  wire          s6_sticky;
+
+  pree_fp32_pipe #(.Width(WK + 1 + 10 + 27 + 1), .Regs(seam_regs(6))) u_seam6 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
+    .d_i   ({s5_keep, s5_zero, norm_exp, norm_man, norm_sticky}),
+    .valid_o (s6_valid), .q_o ({s6_keep, s6_zero, s6_exp, s6_man, s6_sticky})
+  );
+
+  // ---------------------------------------------------------------- F: round, final mux
+  wire        special, sign, zero_sign;
+  wire [31:0] special_y;
+  assign {special, special_y, sign, zero_sign} = s6_keep;
+
   wire [31:0] rounded;
-
   pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (s1_sign_q),
-    .exp_i    (norm_exp),
-    .man_i    (norm_man),
-    .sticky_i (norm_sticky),
+    .sign_i   (sign),
+    .exp_i    (s6_exp),
+    .man_i    (s6_man),
+    .sticky_i (s6_sticky),
     .y_o      (rounded)
   );
 
-  wire        sum_zero = (s1_sum_q == 28'd0);
-  wire [31:0] y_d      = s1_special_q ? s1_special_y_q
-                       : sum_zero     ? {s1_zero_sign_q, 31'd0}
-                       :                rounded;
+  wire [31:0] y_d = special ? special_y
+                  : s6_zero ? {zero_sign, 31'd0}
+                  :           rounded;
 
-  reg [31:0] s2_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) s2_y_q <= y_d;
-  end
-
-  assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s2_y_q;
+  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(7))) u_seam7 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid), .d_i (y_d),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

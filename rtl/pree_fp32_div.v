@@ -1,30 +1,50 @@
 // pree_fp32_div: IEEE-754 binary32 divider, round to nearest even, fully pipelined (one new
-// division every cycle), Stages pipeline stages (4 by default, the paper's).
+// division every cycle), Stages pipeline stages (4 by default, the paper's; 31 with
+// PipeFast = 1).
 //
 // y = a / b. Subnormal inputs and outputs in full, signed zeros, overflow to a signed infinity,
 // x / 0 -> signed infinity for finite non-zero x. NaN result (x86-64 SSE rule): a NaN -> a
 // quieted; else b NaN -> b quieted; else 0 / 0 or inf / inf -> 0xFFC00000.
 //
-// Parameter Stages (2 .. 8): the latency. 4 matches the paper; 8 halves the logic depth per
-// stage for FPGA clock rates. Every configuration is bit-identical and passes the same benches.
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 4); 1: the deep configuration for FPGA
+//             clock rates (Stages = 31: every seam below registered, one division step per
+//             stage). docs/fpga.md.
+//   Stages    2 .. 31, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
-// appears on y_o with valid_o exactly LATENCY (= Stages) edges later; one operation may enter
-// every cycle. y_o holds its last value while valid_o is low. Only the valid bits are reset.
+// appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
+// y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Datapath: both significands are normalised (pree_fp32_unpack), so their quotient lies in
-// (1/2, 2). A restoring radix-2 array (pree_fp32_div_steps) produces 26 quotient bits of
-// weights 2^0 .. 2^-25: 24 significant bits and a guard bit whichever binade the quotient is in;
-// the final remainder (non-zero: inexact) and the last bit form the sticky bit.
-// Stage 1 also unpacks and decides special results (carried beside the datapath to the final
-// mux); the last stage also normalises by one bit and rounds (pree_fp32_round). The quotient
-// bits are spread so that the unpack and the rounding each weigh about three division steps:
-// stage k ends with BITS_DONE(k) = round(32 k / Stages) - 3 bits (clamped to 0 .. 26), which
-// gives 5 / 8 / 8 / 5 bits for Stages = 4 and 1 / 4 / 4 / 4 / 4 / 4 / 4 / 1 for Stages = 8.
+// Datapath: both significands are normalised, so their quotient lies in (1/2, 2). A restoring
+// radix-2 array (pree_fp32_div_steps) produces 26 quotient bits of weights 2^0 .. 2^-25: 24
+// significant bits and a guard bit whichever binade the quotient is in; the final remainder
+// (non-zero: inexact) and the last bit form the sticky bit. It is cut at 31 seams (items; a
+// pree_fp32_pipe after each, a register or a wire):
+//   item 1      U1: classify both operands, count the leading zeros of their significands
+//                   (pree_fp32_unpack_lz); special results decided here and carried beside the
+//                   datapath to the final mux
+//   item 2      U2: normalise the significands (pree_fp32_unpack_norm), quotient exponent
+//   items 3-28  one division step each (quotient bits 1 .. 26)
+//   item 29     N: normalise by one bit, sticky bit, the denormalising shift amount
+//                  (pree_fp32_denorm_amt, for both binades, picked by the quotient's top bit)
+//   item 30     D: denormalise (pree_fp32_denorm)
+//   item 31     R: round (pree_fp32_round, Denorm = 0), final mux with the special result
+// Stage plan: stage k (k = 1 .. Stages) ends at item CUT(k), CUT(Stages) = 31.
+//   Stages 2 .. 8 (the paper's 4 and the earlier 8 included): the split of the previous
+//   versions, unpack in stage 1 and normalise/round in the last stage, quotient bits spread so
+//   that each of these weighs about three division steps: stage k < Stages ends with
+//   round(32 k / Stages) - 3 bits, CUT(k) = 2 + that: 5 / 8 / 8 / 5 bits for Stages = 4,
+//   1 / 4 / 4 / 4 / 4 / 4 / 4 / 1 for Stages = 8.
+//   Stages 9 .. 31: the 31 items spread evenly, CUT(k) = round(31 k / Stages): Stages = 12 is
+//   U1 U2 +1 bit | 3 bits | 2 | 3 | 2 | 3 | 2 | 3 | 2 | 3 | 2 bits N | D R; Stages = 20 has
+//   1 or 2 items per stage; Stages = 31 one item per stage.
 `default_nettype none
 
 module pree_fp32_div #(
-  parameter Stages = 4
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 31 : 4
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -35,37 +55,54 @@ module pree_fp32_div #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = Stages;
-  localparam QW      = 26;                      // quotient bits
-  // Per-stage pipeline word: remainder, quotient, divisor, exponent, sign, special flag and value.
-  localparam W       = 25 + QW + 24 + 10 + 1 + 1 + 32;
+  localparam LATENCY    = Stages;
+  localparam MIN_STAGES = 2;
+  localparam MAX_STAGES = 31;
+  localparam ITEMS      = 31;
+  localparam QW         = 26;                    // quotient bits
+  localparam STEP0      = 2;                     // items before the first division step
 
-  // Quotient bits completed at the end of stage s (s = 0 .. Stages).
-  function integer bits_done;
-    input integer s;
+  // The item that ends stage k.
+  function integer cut_item;
+    input integer k;
     begin
-      bits_done = (s * 32 + Stages / 2) / Stages - 3;
-      if (s == 0 || bits_done < 0) bits_done = 0;
-      if (s == Stages || bits_done > QW) bits_done = QW;
+      if (k >= Stages)     cut_item = ITEMS;
+      else if (Stages <= 8) cut_item = STEP0 + (k * 32 + Stages / 2) / Stages - 3;
+      else                  cut_item = (k * ITEMS + Stages / 2) / Stages;
     end
   endfunction
 
-  // ---------------------------------------------------------------- stage 1 input: unpack
-  wire        sign_a, sign_b, zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
-  wire [9:0]  exp_a, exp_b;
-  wire [23:0] man_a, man_b;
+  // Registers after item s: 1 when some stage ends there.
+  function integer seam_regs;
+    input integer s;
+    integer k;
+    begin
+      seam_regs = 0;
+      for (k = 1; k <= MAX_STAGES; k = k + 1)
+        if (k <= Stages && cut_item(k) == s) seam_regs = 1;
+    end
+  endfunction
 
-  pree_fp32_unpack u_unpack_a (
-    .x_i (a_i), .sign_o (sign_a), .exp_o (exp_a), .man_o (man_a),
-    .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < MIN_STAGES || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_fp32_div: Stages = %0d (PipeFast = %0d), supported %0d .. %0d", Stages,
+             PipeFast, MIN_STAGES, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- item 1, U1: classify, count
+  wire        zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
+  wire [4:0]  lz_a, lz_b;
+
+  pree_fp32_unpack_lz u_lz_a (
+    .x_i (a_i[30:0]), .lz_o (lz_a), .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
   );
-  pree_fp32_unpack u_unpack_b (
-    .x_i (b_i), .sign_o (sign_b), .exp_o (exp_b), .man_o (man_b),
-    .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
+  pree_fp32_unpack_lz u_lz_b (
+    .x_i (b_i[30:0]), .lz_o (lz_b), .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
   );
 
-  wire       sign_y = sign_a ^ sign_b;
-  wire [9:0] exp_d  = exp_a - exp_b + 10'd127;   // biased exponent of quotient bit 2^0
+  wire sign_y = a_i[31] ^ b_i[31];
 
   // Special result: NaN rule first, then invalid operations, infinities and zeros.
   reg        special_d;
@@ -81,69 +118,139 @@ module pree_fp32_div #(
     else                                             special_d   = 1'b0;
   end
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  // Carried to the end: the special result and the sign.
+  localparam WK = 1 + 32 + 1;
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
+  wire          s1_valid;
+  wire [WK-1:0] s1_keep;
+  wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
+  wire [4:0]    s1_lz_a, s1_lz_b;
 
-  // word[k] is what stage k+1 works on: word[0] comes from the inputs (the dividend significand
-  // seeds the partial remainder: man_a < 2^24 <= 2 * man_b), word[k] is the stage-k register.
-  wire [W-1:0] word [0:Stages-1];
-  assign word[0] = {{1'b0, man_a}, {QW{1'b0}}, man_b, exp_d, sign_y, special_d, special_y_d};
+  pree_fp32_pipe #(.Width(WK + 62 + 10), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({special_d, special_y_d, sign_y, a_i[30:0], b_i[30:0], lz_a, lz_b}),
+    .valid_o (s1_valid), .q_o ({s1_keep, s1_a, s1_b, s1_lz_a, s1_lz_b})
+  );
 
-  genvar k;
+  // ---------------------------------------------------------------- item 2, U2: normalise
+  wire [9:0]  exp_a, exp_b;
+  wire [23:0] man_a, man_b;
+
+  pree_fp32_unpack_norm u_norm_a (.x_i (s1_a), .lz_i (s1_lz_a), .exp_o (exp_a), .man_o (man_a));
+  pree_fp32_unpack_norm u_norm_b (.x_i (s1_b), .lz_i (s1_lz_b), .exp_o (exp_b), .man_o (man_b));
+
+  wire [9:0] exp_d = exp_a - exp_b + 10'd127;   // biased exponent of quotient bit 2^0
+
+  // The division word: partial remainder, quotient bits, divisor, exponent, carried bits.
+  localparam W = 25 + QW + 24 + 10 + WK;
+
+  // word[j] / valid[j]: after j division steps (word[0]: the dividend significand seeds the
+  // partial remainder, man_a < 2^24 <= 2 * man_b).
+  wire [W-1:0] word  [0:QW];
+  wire         valid [0:QW];
+
+  pree_fp32_pipe #(.Width(W), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({1'b0, man_a, {QW{1'b0}}, man_b, exp_d, s1_keep}),
+    .valid_o (valid[0]), .q_o (word[0])
+  );
+
+  // ---------------------------------------------------------------- items 3 .. 28: the steps
+  genvar j;
   generate
-    for (k = 1; k <= Stages; k = k + 1) begin : g_stage
-      // Unpack this stage's input word.
-      wire [24:0] rem_in  = word[k-1][W-1 -: 25];
-      wire [QW-1:0] quo_in = word[k-1][W-26 -: QW];
-      wire [23:0] den     = word[k-1][W-26-QW -: 24];
-      wire [9:0]  exp_v   = word[k-1][W-50-QW -: 10];
-      wire        sign_v  = word[k-1][33];
-      wire        spec_v  = word[k-1][32];
-      wire [31:0] spec_y  = word[k-1][31:0];
-      wire        load    = (k == 1) ? valid_i : valid_q[(k > 1) ? k - 2 : 0];
-
+    for (j = 1; j <= QW; j = j + 1) begin : g_step
+      wire [24:0]   rem_in = word[j-1][W-1 -: 25];
+      wire [QW-1:0] quo_in = word[j-1][W-26 -: QW];
+      wire [23:0]   den    = word[j-1][W-26-QW -: 24];
+      wire [10+WK-1:0] rest = word[j-1][10+WK-1:0];    // exponent and carried bits
       wire [24:0]   rem_out;
       wire [QW-1:0] quo_out;
-      pree_fp32_div_steps #(.Steps(bits_done(k) - bits_done(k - 1))) u_steps (
+
+      pree_fp32_div_steps #(.Steps(1)) u_steps (
         .rem_i (rem_in), .den_i (den), .quo_i (quo_in), .rem_o (rem_out), .quo_o (quo_out)
       );
 
-      if (k < Stages) begin : g_mid
-        reg [W-1:0] word_q;
-        always @(posedge clk_i) begin
-          if (load) word_q <= {rem_out, quo_out, den, exp_v, sign_v, spec_v, spec_y};
-        end
-        assign word[k] = word_q;
-      end else begin : g_last
-        // Quotient in [1, 2): bits 25..2 significant, bit 1 guard; in (1/2, 1): bits 24..1, 0.
-        wire        top      = quo_out[QW-1];
-        wire [26:0] norm_man = top ? {quo_out[25:1], 2'b00} : {quo_out[24:0], 2'b00};
-        wire        sticky   = (rem_out != 25'd0) | (top & quo_out[0]);
-        wire [9:0]  norm_exp = exp_v - {9'd0, ~top};
-        wire [31:0] rounded;
-
-        pree_fp32_round #(.Denorm(1)) u_round (
-          .sign_i   (sign_v),
-          .exp_i    (norm_exp),
-          .man_i    (norm_man),
-          .sticky_i (sticky),
-          .y_o      (rounded)
-        );
-
-        reg [31:0] y_q;
-        always @(posedge clk_i) begin
-          if (load) y_q <= spec_v ? spec_y : rounded;
-        end
-        assign y_o = y_q;
-      end
+      pree_fp32_pipe #(.Width(W), .Regs(seam_regs(STEP0 + j))) u_seam (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid[j-1]),
+        .d_i   ({rem_out, quo_out, den, rest}),
+        .valid_o (valid[j]), .q_o (word[j])
+      );
     end
   endgenerate
 
-  assign valid_o = valid_q[LATENCY-1];
+  // ---------------------------------------------------------------- item 29, N: normalise
+  wire [24:0]   rem    = word[QW][W-1 -: 25];
+  wire [QW-1:0] quo    = word[QW][W-26 -: QW];
+  wire [9:0]    exp_q  = word[QW][10+WK-1 -: 10];
+  wire [WK-1:0] keep_q = word[QW][WK-1:0];
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [23:0]   den_q  = word[QW][W-26-QW -: 24];    // the divisor is not needed after the steps
+  /* verilator lint_on UNUSEDSIGNAL */
+
+  // Quotient in [1, 2): bits 25..2 significant, bit 1 guard; in (1/2, 1): bits 24..1, 0.
+  wire        top         = quo[QW-1];
+  wire [26:0] norm_man    = top ? {quo[25:1], 2'b00} : {quo[24:0], 2'b00};
+  wire        norm_sticky = (rem != 25'd0) | (top & quo[0]);
+  wire [9:0]  norm_exp    = exp_q - {9'd0, ~top};
+
+  // The denormalising shift for either binade, picked by the quotient's top bit.
+  wire       tiny_0, tiny_1;
+  wire [4:0] sh_0, sh_1;
+  pree_fp32_denorm_amt u_amt_0 (.exp_i (exp_q - 10'd1), .tiny_o (tiny_0), .sh_o (sh_0));
+  pree_fp32_denorm_amt u_amt_1 (.exp_i (exp_q),         .tiny_o (tiny_1), .sh_o (sh_1));
+
+  wire          n_valid;
+  wire [WK-1:0] n_keep;
+  wire [9:0]    n_exp;
+  wire [26:0]   n_man;
+  wire          n_sticky, n_tiny;
+  wire [4:0]    n_sh;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(STEP0 + QW + 1))) u_seam_n (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid[QW]),
+    .d_i   ({keep_q, norm_exp, norm_man, norm_sticky, top ? tiny_1 : tiny_0, top ? sh_1 : sh_0}),
+    .valid_o (n_valid), .q_o ({n_keep, n_exp, n_man, n_sticky, n_tiny, n_sh})
+  );
+
+  // ---------------------------------------------------------------- item 30, D: denormalise
+  wire [26:0] den_man;
+  wire        den_sticky;
+
+  pree_fp32_denorm u_denorm (
+    .tiny_i (n_tiny), .sh_i (n_sh), .man_i (n_man), .sticky_i (n_sticky),
+    .man_o (den_man), .sticky_o (den_sticky)
+  );
+
+  wire          d_valid;
+  wire [WK-1:0] d_keep;
+  wire [9:0]    d_exp;
+  wire [26:0]   d_man;
+  wire          d_sticky;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(STEP0 + QW + 2))) u_seam_d (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (n_valid),
+    .d_i   ({n_keep, n_exp, den_man, den_sticky}),
+    .valid_o (d_valid), .q_o ({d_keep, d_exp, d_man, d_sticky})
+  );
+
+  // ---------------------------------------------------------------- item 31, R: round
+  wire        special, sign;
+  wire [31:0] special_y;
+  assign {special, special_y, sign} = d_keep;
+
+  wire [31:0] rounded;
+  pree_fp32_round #(.Denorm(0)) u_round (
+    .sign_i   (sign),
+    .exp_i    (d_exp),
+    .man_i    (d_man),
+    .sticky_i (d_sticky),
+    .y_o      (rounded)
+  );
+
+  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(ITEMS))) u_seam_r (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (d_valid),
+    .d_i   (special ? special_y : rounded),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

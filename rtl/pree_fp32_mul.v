@@ -1,22 +1,53 @@
-// pree_fp32_mul: IEEE-754 binary32 multiplier, round to nearest even, 2 pipeline stages.
+// pree_fp32_mul: IEEE-754 binary32 multiplier, round to nearest even, Stages pipeline stages
+// (2 by default, the paper's; 7 with PipeFast = 1).
 //
 // y = a * b. Subnormal inputs and outputs in full, signed zeros, overflow to a signed infinity.
 // NaN result (x86-64 SSE rule): a NaN -> a quieted; else b NaN -> b quieted; else
 // 0 * inf or inf * 0 -> 0xFFC00000.
 //
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
+//             clock rates (Stages = 7). docs/fpga.md.
+//   Stages    1 .. 8, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
+//
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
 // y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Stage 1 (input -> s1 registers): unpack both operands (a subnormal significand is normalised
-//   by its leading-zero count, pree_fp32_unpack), 24 x 24 -> 48-bit significand product,
-//   exponent sum; special results decided here and carried beside the datapath.
-// Stage 2 (s1 -> s2 registers): the product of two normalised significands lies in [2^46, 2^48),
-//   so normalisation is a one-bit select; pree_fp32_round then shifts a tiny result right
-//   into the subnormal range and rounds exactly once; final mux with the special result.
+// The datapath is cut at eight seams (pree_fp32_pipe each, a register or a wire):
+//   A1 classify both operands and count the leading zeros of their significands
+//      (pree_fp32_unpack_lz); special results decided here and carried beside the datapath
+//                                                                                   -> seam 1
+//   A2 normalise the significands (a subnormal one shifted left by its count,
+//      pree_fp32_unpack_norm), exponent sum, sign                                   -> seam 2
+//   B  the significand product. With seam 3 registered it is four partial products of 17-bit
+//      and 7-bit pieces (a = ah * 2^17 + al, b = bh * 2^17 + bl; each product at most
+//      17 x 17, so it fits one DSP multiplier on both 7-series (25 x 18 signed) and ECP5
+//      (18 x 18)), each with a register directly before (seam 2) and after (seam 3) its `*`,
+//      which the DSP blocks' own input and output registers can take; otherwise one
+//      24 x 24 `*`                                                                  -> seam 3
+//   C  the cross terms: mid_sum = al * bh + ah * bl                                 -> seam 4
+//   D  the 48-bit product: {ah * bh, al * bl} + mid_sum * 2^17                     -> seam 5
+//      (seams 3 and 4 are only registered with the split product; without it B, C, D are the
+//      single `*`)
+//   E  normalise: the product of two normalised significands lies in [2^46, 2^48), so a
+//      one-bit select, the sticky bit and the exponent; the denormalising shift amount
+//      (pree_fp32_denorm_amt, formed for both binades and picked by the select)     -> seam 6
+//   F  denormalise: a tiny result shifted right into the subnormal range
+//      (pree_fp32_denorm)                                                           -> seam 7
+//   G  round to nearest even (pree_fp32_round, Denorm = 0; rounded exactly once), final mux
+//      with the special result                                                      -> seam 8
+// Stage plan (registered seams per Stages; the last seam is always the output register):
+//   Stages 1: 8 | 2: 5 8 | 3: 2 5 8 | 4: 2 5 7 8 | 5: 2 3 5 7 8 | 6: 2 3 5 6 7 8 |
+//   7: 1 2 3 5 6 7 8 | 8: all
+// Stages = 2 is the paper's split (stage 1 = A1 A2 B C D, stage 2 = E F G).
 `default_nettype none
 
-module pree_fp32_mul (
+module pree_fp32_mul #(
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 7 : 2
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -26,25 +57,51 @@ module pree_fp32_mul (
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = 2;
+  localparam LATENCY    = Stages;
+  localparam MAX_STAGES = 8;
 
-  // ---------------------------------------------------------------- stage 1: unpack, multiply
-  wire        sign_a, sign_b, zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
-  wire [9:0]  exp_a, exp_b;
-  wire [23:0] man_a, man_b;
+  // Registers at seam s (1 .. 8) under the stage plan above.
+  function integer seam_regs;
+    input integer s;
+    reg [7:0] plan;    // bit s-1: seam s registered
+    begin
+      case (Stages)
+        1:       plan = 8'b10000000;
+        2:       plan = 8'b10010000;
+        3:       plan = 8'b10010010;
+        4:       plan = 8'b11010010;
+        5:       plan = 8'b11010110;
+        6:       plan = 8'b11110110;
+        7:       plan = 8'b11110111;
+        default: plan = 8'b11111111;
+      endcase
+      seam_regs = plan[s-1] ? 1 : 0;
+    end
+  endfunction
 
-  pree_fp32_unpack u_unpack_a (
-    .x_i (a_i), .sign_o (sign_a), .exp_o (exp_a), .man_o (man_a),
-    .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
+  // The split product (four partial products) when its products are registered.
+  localparam SPLIT = (seam_regs(3) != 0);
+
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < 1 || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_fp32_mul: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
+             PipeFast, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- A1: classify, count
+  wire        zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
+  wire [4:0]  lz_a, lz_b;
+
+  pree_fp32_unpack_lz u_lz_a (
+    .x_i (a_i[30:0]), .lz_o (lz_a), .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
   );
-  pree_fp32_unpack u_unpack_b (
-    .x_i (b_i), .sign_o (sign_b), .exp_o (exp_b), .man_o (man_b),
-    .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
+  pree_fp32_unpack_lz u_lz_b (
+    .x_i (b_i[30:0]), .lz_o (lz_b), .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
   );
 
-  wire        sign_y = sign_a ^ sign_b;
-  wire [47:0] prod_d = man_a * man_b;
-  wire [9:0]  exp_d  = exp_a + exp_b - 10'd127;   // biased exponent of product bit 46
+  wire        sign_y = a_i[31] ^ b_i[31];
 
   // Special result: NaN rule first, then infinities and zeros.
   reg        special_d;
@@ -60,52 +117,174 @@ module pree_fp32_mul (
     else                                           special_d   = 1'b0;
   end
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  // Carried to the end: the special result and the sign.
+  localparam WK = 1 + 32 + 1;
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
+  wire          s1_valid;
+  wire [WK-1:0] s1_keep;
+  wire [30:0]   s1_a, s1_b;        // the operands' magnitudes
+  wire [4:0]    s1_lz_a, s1_lz_b;
 
-  reg [47:0] s1_prod_q;
-  reg [9:0]  s1_exp_q;
-  reg        s1_sign_q;
-  reg        s1_special_q;
-  reg [31:0] s1_special_y_q;
+  pree_fp32_pipe #(.Width(WK + 62 + 10), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({special_d, special_y_d, sign_y, a_i[30:0], b_i[30:0], lz_a, lz_b}),
+    .valid_o (s1_valid), .q_o ({s1_keep, s1_a, s1_b, s1_lz_a, s1_lz_b})
+  );
 
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_prod_q      <= prod_d;
-      s1_exp_q       <= exp_d;
-      s1_sign_q      <= sign_y;
-      s1_special_q   <= special_d;
-      s1_special_y_q <= special_y_d;
+  // ---------------------------------------------------------------- A2: normalise operands
+  wire [9:0]  exp_a, exp_b;
+  wire [23:0] man_a, man_b;
+
+  pree_fp32_unpack_norm u_norm_a (.x_i (s1_a), .lz_i (s1_lz_a), .exp_o (exp_a), .man_o (man_a));
+  pree_fp32_unpack_norm u_norm_b (.x_i (s1_b), .lz_i (s1_lz_b), .exp_o (exp_b), .man_o (man_b));
+
+  wire [9:0]  exp_d = exp_a + exp_b - 10'd127;   // biased exponent of product bit 46
+
+  wire          s2_valid;
+  wire [WK-1:0] s2_keep;
+  wire [9:0]    s2_exp;
+  wire [23:0]   s2_man_a, s2_man_b;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 48), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({s1_keep, exp_d, man_a, man_b}),
+    .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_man_a, s2_man_b})
+  );
+
+  // ---------------------------------------------------------------- B, C, D: the product
+  wire          s5_valid_d;
+  wire [WK-1:0] s5_keep_d;
+  wire [9:0]    s5_exp_d;
+  wire [47:0]   prod_d;
+
+  generate
+    if (SPLIT) begin : g_split
+      // B: four partial products, each `*` between two registers (seams 1 and 2).
+      wire [33:0] pp_ll = s2_man_a[16:0]  * s2_man_b[16:0];
+      wire [23:0] pp_lh = s2_man_a[16:0]  * s2_man_b[23:17];
+      wire [23:0] pp_hl = s2_man_a[23:17] * s2_man_b[16:0];
+      wire [13:0] pp_hh = s2_man_a[23:17] * s2_man_b[23:17];
+
+      wire          s3_valid;
+      wire [WK-1:0] s3_keep;
+      wire [9:0]    s3_exp;
+      wire [33:0]   s3_ll;
+      wire [23:0]   s3_lh, s3_hl;
+      wire [13:0]   s3_hh;
+
+      pree_fp32_pipe #(.Width(WK + 10 + 34 + 24 + 24 + 14), .Regs(seam_regs(3))) u_seam3 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
+        .d_i   ({s2_keep, s2_exp, pp_ll, pp_lh, pp_hl, pp_hh}),
+        .valid_o (s3_valid), .q_o ({s3_keep, s3_exp, s3_ll, s3_lh, s3_hl, s3_hh})
+      );
+
+      // C: the cross terms.
+      wire [24:0] mid_sum = {1'b0, s3_lh} + {1'b0, s3_hl};
+
+      wire          s4_valid;
+      wire [WK-1:0] s4_keep;
+      wire [9:0]    s4_exp;
+      wire [47:0]   s4_outer;
+      wire [24:0]   s4_mid;
+
+      pree_fp32_pipe #(.Width(WK + 10 + 48 + 25), .Regs(seam_regs(4))) u_seam4 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
+        .d_i   ({s3_keep, s3_exp, s3_hh, s3_ll, mid_sum}),
+        .valid_o (s4_valid), .q_o ({s4_keep, s4_exp, s4_outer, s4_mid})
+      );
+
+      // D: the product (below 2^48: it is the product of two 24-bit numbers).
+      assign prod_d     = s4_outer + {6'd0, s4_mid, 17'd0};
+      assign s5_valid_d = s4_valid;
+      assign s5_keep_d  = s4_keep;
+      assign s5_exp_d   = s4_exp;
+    end else begin : g_single
+      // B, C, D: one 24 x 24 product (seams 2 and 3 are wires in these plans).
+      assign prod_d     = s2_man_a * s2_man_b;
+      assign s5_valid_d = s2_valid;
+      assign s5_keep_d  = s2_keep;
+      assign s5_exp_d   = s2_exp;
     end
-  end
+  endgenerate
 
-  // ---------------------------------------------------------------- stage 2: normalise, round
-  wire        top      = s1_prod_q[47];
-  wire [26:0] norm_man = top ? s1_prod_q[47:21] : s1_prod_q[46:20];
-  wire        sticky   = top ? (s1_prod_q[20:0] != 21'd0) : (s1_prod_q[19:0] != 20'd0);
-  wire [9:0]  norm_exp = s1_exp_q + {9'd0, top};
+  wire          s5_valid;
+  wire [WK-1:0] s5_keep;
+  wire [9:0]    s5_exp;
+  wire [47:0]   s5_prod;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 48), .Regs(seam_regs(5))) u_seam5 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid_d),
+    .d_i   ({s5_keep_d, s5_exp_d, prod_d}),
+    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_prod})
+  );
+
+  // ---------------------------------------------------------------- E: normalise
+  wire        top         = s5_prod[47];
+  wire [26:0] norm_man    = top ? s5_prod[47:21] : s5_prod[46:20];
+  wire        norm_sticky = top ? (s5_prod[20:0] != 21'd0) : (s5_prod[19:0] != 20'd0);
+  wire [9:0]  norm_exp    = s5_exp + {9'd0, top};
+
+  // The denormalising shift for either binade, picked by the one-bit normalisation.
+  wire       tiny_0, tiny_1;
+  wire [4:0] sh_0, sh_1;
+  pree_fp32_denorm_amt u_amt_0 (.exp_i (s5_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
+  pree_fp32_denorm_amt u_amt_1 (.exp_i (s5_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
+  wire       norm_tiny = top ? tiny_1 : tiny_0;
+  wire [4:0] norm_sh   = top ? sh_1 : sh_0;
+
+  wire          s6_valid;
+  wire [WK-1:0] s6_keep;
+  wire [9:0]    s6_exp;
+  wire [26:0]   s6_man;
+  wire          s6_sticky;
+  wire          s6_tiny;
+  wire [4:0]    s6_sh;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(6))) u_seam6 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
+    .d_i   ({s5_keep, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
+    .valid_o (s6_valid), .q_o ({s6_keep, s6_exp, s6_man, s6_sticky, s6_tiny, s6_sh})
+  );
+
+  // ---------------------------------------------------------------- F: denormalise
+  wire [26:0] den_man;
+  wire        den_sticky;
+
+  pree_fp32_denorm u_denorm (
+    .tiny_i (s6_tiny), .sh_i (s6_sh), .man_i (s6_man), .sticky_i (s6_sticky),
+    .man_o (den_man), .sticky_o (den_sticky)
+  );
+
+  wire          s7_valid;
+  wire [WK-1:0] s7_keep;
+  wire [9:0]    s7_exp;
+  wire [26:0]   s7_man;
+  wire          s7_sticky;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(7))) u_seam7 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
+    .d_i   ({s6_keep, s6_exp, den_man, den_sticky}),
+    .valid_o (s7_valid), .q_o ({s7_keep, s7_exp, s7_man, s7_sticky})
+  );
+
+  // ---------------------------------------------------------------- G: round, final mux
+  wire        special, sign;
+  wire [31:0] special_y;
+  assign {special, special_y, sign} = s7_keep;
+
   wire [31:0] rounded;
-
-  pree_fp32_round #(.Denorm(1)) u_round (
-    .sign_i   (s1_sign_q),
-    .exp_i    (norm_exp),
-    .man_i    (norm_man),
-    .sticky_i (sticky),
+  pree_fp32_round #(.Denorm(0)) u_round (
+    .sign_i   (sign),
+    .exp_i    (s7_exp),
+    .man_i    (s7_man),
+    .sticky_i (s7_sticky),
     .y_o      (rounded)
   );
 
-  reg [31:0] s2_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) s2_y_q <= s1_special_q ? s1_special_y_q : rounded;
-  end
-
-  assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s2_y_q;
+  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(8))) u_seam8 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s7_valid),
+    .d_i   (special ? special_y : rounded),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

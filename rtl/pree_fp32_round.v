@@ -9,8 +9,14 @@
 // Parameter Denorm:
 //   1: exp_i may be <= 0: the significand is first shifted right by 1 - exp_i, the shifted-out
 //      bits joining the sticky bit, so a subnormal result is rounded exactly once.
+//      (A shift by 27 .. 31 leaves 0 and makes the sticky bit the OR of all of man_i, as
+//      the capped shift of the original 59-bit formulation did.)
 //   0: the caller guarantees exp_i >= 1 and may pass man_i[26] = 0 together with exp_i = 1 for
-//      an (exact) subnormal or zero result; no right shift is built.
+//      an (exact) subnormal or zero result; no right shift is built. The output of
+//      pree_fp32_denorm (a shifted significand, man_i[26] = 0, with exp_i <= 0) is also valid
+//      input: Denorm = 1 is exactly pree_fp32_denorm_amt and pree_fp32_denorm followed by
+//      Denorm = 0, which is how the deep pipelines place registers between the shift amount,
+//      the shift and the rounding.
 // In both cases the exponent field is exp_i when man_i[26] is one and 0 otherwise, and the
 // rounding increment is added to {exponent field, fraction}, so a carry out of the fraction
 // moves the result to the next binade (largest subnormal -> smallest normal, 1.11..1 -> 2.0,
@@ -35,14 +41,25 @@ module pree_fp32_round #(
   output wire [31:0] y_o
 );
 
-  // Denormalise: shift right by 1 - exp_i when exp_i <= 0 (capped at 31: all bits sticky).
-  wire        tiny    = (Denorm != 0) && (exp_i[9] || (exp_i == 10'd0));
-  wire [10:0] sh_full = 11'd1 - {exp_i[9], exp_i};
-  wire [4:0]  sh      = (sh_full[10:5] != 6'd0) ? 5'd31 : sh_full[4:0];
-  wire [58:0] shifted = {man_i, 32'd0} >> sh;
+  // Denormalise (pree_fp32_denorm_amt, pree_fp32_denorm): shift right by 1 - exp_i when
+  // exp_i <= 0.
+  wire [26:0] man;
+  wire        sticky;
 
-  wire [26:0] man    = tiny ? shifted[58:32] : man_i;
-  wire        sticky = sticky_i | (tiny && (shifted[31:0] != 32'd0));
+  generate
+    if (Denorm != 0) begin : g_denorm
+      wire       tiny;
+      wire [4:0] sh;
+      pree_fp32_denorm_amt u_amt (.exp_i (exp_i), .tiny_o (tiny), .sh_o (sh));
+      pree_fp32_denorm u_denorm (
+        .tiny_i (tiny), .sh_i (sh), .man_i (man_i), .sticky_i (sticky_i),
+        .man_o (man), .sticky_o (sticky)
+      );
+    end else begin : g_plain
+      assign man    = man_i;
+      assign sticky = sticky_i;
+    end
+  endgenerate
 
   // Round to nearest, ties to even (table above).
   wire lsb   = man[3];

@@ -1,26 +1,48 @@
-// pree_fp32_sqr: IEEE-754 binary32 squarer, y = a * a, round to nearest even, 2 pipeline stages.
+// pree_fp32_sqr: IEEE-754 binary32 squarer, y = a * a, round to nearest even, Stages pipeline
+// stages (2 by default, the paper's; 6 with PipeFast = 1: every seam below registered).
 //
 // Bit-identical to pree_fp32_mul with both operands equal, but cheaper:
 //  - one operand, so one classifier and no subnormal normalisation: the square of any subnormal
 //    (< 2^-126) is below 2^-252, far under half the smallest subnormal, so it is +0;
 //  - the significand square uses the symmetry of a square. With m = H * 2^17 + L
 //    (H = m[23:17], 7 bits; L = m[16:0], 17 bits):  m^2 = H^2 * 2^34 + H*L * 2^18 + L^2.
-//    The cross term H*L is needed once (doubled by the shift) instead of twice; L^2 is one
-//    17 x 17 product (one DSP48 on a 7-series FPGA), while H^2 and H*L are written as seven
-//    shifted partial products each, so they map to LUT adders instead of a second DSP.
+//    The cross term H*L is needed once (doubled by the shift) instead of twice. In the paper's
+//    configuration L^2 is one 17 x 17 product (one DSP48 on a 7-series FPGA), while H^2 and H*L
+//    are written as seven shifted partial products each, so they map to LUT adders instead of a
+//    second DSP. With the products registered (seam 2 below) all three are `*` between two
+//    registers, each within one DSP multiplier (7-series 25 x 18, ECP5 18 x 18), since a LUT
+//    adder tree would be the slowest part of a deep pipeline.
 // The result is never negative: -x * -x = +x^2, (-0)^2 = +0, (-inf)^2 = +inf.
 // NaN result (x86-64 SSE rule): a NaN -> a quieted (sign and payload kept).
+//
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
+//             clock rates (Stages = 6). docs/fpga.md.
+//   Stages    1 .. 6, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
 // y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Stage 1 (input -> s1 registers): classify, square the significand, double the exponent.
-// Stage 2 (s1 -> s2 registers): one-bit normalisation, pree_fp32_round (including the shift
-//   into the subnormal range), final mux with the special result.
+// The datapath is cut at six seams (pree_fp32_pipe each, a register or a wire):
+//   A classify (special result carried beside the datapath), double the exponent, split the
+//     significand into H and L                                                      -> seam 1
+//   B the products H^2, H*L, L^2                                                     -> seam 2
+//   C their sum: {H^2, L^2} + H*L * 2^18 (H^2 and L^2 do not overlap)               -> seam 3
+//   D normalise: one-bit select, sticky bit, exponent, the denormalising shift amount
+//     (pree_fp32_denorm_amt, formed for both binades and picked by the select)     -> seam 4
+//   E denormalise (pree_fp32_denorm)                                                 -> seam 5
+//   F round (pree_fp32_round, Denorm = 0), final mux with the special result        -> seam 6
+// Stage plan (registered seams per Stages; the last seam is always the output register):
+//   Stages 1: 6 | 2: 3 6 | 3: 3 5 6 | 4: 2 3 5 6 | 5: 1 2 3 5 6 | 6: all
+// Stages = 2 is the paper's split (stage 1 = A B C, stage 2 = D E F).
 `default_nettype none
 
-module pree_fp32_sqr (
+module pree_fp32_sqr #(
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 6 : 2
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -29,32 +51,42 @@ module pree_fp32_sqr (
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = 2;
+  localparam LATENCY    = Stages;
+  localparam MAX_STAGES = 6;
 
-  // ---------------------------------------------------------------- stage 1: classify, square
+  // Registers at seam s (1 .. 6) under the stage plan above.
+  function integer seam_regs;
+    input integer s;
+    reg [5:0] plan;    // bit s-1: seam s registered
+    begin
+      case (Stages)
+        1:       plan = 6'b100000;
+        2:       plan = 6'b100100;
+        3:       plan = 6'b110100;
+        4:       plan = 6'b110110;
+        5:       plan = 6'b110111;
+        default: plan = 6'b111111;
+      endcase
+      seam_regs = plan[s-1] ? 1 : 0;
+    end
+  endfunction
+
+  // All three products as `*` when they are registered.
+  localparam SPLIT = (seam_regs(2) != 0);
+
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < 1 || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_fp32_sqr: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
+             PipeFast, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- A: classify
   wire [7:0]  exp_a   = a_i[30:23];
   wire        exp_low = (exp_a == 8'd0);             // zero or subnormal: the square is +0
   wire        inf_a   = (exp_a == 8'hFF) && (a_i[22:0] == 23'd0);
   wire        nan_a   = (exp_a == 8'hFF) && (a_i[22:0] != 23'd0);
-
-  wire [23:0] man     = {1'b1, a_i[22:0]};           // only used for normal operands
-  wire [6:0]  man_hi  = man[23:17];
-  wire [16:0] man_lo  = man[16:0];
-  reg  [13:0] sq_hi;                                 // H^2
-  reg  [23:0] sq_mid;                                // H*L
-  integer     i;
-
-  // Shift-and-add over the 7 bits of H (small products: LUT logic rather than a DSP).
-  always @* begin
-    sq_hi  = 14'd0;
-    sq_mid = 24'd0;
-    for (i = 0; i < 7; i = i + 1) begin
-      sq_hi  = sq_hi  + ({7'd0, man_hi & {7{man_hi[i]}}} << i);
-      sq_mid = sq_mid + ({7'd0, man_lo & {17{man_hi[i]}}} << i);
-    end
-  end
-  wire [33:0] sq_lo   = man_lo * man_lo;
-  wire [47:0] prod_d  = {sq_hi, 34'd0} + {6'd0, sq_mid, 18'd0} + {14'd0, sq_lo};
   wire [9:0]  exp_d   = {1'b0, exp_a, 1'b0} - 10'd127;   // biased exponent of product bit 46
 
   wire        special_d   = exp_low | inf_a | nan_a;
@@ -62,50 +94,143 @@ module pree_fp32_sqr (
                           : inf_a ? 32'h7F80_0000
                           :         32'h0000_0000;
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  // Carried to the end: the special result; beside it the exponent.
+  localparam WK = 1 + 32;
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
+  wire          s1_valid;
+  wire [WK-1:0] s1_keep;
+  wire [9:0]    s1_exp;
+  wire [23:0]   s1_man;                              // only used for normal operands
 
-  reg [47:0] s1_prod_q;
-  reg [9:0]  s1_exp_q;
-  reg        s1_special_q;
-  reg [31:0] s1_special_y_q;
+  pree_fp32_pipe #(.Width(WK + 10 + 24), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({special_d, special_y_d, exp_d, 1'b1, a_i[22:0]}),
+    .valid_o (s1_valid), .q_o ({s1_keep, s1_exp, s1_man})
+  );
 
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_prod_q      <= prod_d;
-      s1_exp_q       <= exp_d;
-      s1_special_q   <= special_d;
-      s1_special_y_q <= special_y_d;
+  // ---------------------------------------------------------------- B: the products
+  wire [6:0]  man_hi = s1_man[23:17];
+  wire [16:0] man_lo = s1_man[16:0];
+  wire [13:0] sq_hi;                                 // H^2
+  wire [23:0] sq_mid;                                // H*L
+  wire [33:0] sq_lo  = man_lo * man_lo;              // L^2
+
+  generate
+    if (SPLIT) begin : g_dsp
+      assign sq_hi  = man_hi * man_hi;
+      assign sq_mid = man_hi * man_lo;
+    end else begin : g_lut
+      // Shift-and-add over the 7 bits of H (small products: LUT logic rather than a DSP).
+      reg  [13:0] sq_hi_r;
+      reg  [23:0] sq_mid_r;
+      integer     i;
+      always @* begin
+        sq_hi_r  = 14'd0;
+        sq_mid_r = 24'd0;
+        for (i = 0; i < 7; i = i + 1) begin
+          sq_hi_r  = sq_hi_r  + ({7'd0, man_hi & {7{man_hi[i]}}} << i);
+          sq_mid_r = sq_mid_r + ({7'd0, man_lo & {17{man_hi[i]}}} << i);
+        end
+      end
+      assign sq_hi  = sq_hi_r;
+      assign sq_mid = sq_mid_r;
     end
-  end
+  endgenerate
 
-  // ---------------------------------------------------------------- stage 2: normalise, round
-  wire        top      = s1_prod_q[47];
-  wire [26:0] norm_man = top ? s1_prod_q[47:21] : s1_prod_q[46:20];
-  wire        sticky   = top ? (s1_prod_q[20:0] != 21'd0) : (s1_prod_q[19:0] != 20'd0);
-  wire [9:0]  norm_exp = s1_exp_q + {9'd0, top};
+  wire          s2_valid;
+  wire [WK-1:0] s2_keep;
+  wire [9:0]    s2_exp;
+  wire [13:0]   s2_hi;
+  wire [23:0]   s2_mid;
+  wire [33:0]   s2_lo;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 14 + 24 + 34), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({s1_keep, s1_exp, sq_hi, sq_mid, sq_lo}),
+    .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_hi, s2_mid, s2_lo})
+  );
+
+  // ---------------------------------------------------------------- C: the square
+  wire [47:0] prod_d = {s2_hi, s2_lo} + {6'd0, s2_mid, 18'd0};
+
+  wire          s3_valid;
+  wire [WK-1:0] s3_keep;
+  wire [9:0]    s3_exp;
+  wire [47:0]   s3_prod;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 48), .Regs(seam_regs(3))) u_seam3 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
+    .d_i   ({s2_keep, s2_exp, prod_d}),
+    .valid_o (s3_valid), .q_o ({s3_keep, s3_exp, s3_prod})
+  );
+
+  // ---------------------------------------------------------------- D: normalise
+  wire        top         = s3_prod[47];
+  wire [26:0] norm_man    = top ? s3_prod[47:21] : s3_prod[46:20];
+  wire        norm_sticky = top ? (s3_prod[20:0] != 21'd0) : (s3_prod[19:0] != 20'd0);
+  wire [9:0]  norm_exp    = s3_exp + {9'd0, top};
+
+  // The denormalising shift for either binade, picked by the one-bit normalisation.
+  wire       tiny_0, tiny_1;
+  wire [4:0] sh_0, sh_1;
+  pree_fp32_denorm_amt u_amt_0 (.exp_i (s3_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
+  pree_fp32_denorm_amt u_amt_1 (.exp_i (s3_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
+  wire       norm_tiny = top ? tiny_1 : tiny_0;
+  wire [4:0] norm_sh   = top ? sh_1 : sh_0;
+
+  wire          s4_valid;
+  wire [WK-1:0] s4_keep;
+  wire [9:0]    s4_exp;
+  wire [26:0]   s4_man;
+  wire          s4_sticky;
+  wire          s4_tiny;
+  wire [4:0]    s4_sh;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(4))) u_seam4 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
+    .d_i   ({s3_keep, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
+    .valid_o (s4_valid), .q_o ({s4_keep, s4_exp, s4_man, s4_sticky, s4_tiny, s4_sh})
+  );
+
+  // ---------------------------------------------------------------- E: denormalise
+  wire [26:0] den_man;
+  wire        den_sticky;
+
+  pree_fp32_denorm u_denorm (
+    .tiny_i (s4_tiny), .sh_i (s4_sh), .man_i (s4_man), .sticky_i (s4_sticky),
+    .man_o (den_man), .sticky_o (den_sticky)
+  );
+
+  wire          s5_valid;
+  wire [WK-1:0] s5_keep;
+  wire [9:0]    s5_exp;
+  wire [26:0]   s5_man;
+  wire          s5_sticky;
+
+  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(5))) u_seam5 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
+    .d_i   ({s4_keep, s4_exp, den_man, den_sticky}),
+    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_man, s5_sticky})
+  );
+
+  // ---------------------------------------------------------------- F: round, final mux
+  wire        special;
+  wire [31:0] special_y;
+  assign {special, special_y} = s5_keep;
+
   wire [31:0] rounded;
-
-  pree_fp32_round #(.Denorm(1)) u_round (
+  pree_fp32_round #(.Denorm(0)) u_round (
     .sign_i   (1'b0),
-    .exp_i    (norm_exp),
-    .man_i    (norm_man),
-    .sticky_i (sticky),
+    .exp_i    (s5_exp),
+    .man_i    (s5_man),
+    .sticky_i (s5_sticky),
     .y_o      (rounded)
   );
 
-  reg [31:0] s2_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) s2_y_q <= s1_special_q ? s1_special_y_q : rounded;
-  end
-
-  assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s2_y_q;
+  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(6))) u_seam6 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
+    .d_i   (special ? special_y : rounded),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

@@ -1,26 +1,43 @@
 // pree_u64_to_f32: an unsigned 64-bit integer rounded once to binary32, round to nearest even,
-// 2 pipeline stages.
+// Stages pipeline stages (2 by default, the paper's; 5 with PipeFast = 1).
 //
 // Bit-exact with u64_to_f32() of model/wide_acc.h (the same as the C conversion (float)k):
 // exact up to 2^24, 0 -> +0, never negative, never infinite (2^64 - 1 rounds to 2^64 =
 // 0x5F800000, far below the overflow threshold), no NaN.
 //
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
+//             clock rates (Stages = 5: every seam below registered). docs/fpga.md.
+//   Stages    1 .. 5, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
+//
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
 // y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Stage 1 (input -> s1 registers): the leading-zero count lz (pree_fp32_lzc, 64 bits).
-// Stage 2 (s1 -> s2 registers): the normalising left shift by lz (the leading one moves to
-//   bit 63; exponent 63 - lz + 127), the top 27 bits and the OR of the 37 below (sticky) in the
-//   input format of pree_fp32_round, which rounds to nearest even and packs (Denorm = 0: the
-//   exponent is at least 127, so no subnormal and no overflow can occur). Zero needs no special
-//   case: its normalised word is 0, which packs as +0.
-// Why the shift is in stage 2: the 64-bit count alone is 9 LUT levels after Yosys mapping;
-//   count and shift in stage 1 measured 14 LUT levels there and 3 in stage 2, this split 9 / 9
-//   (docs/fp32_units.md).
+// The datapath is cut at five seams (pree_fp32_pipe each, a register or a wire):
+//   A1 the leading-zero count of each byte of a (pree_fp32_lzc, 8 bits each), and which bytes
+//      are non-zero                                                                 -> seam 1
+//   A2 the count lz of a (0 .. 64; 64 only for a = 0): the first non-zero byte and its count
+//                                                                                   -> seam 2
+//   B1 the normalising left shift by whole bytes (lz[5:3])                          -> seam 3
+//   B2 the shift by lz[2:0] (the leading one to bit 63); the top 27 bits and the OR of the 37
+//      below (sticky); exponent 63 - lz + 127                                       -> seam 4
+//   C  pree_fp32_round (Denorm = 0: the exponent is at least 127, so no subnormal and no
+//      overflow can occur) rounds to nearest even and packs                        -> seam 5
+//   Zero needs no special case: its normalised word is 0, which packs as +0.
+// Stage plan (registered seams per Stages; the last seam is always the output register):
+//   Stages 1: 5 | 2: 2 5 | 3: 2 4 5 | 4: 1 2 4 5 | 5: all
+// Stages = 2 is the paper's split (stage 1 = the count, stage 2 = shift and round). Why the
+// shift is not beside the count there: the 64-bit count alone is 9 LUT levels after Yosys
+// mapping; count and shift in stage 1 measured 14 LUT levels there and 3 in stage 2, this split
+// 9 / 9 (docs/fp32_units.md).
 `default_nettype none
 
-module pree_u64_to_f32 (
+module pree_u64_to_f32 #(
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 5 : 2
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -29,56 +46,127 @@ module pree_u64_to_f32 (
   output wire [31:0] y_o
 );
 
-  localparam LATENCY = 2;
+  localparam LATENCY    = Stages;
+  localparam MAX_STAGES = 5;
 
-  // ---------------------------------------------------------------- stage 1: leading zeros
-  wire [6:0] lz;    // 0..64; 64 only for a_i = 0
+  // Registers at seam s (1 .. 5) under the stage plan above.
+  function integer seam_regs;
+    input integer s;
+    reg [4:0] plan;    // bit s-1: seam s registered
+    begin
+      case (Stages)
+        1:       plan = 5'b10000;
+        2:       plan = 5'b10010;
+        3:       plan = 5'b11010;
+        4:       plan = 5'b11011;
+        default: plan = 5'b11111;
+      endcase
+      seam_regs = plan[s-1] ? 1 : 0;
+    end
+  endfunction
 
-  pree_fp32_lzc #(.Width(64), .CntWidth(7)) u_lzc (
-    .x_i   (a_i),
-    .cnt_o (lz)
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < 1 || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_u64_to_f32: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
+             PipeFast, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- A1: per-byte counts
+  // Byte 7 is the most significant (a_i[63:56]).
+  wire [31:0] byte_lz;                             // 4 bits per byte: 0 .. 8
+  wire [7:0]  byte_nz;
+
+  genvar g;
+  generate
+    for (g = 0; g < 8; g = g + 1) begin : g_byte
+      pree_fp32_lzc #(.Width(8), .CntWidth(4)) u_lzc (
+        .x_i   (a_i[8*g +: 8]),
+        .cnt_o (byte_lz[4*g +: 4])
+      );
+      assign byte_nz[g] = (a_i[8*g +: 8] != 8'd0);
+    end
+  endgenerate
+
+  wire        s1_valid;
+  wire [63:0] s1_a;
+  wire [31:0] s1_byte_lz;
+  wire [7:0]  s1_byte_nz;
+
+  pree_fp32_pipe #(.Width(64 + 32 + 8), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({a_i, byte_lz, byte_nz}),
+    .valid_o (s1_valid), .q_o ({s1_a, s1_byte_lz, s1_byte_nz})
   );
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  // ---------------------------------------------------------------- A2: the count
+  // The first non-zero byte from the top (its index from the top: 0 .. 7; 8 for a = 0) and
+  // the count within it (0 .. 7: the byte is not zero).
+  wire [3:0] first;
+  pree_fp32_lzc #(.Width(8), .CntWidth(4)) u_lzc_bytes (
+    .x_i   (s1_byte_nz),
+    .cnt_o (first)
+  );
+  wire [2:0] first_byte = 3'd7 - first[2:0];      // its position (a = 0: unused)
+  wire [2:0] byte_cnt   = s1_byte_lz[4*first_byte +: 3];
+  // 64 for a = 0; else 8 * first + the count within the byte.
+  wire [6:0] lz         = first[3] ? 7'd64 : {1'b0, first[2:0], byte_cnt};
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
+  wire        s2_valid;
+  wire [63:0] s2_a;
+  wire [6:0]  s2_lz;
 
-  reg [63:0] s1_a_q;
-  reg [6:0]  s1_lz_q;
+  pree_fp32_pipe #(.Width(64 + 7), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({s1_a, lz}),
+    .valid_o (s2_valid), .q_o ({s2_a, s2_lz})
+  );
 
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_a_q  <= a_i;
-      s1_lz_q <= lz;
-    end
-  end
+  // ---------------------------------------------------------------- B1: byte shift
+  wire [63:0] coarse = s2_a << {s2_lz[5:3], 3'd0};    // a = 0: lz[5:0] = 0
 
-  // ---------------------------------------------------------------- stage 2: normalise, round
-  wire [63:0] norm   = s1_a_q << s1_lz_q[5:0];          // a = 0: lz[5:0] = 0, norm = 0
-  wire [9:0]  exp    = 10'd190 - {3'd0, s1_lz_q};       // 63 - lz + 127 (a = 0: 126, unused)
-  wire [26:0] man    = norm[63:37];                     // 24 bits, guard, 2 more
+  wire        s3_valid;
+  wire [63:0] s3_coarse;
+  wire [6:0]  s3_lz;
+
+  pree_fp32_pipe #(.Width(64 + 7), .Regs(seam_regs(3))) u_seam3 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
+    .d_i   ({coarse, s2_lz}),
+    .valid_o (s3_valid), .q_o ({s3_coarse, s3_lz})
+  );
+
+  // ---------------------------------------------------------------- B2: bit shift, sticky
+  wire [63:0] norm   = s3_coarse << s3_lz[2:0];
+  wire [9:0]  exp    = 10'd190 - {3'd0, s3_lz};       // 63 - lz + 127 (a = 0: 126, unused)
+  wire [26:0] man    = norm[63:37];                   // 24 bits, guard, 2 more
   wire        sticky = (norm[36:0] != 37'd0);
+
+  wire        s4_valid;
+  wire [9:0]  s4_exp;
+  wire [26:0] s4_man;
+  wire        s4_sticky;
+
+  pree_fp32_pipe #(.Width(10 + 27 + 1), .Regs(seam_regs(4))) u_seam4 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
+    .d_i   ({exp, man, sticky}),
+    .valid_o (s4_valid), .q_o ({s4_exp, s4_man, s4_sticky})
+  );
+
+  // ---------------------------------------------------------------- C: round and pack
   wire [31:0] y_d;
 
   pree_fp32_round #(.Denorm(0)) u_round (
     .sign_i   (1'b0),
-    .exp_i    (exp),
-    .man_i    (man),
-    .sticky_i (sticky),
+    .exp_i    (s4_exp),
+    .man_i    (s4_man),
+    .sticky_i (s4_sticky),
     .y_o      (y_d)
   );
 
-  reg [31:0] s2_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) s2_y_q <= y_d;
-  end
-
-  assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s2_y_q;
+  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(5))) u_seam5 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid), .d_i (y_d),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

@@ -1,4 +1,5 @@
-// pree_wacc: the stable datapath's wide accumulator add, y = A + t, truncating, 2 pipeline stages.
+// pree_wacc: the stable datapath's wide accumulator add, y = A + t, truncating, Stages pipeline
+// stages (2 by default, the paper's; 5 with PipeFast = 1).
 //
 // Bit-exact with wide_add() of model/wide_acc.h. A wide word (64 bits) is e = bits 63..56, an
 // 8-bit exponent biased as binary32's, and M = bits 55..0, a 56-bit significand with its leading
@@ -19,20 +20,35 @@
 // as 0 when the sum's bit 55 is 0. Every input word is handled as the model handles it,
 // including words whose M[55] disagrees with their e field.
 //
+// Parameters:
+//   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
+//             clock rates (Stages = 5: every seam below registered). docs/fpga.md.
+//   Stages    1 .. 5, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//             gives the same bits.
+//
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
 // y_o holds its last value while valid_o is low. Only the valid bits are reset.
 //
-// Stage 1 (input -> s1 registers): classify; the special results are carried as two flags
-//   (NaN, WIDE_MAX) and a pass flag; for "pass" (the result is A) the datapath carries A itself:
-//   the big operand is M_A, the small one forced to 0 and the exponent is A's raw e field, so
-//   no 64-bit special word is registered. Otherwise pick the operand with the larger effective
-//   exponent and align the other.
-// Stage 2 (s1 -> s2 registers): 57-bit add, carry-out normalisation, saturation, exponent field,
-//   final mux.
+// The datapath is cut at five seams (pree_fp32_pipe each, a register or a wire):
+//   A classify; the special results are carried as two flags (NaN, WIDE_MAX) and a pass flag
+//     (the result is A); compare the effective exponents and form both differences, with their
+//     "shifted out entirely" flags, beside the compare                             -> seam 1
+//   B1 pick the big and the small operand by the compare (for "pass" the datapath carries A
+//     itself: the big operand is M_A, the small one dropped, the exponent A's raw e field, so
+//     no 64-bit special word is registered)                                         -> seam 2
+//   B2 align the small operand (truncating shift)                                  -> seam 3
+//   C 57-bit add                                                                     -> seam 4
+//   D carry-out normalisation, saturation, exponent field, final mux                 -> seam 5
+// Stage plan (registered seams per Stages; the last seam is always the output register):
+//   Stages 1: 5 | 2: 3 5 | 3: 3 4 5 | 4: 1 3 4 5 | 5: all
+// Stages = 2 is the paper's split (stage 1 = A B1 B2, stage 2 = C D).
 `default_nettype none
 
-module pree_wacc (
+module pree_wacc #(
+  parameter PipeFast = 0,
+  parameter Stages   = (PipeFast != 0) ? 5 : 2
+) (
   input  wire        clk_i,
   input  wire        rst_ni,
   input  wire        valid_i,
@@ -42,11 +58,36 @@ module pree_wacc (
   output wire [63:0] y_o
 );
 
-  localparam LATENCY = 2;
+  localparam LATENCY    = Stages;
+  localparam MAX_STAGES = 5;
   localparam [63:0] WIDE_NAN = 64'hFF40_0000_0000_0000;
   localparam [63:0] WIDE_MAX = 64'hFEFF_FFFF_FFFF_FFFF;
 
-  // ---------------------------------------------------------------- stage 1: classify, align
+  // Registers at seam s (1 .. 5) under the stage plan above.
+  function integer seam_regs;
+    input integer s;
+    reg [4:0] plan;    // bit s-1: seam s registered
+    begin
+      case (Stages)
+        1:       plan = 5'b10000;
+        2:       plan = 5'b10100;
+        3:       plan = 5'b11100;
+        4:       plan = 5'b11101;
+        default: plan = 5'b11111;
+      endcase
+      seam_regs = plan[s-1] ? 1 : 0;
+    end
+  endfunction
+
+`ifndef SYNTHESIS
+  initial begin
+    if (LATENCY < 1 || LATENCY > MAX_STAGES)
+      $fatal(1, "pree_wacc: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
+             PipeFast, MAX_STAGES);
+  end
+`endif
+
+  // ---------------------------------------------------------------- A: classify, compare
   wire [7:0]  exp_a  = a_i[63:56];
   wire [55:0] man_a  = a_i[55:0];
   wire [7:0]  exp_t  = t_i[30:23];
@@ -61,68 +102,100 @@ module pree_wacc (
   wire nan_d  = ~nan_a & nan_t;
   wire max_d  = ~nan_a & ~nan_t & ~inf_a & ~sign_t & inf_t;
 
-  // Effective exponents and significands; t's significand sits in M[55:32].
-  wire [7:0]  exp_a1 = (exp_a == 8'd0) ? 8'd1 : exp_a;
-  wire [7:0]  exp_t1 = (exp_t == 8'd0) ? 8'd1 : exp_t;
-  wire [55:0] man_t  = {exp_t != 8'd0, t_i[22:0], 32'd0};
+  // Effective exponents; the operand with the larger one is "big" (on a tie, A; for pass, A).
+  wire [7:0]  exp_a1  = (exp_a == 8'd0) ? 8'd1 : exp_a;
+  wire [7:0]  exp_t1  = (exp_t == 8'd0) ? 8'd1 : exp_t;
+  wire        swap    = (exp_t1 > exp_a1) & ~pass_d;
+  wire [7:0]  diff_at = exp_a1 - exp_t1;
+  wire [7:0]  diff_ta = exp_t1 - exp_a1;
+  // A shift of 56 or more (or pass) leaves nothing of the small operand.
+  wire        gone_at = pass_d | (diff_at >= 8'd56);
+  wire        gone_ta = (diff_ta >= 8'd56);
 
-  // The operand with the larger effective exponent is "big"; on a tie, A. For pass, A is big.
-  wire        swap     = (exp_t1 > exp_a1) & ~pass_d;
-  wire [7:0]  diff     = swap ? (exp_t1 - exp_a1) : (exp_a1 - exp_t1);
-  wire [55:0] man_big  = swap ? man_t : man_a;
-  wire [55:0] man_sml  = swap ? man_a : man_t;
-  wire [7:0]  exp_big  = pass_d ? exp_a : (swap ? exp_t1 : exp_a1);
+  wire        s1_valid;
+  wire [63:0] s1_a;
+  wire [23:0] s1_t;                                // t's significand field and hidden bit
+  wire [7:0]  s1_exp_t1;
+  wire        s1_pass, s1_nan, s1_max, s1_swap, s1_gone_at, s1_gone_ta;
+  wire [5:0]  s1_diff_at, s1_diff_ta;
 
-  // Truncating alignment: a shift of 56 or more (or pass) leaves nothing of the small operand.
-  wire        sml_gone = pass_d | (diff >= 8'd56);
-  wire [55:0] aligned  = sml_gone ? 56'd0 : (man_sml >> diff[5:0]);
+  pree_fp32_pipe #(.Width(64 + 24 + 8 + 6 + 12), .Regs(seam_regs(1))) u_seam1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .d_i   ({a_i, exp_t != 8'd0, t_i[22:0], exp_t1, pass_d, nan_d, max_d, swap,
+             gone_at, gone_ta, diff_at[5:0], diff_ta[5:0]}),
+    .valid_o (s1_valid),
+    .q_o   ({s1_a, s1_t, s1_exp_t1, s1_pass, s1_nan, s1_max, s1_swap,
+             s1_gone_at, s1_gone_ta, s1_diff_at, s1_diff_ta})
+  );
 
-  // Valid pipeline: valid_q[k] is the valid bit of the stage-(k+1) registers.
-  reg [LATENCY-1:0] valid_q;
+  // ---------------------------------------------------------------- B1: pick the operands
+  wire [7:0]  s1_exp_a  = s1_a[63:56];
+  wire [55:0] s1_man_a  = s1_a[55:0];
+  wire [7:0]  s1_exp_a1 = (s1_exp_a == 8'd0) ? 8'd1 : s1_exp_a;
+  wire [55:0] man_t     = {s1_t, 32'd0};           // t's significand sits in M[55:32]
+  wire [55:0] man_big   = s1_swap ? man_t : s1_man_a;
+  wire [55:0] man_sml   = s1_swap ? s1_man_a : man_t;
+  wire [7:0]  exp_big   = s1_pass ? s1_exp_a : (s1_swap ? s1_exp_t1 : s1_exp_a1);
+  wire [5:0]  sh        = s1_swap ? s1_diff_ta : s1_diff_at;
+  wire        sml_gone  = s1_swap ? s1_gone_ta : s1_gone_at;
 
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {LATENCY{1'b0}};
-    else         valid_q <= {valid_q[LATENCY-2:0], valid_i};
-  end
+  wire        s2_valid;
+  wire [55:0] s2_big, s2_sml;
+  wire [7:0]  s2_exp;
+  wire [5:0]  s2_sh;
+  wire        s2_gone, s2_pass, s2_nan, s2_max;
 
-  reg [55:0] s1_big_q;
-  reg [55:0] s1_sml_q;
-  reg [7:0]  s1_exp_q;
-  reg        s1_pass_q;
-  reg        s1_nan_q;
-  reg        s1_max_q;
+  pree_fp32_pipe #(.Width(56 + 56 + 8 + 6 + 4), .Regs(seam_regs(2))) u_seam2 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+    .d_i   ({man_big, man_sml, exp_big, sh, sml_gone, s1_pass, s1_nan, s1_max}),
+    .valid_o (s2_valid), .q_o ({s2_big, s2_sml, s2_exp, s2_sh, s2_gone, s2_pass, s2_nan, s2_max})
+  );
 
-  always @(posedge clk_i) begin
-    if (valid_i) begin
-      s1_big_q  <= man_big;
-      s1_sml_q  <= aligned;
-      s1_exp_q  <= exp_big;
-      s1_pass_q <= pass_d;
-      s1_nan_q  <= nan_d;
-      s1_max_q  <= max_d;
-    end
-  end
+  // ---------------------------------------------------------------- B2: align
+  wire [55:0] aligned = s2_gone ? 56'd0 : (s2_sml >> s2_sh);
 
-  // ---------------------------------------------------------------- stage 2: add, normalise
-  wire [56:0] sum   = {1'b0, s1_big_q} + {1'b0, s1_sml_q};
+  wire        s3_valid;
+  wire [55:0] s3_big, s3_sml;
+  wire [7:0]  s3_exp;
+  wire        s3_pass, s3_nan, s3_max;
+
+  pree_fp32_pipe #(.Width(56 + 56 + 8 + 3), .Regs(seam_regs(3))) u_seam3 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
+    .d_i   ({s2_big, aligned, s2_exp, s2_pass, s2_nan, s2_max}),
+    .valid_o (s3_valid), .q_o ({s3_big, s3_sml, s3_exp, s3_pass, s3_nan, s3_max})
+  );
+
+  // ---------------------------------------------------------------- C: add
+  wire [56:0] sum_d = {1'b0, s3_big} + {1'b0, s3_sml};
+
+  wire        s4_valid;
+  wire [56:0] s4_sum;
+  wire [55:0] s4_big;
+  wire [7:0]  s4_exp;
+  wire        s4_pass, s4_nan, s4_max;
+
+  pree_fp32_pipe #(.Width(57 + 56 + 8 + 3), .Regs(seam_regs(4))) u_seam4 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
+    .d_i   ({sum_d, s3_big, s3_exp, s3_pass, s3_nan, s3_max}),
+    .valid_o (s4_valid), .q_o ({s4_sum, s4_big, s4_exp, s4_pass, s4_nan, s4_max})
+  );
+
+  // ---------------------------------------------------------------- D: normalise, final mux
+  wire [56:0] sum   = s4_sum;
   wire        carry = sum[56];
   wire [55:0] man_s = carry ? sum[56:1] : sum[55:0];    // truncating: sum[0] is dropped
-  wire [8:0]  exp_s = {1'b0, s1_exp_q} + {8'd0, carry};
+  wire [8:0]  exp_s = {1'b0, s4_exp} + {8'd0, carry};
   // Without pass the exponent is at most 254, so it reaches 255 only by a carry.
   wire        sat   = (exp_s >= 9'd255);
 
-  wire [63:0] y_d = s1_nan_q           ? WIDE_NAN
-                  : s1_pass_q          ? {s1_exp_q, s1_big_q}
-                  : (s1_max_q | sat)   ? WIDE_MAX
+  wire [63:0] y_d = s4_nan             ? WIDE_NAN
+                  : s4_pass            ? {s4_exp, s4_big}
+                  : (s4_max | sat)     ? WIDE_MAX
                   :                      {man_s[55] ? exp_s[7:0] : 8'd0, man_s};
 
-  reg [63:0] s2_y_q;
-
-  always @(posedge clk_i) begin
-    if (valid_q[0]) s2_y_q <= y_d;
-  end
-
-  assign valid_o = valid_q[LATENCY-1];
-  assign y_o     = s2_y_q;
+  pree_fp32_pipe #(.Width(64), .Regs(seam_regs(5))) u_seam5 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid), .d_i (y_d),
+    .valid_o (valid_o), .q_o (y_o)
+  );
 
 endmodule

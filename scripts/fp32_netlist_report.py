@@ -18,9 +18,16 @@ chain CI -> CO counts one level per CARRY4, the real critical path of a wide add
   dsp         = 1 when some path of the stage passes through a DSP48E1 (combinational multiply).
 A DSP48E1 whose output register is used (PREG = 1) holds a pipeline register: its multiply
 ends a path and its outputs start new ones.
-The stage of an endpoint is read from the register name its flip-flop drives: s<k>_*_q and
-g_stage[<k>].*_q are stage-k registers, valid_q[k] belongs to stage k+1; a primary output driven by logic (the
-combinational comparator) is stage 0. IBUF/OBUF/BUFG cells count zero levels.
+The stage of a register is its depth in registers from the primary inputs: 1 + the largest
+stage among the registers (or inputs, stage 0) that reach its D, CE or reset pins through
+combinational logic. Every unit is a feed-forward pipeline whose data registers load on the
+valid bit of the stage before, so this is the stage number of the RTL whatever the register
+names (the seams of pree_fp32_pipe). A DSP48E1 with internal registers counts them: its P
+output lies AREG/BREG + MREG + PREG stages after its A/B inputs (CREG + PREG after C, PREG
+after PCIN); a path into such a DSP ends at its first register (with one DSP level when that
+register follows the multiplier), and each later internal register closes a stage of one DSP
+level. A primary output driven by logic (the combinational comparator) is stage 0.
+IBUF/OBUF/BUFG cells count zero levels.
 """
 import json
 import re
@@ -47,52 +54,101 @@ def weight(cell_type):
     raise SystemExit("fp32_netlist_report: unknown cell type %s" % cell_type)
 
 
-def stage_of(names):
-    """Stage of a register from its name: s<k>_*_q, or g_stage[<k>].*_q in generate loops."""
-    for n in names:
-        m = re.match(r"^\\?s(\d+)_\w*_q$", n) or re.match(r"^\\?g_stage\[(\d+)\]\..*_q$", n)
-        if m:
-            return int(m.group(1))
-    return None
-
-
 def main():
     if len(sys.argv) != 3:
         raise SystemExit("usage: fp32_netlist_report.py <netlist.json> <top>")
     mod = json.load(open(sys.argv[1]))["modules"][sys.argv[2]]
 
-    # Names of each bit (registers keep their RTL names on the flip-flop outputs).
-    names = defaultdict(list)
-    valid_bit = {}
-    for name, net in mod["netnames"].items():
-        for i, b in enumerate(net["bits"]):
-            if isinstance(b, int):
-                names[b].append(name)
-                if name == "valid_q":
-                    valid_bit[b] = i + 1
-
-    # Combinational arcs and endpoints.
+    # Combinational arcs, register inputs and register outputs.
     fanin = defaultdict(list)    # output bit -> [(input bit, cell weight)]
-    endpoints = []               # (bit, stage, weight of the ending cell)
-    for cell in mod["cells"].values():
+    regs = []                    # (name, {port group: (latency, first_after_mul, [in bits])}, [out bits])
+    start_weight = {}            # register output bit -> depth it starts with (DSP post-adder)
+    for cname, cell in mod["cells"].items():
         t, conns, dirs = cell["type"], cell["connections"], cell["port_directions"]
         ins = [b for p, bs in conns.items() if dirs[p] == "input" for b in bs if isinstance(b, int)]
         outs = [b for p, bs in conns.items() if dirs[p] == "output" for b in bs if isinstance(b, int)]
-        w = (0, 0, 0, 0) if FF.match(t) else weight(t)
-        registered_dsp = t.startswith("DSP48") and int(cell["parameters"].get("PREG", "0"), 2) == 1
-        if FF.match(t) or registered_dsp:
-            # A DSP48E1 with PREG = 1 has absorbed a pipeline register: its multiply ends a
-            # path (one DSP level) and its P outputs start new ones.
-            q = conns["P" if registered_dsp else "Q"][0]
-            st = valid_bit.get(q, stage_of(names[q]))
-            if st is None:
-                raise SystemExit("fp32_netlist_report: register output %s has no stage name" % names[q])
-            for b in ins:
-                endpoints.append((b, st, w))
+        if FF.match(t):
+            d_ins = [b for p, bs in conns.items() if dirs[p] == "input" and p != "C"
+                     for b in bs if isinstance(b, int)]
+            regs.append((cname, {"D": (1, False, d_ins)}, conns["Q"]))
             continue
+        if t.startswith("DSP48"):
+            prm = {k: int(v, 2) if set(v) <= {"0", "1"} else 0 for k, v in cell["parameters"].items()}
+            areg, breg = prm.get("AREG", 0), prm.get("BREG", 0)
+            mreg, preg, creg = prm.get("MREG", 0), prm.get("PREG", 0), prm.get("CREG", 0)
+            lat_ab = max(areg, breg) + mreg + preg
+            if lat_ab + creg + preg > 0:
+                groups = {}
+                for p, bs in conns.items():
+                    if dirs[p] != "input" or p in ("CLK",):
+                        continue
+                    bits = [b for b in bs if isinstance(b, int)]
+                    if p in ("A", "B", "D", "ACIN", "BCIN"):
+                        groups.setdefault("AB", (lat_ab, max(areg, breg) == 0, []))[2].extend(bits)
+                    elif p == "C":
+                        groups.setdefault("C", (creg + preg, creg == 0, []))[2].extend(bits)
+                    elif p in ("PCIN",):
+                        groups.setdefault("PCIN", (preg, True, []))[2].extend(bits)
+                    else:                              # clock enables, resets, modes
+                        groups.setdefault("CTRL", (1, False, []))[2].extend(bits)
+                out = [b for p, bs in conns.items() if dirs[p] == "output" for b in bs
+                       if isinstance(b, int)]
+                regs.append((cname, groups, out))
+                if preg == 0:                          # P comes from the post-adder: one level
+                    for b in out:
+                        start_weight[b] = ((0, 0), 1, 1)
+                continue
+        w = weight(t)
         for o in outs:
             for i in ins:
                 fanin[o].append((i, w))
+
+    # Stage of every register output bit: its depth in registers from the inputs.
+    sys.setrecursionlimit(100000)
+    reg_of_out = {}
+    for r in regs:
+        for b in r[2]:
+            if isinstance(b, int):
+                reg_of_out[b] = r
+    src_memo, reg_memo = {}, {}
+
+    def src_stage(b):
+        """Largest stage among the register outputs and inputs reaching bit b (inputs: 0)."""
+        if b in src_memo:
+            return src_memo[b]
+        src_memo[b] = 0
+        if b in reg_of_out:
+            st = reg_stage(reg_of_out[b])
+        else:
+            st = max([src_stage(i) for i, _ in fanin.get(b, [])] or [0])
+        src_memo[b] = st
+        return st
+
+    def reg_stage(r):
+        """Stage of a register's outputs (for a DSP, its last internal register)."""
+        if r[0] in reg_memo:
+            return reg_memo[r[0]]
+        reg_memo[r[0]] = 0
+        st = 0
+        for lat, _, bits in r[1].values():
+            if lat:
+                st = max(st, max([src_stage(b) for b in bits] or [0]) + lat)
+        reg_memo[r[0]] = st
+        return st
+
+    # Endpoints: (bit, stage, weight of the ending cell); internal DSP stages as their own rows.
+    endpoints = []
+    dsp_inner = []                                    # (stage, weight)
+    for r in regs:
+        for lat, after_mul, bits in r[1].values():
+            if not lat:
+                continue
+            first = max([src_stage(b) for b in bits] or [0]) + 1
+            w = (0, 0, 0, 1) if after_mul else (0, 0, 0, 0)
+            for b in bits:
+                endpoints.append((b, first, w))
+            for k in range(2, lat + 1):
+                dsp_inner.append((first + k - 1, (0, 0, 0, 1)))
     for name, port in mod["ports"].items():
         if port["direction"] == "output":
             for b in port["bits"]:
@@ -100,19 +156,19 @@ def main():
                     endpoints.append((b, 0, (0, 0, 0, 0)))
 
     # Longest paths, memoised: by LUT count (with its carry count) and by all counted cells.
-    sys.setrecursionlimit(100000)
     memo = {}
 
     def depth(b):
         if b in memo:
             return memo[b]
         memo[b] = ((0, 0), 0, 0)           # cut any (unexpected) loop
-        best_lut, best_all, dsp = (0, 0), 0, 0
-        for i, w in fanin.get(b, []):
-            (l, c), a, d = depth(i)
-            best_lut = max(best_lut, (l + w[0], c + w[1]))
-            best_all = max(best_all, a + sum(w))
-            dsp = max(dsp, d + w[3])
+        best_lut, best_all, dsp = start_weight.get(b, ((0, 0), 0, 0))
+        if b not in reg_of_out:
+            for i, w in fanin.get(b, []):
+                (l, c), a, d = depth(i)
+                best_lut = max(best_lut, (l + w[0], c + w[1]))
+                best_all = max(best_all, a + sum(w))
+                dsp = max(dsp, d + w[3])
         memo[b] = (best_lut, best_all, dsp)
         return memo[b]
 
@@ -122,6 +178,9 @@ def main():
         l, c, a, d = l + w[0], c + w[1], a + sum(w), d + w[3]
         old = stages.get(st, ((0, 0), 0, 0))
         stages[st] = (max(old[0], (l, c)), max(old[1], a), max(old[2], d))
+    for st, w in dsp_inner:
+        old = stages.get(st, ((0, 0), 0, 0))
+        stages[st] = (old[0], max(old[1], 1), max(old[2], 1))
     rows = []
     for st in sorted(stages):
         (l, c), a, d = stages[st]
@@ -130,15 +189,23 @@ def main():
         rows.append((l, a, c, d))
 
     count = defaultdict(int)
-    preg = 0
+    dspregs = defaultdict(int)       # DSPs using their A/B, M and P registers
     for cell in mod["cells"].values():
         t = cell["type"]
         kind = ("LUT" if LUT.match(t) else "FF" if FF.match(t) else "MUXF" if t.startswith("MUXF")
                 else t)
         count[kind] += 1
-        if t.startswith("DSP48") and int(cell["parameters"].get("PREG", "0"), 2) == 1:
-            preg += 1
-    dsp = "%d" % count["DSP48E1"] + (" (%d with P register)" % preg if preg else "")
+        if t.startswith("DSP48"):
+            prm = cell["parameters"]
+            reg = lambda k: int(prm.get(k, "0"), 2) if set(prm.get(k, "0")) <= {"0", "1"} else 0
+            if reg("AREG") or reg("BREG"):
+                dspregs["A/B"] += 1
+            if reg("MREG"):
+                dspregs["M"] += 1
+            if reg("PREG"):
+                dspregs["P"] += 1
+    used = [("%d with %s register" % (dspregs[k], k)) for k in ("A/B", "M", "P") if dspregs[k]]
+    dsp = "%d" % count["DSP48E1"] + (" (%s)" % ", ".join(used) if used else "")
     print("| %s | %d | %d | %s | %d | %d | %s | %s |" % (
         sys.argv[2], count["LUT"], count["FF"], dsp, count["CARRY4"], count["MUXF"],
         " / ".join("%d" % r[0] for r in rows),

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # fp32_synth.sh: synthesise one binary32 unit with Yosys synth_xilinx (7-series) and check it.
-# Usage: scripts/fp32_synth.sh <add|mul|sqr|div|cmp|div8|wacc|u2f> <out_dir>
-#   (div8: divider, Stages = 8; wacc: pree_wacc; u2f: pree_u64_to_f32)
+# Usage: scripts/fp32_synth.sh <add|mul|sqr|div|cmp|div8|wacc|u2f>[_fast] <out_dir>
+#   (div8: divider, Stages = 8; wacc: pree_wacc; u2f: pree_u64_to_f32; <unit>_fast: the unit
+#   with PipeFast = 1, its deep configuration)
 # Fails (exit 1) on any latch (a $dlatch cell after proc, "Latch inferred" in the log, or an LD*
 # cell after mapping), on a combinational loop or other netlist problem (yosys `check -assert`),
 # and on a Yosys error. Writes <out_dir>/<unit>.log, .json (the netlist) and .row (one Markdown
@@ -9,17 +10,21 @@
 set -euo pipefail
 id=$1; out=$2
 params=""; label=""
-case $id in
+unit=${id%_fast}
+case $unit in
   div8) top=pree_fp32_div; params="chparam -set Stages 8 pree_fp32_div;"
         label="pree_fp32_div #(.Stages(8))" ;;
   wacc) top=pree_wacc ;;
   u2f)  top=pree_u64_to_f32 ;;
-  *)    top=pree_fp32_$id ;;
+  *)    top=pree_fp32_$unit ;;
 esac
+if [ "$unit" != "$id" ]; then
+  params="chparam -set PipeFast 1 $top;"; label="$top #(.PipeFast(1))"
+fi
 label=${label:-$top}
 mkdir -p "$out"
 cd "$(dirname "$0")/.."
-rtl="rtl/pree_fp32_lzc.v rtl/pree_fp32_unpack.v rtl/pree_fp32_round.v rtl/pree_fp32_div_steps.v rtl/$top.v"
+rtl="$(ls rtl/pree_fp32_*.v | grep -v "rtl/pree_fp32_\(add\|mul\|sqr\|div\|cmp\)\.v" | tr '\n' ' ')rtl/$top.v"
 script="read_verilog -defer $rtl; $params hierarchy -check -top $top; proc;
 select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr;
 synth_xilinx -family xc7 -flatten -top $top;

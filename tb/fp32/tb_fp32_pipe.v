@@ -3,7 +3,9 @@
 //
 // The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR or -DUNIT_DIV (with
 // -DDIV_STAGES=N for a divider configured with Stages = N; 4 by default), -DUNIT_WACC or
-// -DUNIT_U2F. Operand a and the result are handled as 64 bits; the 32-bit units use the low half
+// -DUNIT_U2F. Any unit's configuration: -DUNIT_PIPEFAST=1 (its PipeFast parameter),
+// -DUNIT_STAGES=N (its Stages parameter), and then -DUNIT_LATENCY=L, the latency that the
+// testbench requires (mk/fp32.mk passes the three). Operand a and the result are handled as 64 bits; the 32-bit units use the low half
 // (and the vector file's fields are as wide as the unit's).
 // Run: vvp -N <sim> +vec=<file> [+seed=<n>]; the vector file comes from fp32_vecgen
 // ("a b sub expected" in hex per line). Operations enter with random gaps in valid_i; each
@@ -13,6 +15,18 @@
 `default_nettype none
 
 module tb_fp32_pipe;
+
+// The unit's parameters: PipeFast, and Stages when given.
+`ifndef UNIT_PIPEFAST
+`define UNIT_PIPEFAST 0
+`endif
+`ifdef UNIT_STAGES
+`define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST), .Stages(`UNIT_STAGES))
+`elsif DIV_STAGES
+`define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST), .Stages(`DIV_STAGES))
+`else
+`define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST))
+`endif
 
 `ifdef UNIT_ADD
   localparam LAT = 2;
@@ -27,10 +41,11 @@ module tb_fp32_pipe;
   localparam NAME = "sqr";
   localparam AW = 32, YW = 32;
 `elsif UNIT_DIV
-`ifndef DIV_STAGES
-`define DIV_STAGES 4
-`endif
+`ifdef DIV_STAGES
   localparam LAT = `DIV_STAGES;
+`else
+  localparam LAT = 4;
+`endif
   localparam NAME = "div";
   localparam AW = 32, YW = 32;
 `elsif UNIT_WACC
@@ -42,7 +57,12 @@ module tb_fp32_pipe;
   localparam NAME = "u2f";
   localparam AW = 64, YW = 32;
 `endif
-  localparam FIFO = 16;       // > LAT: room for every operation in flight
+`ifdef UNIT_LATENCY
+  localparam LATENCY = `UNIT_LATENCY;   // the configuration's latency (mk/fp32.mk)
+`else
+  localparam LATENCY = LAT;             // the unit's default
+`endif
+  localparam FIFO = 64;       // > LATENCY: room for every operation in flight
   localparam MAX_REPORT = 20;
 
   reg         clk;
@@ -55,22 +75,22 @@ module tb_fp32_pipe;
   wire [63:0] y;
 
 `ifdef UNIT_ADD
-  pree_fp32_add dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+  pree_fp32_add `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
                      .sub_i(sub), .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_MUL
-  pree_fp32_mul dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+  pree_fp32_mul `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
                      .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_SQR
-  pree_fp32_sqr dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]),
+  pree_fp32_sqr `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]),
                      .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_DIV
-  pree_fp32_div #(.Stages(`DIV_STAGES)) dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
+  pree_fp32_div `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a[31:0]), .b_i(b),
                      .valid_o(valid_out), .y_o(y[31:0]));
 `elsif UNIT_WACC
-  pree_wacc dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .t_i(b),
+  pree_wacc `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a), .t_i(b),
                  .valid_o(valid_out), .y_o(y));
 `elsif UNIT_U2F
-  pree_u64_to_f32 dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a),
+  pree_u64_to_f32 `UNIT_PARAMS dut (.clk_i(clk), .rst_ni(rst_n), .valid_i(valid_in), .a_i(a),
                        .valid_o(valid_out), .y_o(y[31:0]));
 `endif
 `ifndef UNIT_WACC
@@ -132,10 +152,10 @@ module tb_fp32_pipe;
       @(posedge clk);
       cycle = cycle + 1;
       #1;
-      if (wr != rd && q_cyc[rd % FIFO] + LAT == cycle) begin
+      if (wr != rd && q_cyc[rd % FIFO] + LATENCY == cycle) begin
         if (!valid_out) begin
           $display("MISMATCH %0s: valid_o missing %0d cycles after a=%h b=%08h",
-                   NAME, LAT, q_a[rd % FIFO][AW-1:0], q_b[rd % FIFO]);
+                   NAME, LATENCY, q_a[rd % FIFO][AW-1:0], q_b[rd % FIFO]);
           $fatal(1, "tb_fp32_pipe %0s: handshake error", NAME);
         end
         checked = checked + 1;
@@ -154,7 +174,7 @@ module tb_fp32_pipe;
 
     $fclose(fd);
     $display("tb_fp32_pipe %0s (latency %0d): %0d vectors, %0d checked, %0d mismatches",
-             NAME, LAT, vectors, checked, errors);
+             NAME, LATENCY, vectors, checked, errors);
     if (errors != 0 || checked != vectors || vectors == 0)
       $fatal(1, "tb_fp32_pipe %0s: FAILED", NAME);
     $finish;

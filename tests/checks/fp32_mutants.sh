@@ -16,16 +16,16 @@ fail=0
 # unit @ file @ sed expression @ what it breaks
 mutants=(
   "mul@pree_fp32_round.v@s/wire inc   = guard \& (rest | lsb);/wire inc   = guard;/@ties away from zero"
-  "add@pree_fp32_add.v@s/s1_zero_sign_q <= sign_l \& sign_s;/s1_zero_sign_q <= sign_l;/@x - x = -0 for negative x"
+  "add@pree_fp32_add.v@s/{s1_special, sign_l, sign_l \& sign_s}/{s1_special, sign_l, sign_l}/@x - x = -0 for negative x"
   "div@pree_fp32_div.v@s/if (nan_a) /if (nan_a \&\& !nan_b) /@NaN priority a before b"
-  "sqr@pree_fp32_sqr.v@s/assign valid_o = valid_q\[LATENCY-1\];/assign valid_o = valid_q[0];/@latency 1 instead of 2"
+  "sqr@pree_fp32_sqr.v@s/.Regs(seam_regs(6))) u_seam6/.Regs(seam_regs(6) - 1)) u_seam6/@latency 1 instead of 2"
   "cmp@pree_fp32_cmp.v@s/wire eq_num    = both_zero | /wire eq_num    = /@-0 == +0"
   "wacc@pree_wacc.v@s/carry ? sum\[56:1\] : sum\[55:0\];/carry ? sum[56:1] + {55'd0, sum[0]} : sum[55:0];/@carry normalisation rounds instead of truncating"
   "wacc@pree_wacc.v@s/wire        sat   = (exp_s >= 9'd255);/wire        sat   = 1'b0;/@no saturation to WIDE_MAX"
   "wacc@pree_wacc.v@s/{man_s\[55\] ? exp_s\[7:0\] : 8'd0, man_s}/{exp_s[7:0], man_s}/@e field kept when bit 55 is 0"
   "wacc@pree_wacc.v@s/(inf_a | sign_t)/(inf_a | (sign_t \&\& t_i[30:0] != 31'd0))/@t = -0 added as +0"
   "u2f@pree_u64_to_f32.v@s/(norm\[36:0\] != 37'd0)/(norm[35:0] != 36'd0)/@sticky bit misses one bit"
-  "u2f@pree_u64_to_f32.v@s/s1_a_q << s1_lz_q\[5:0\]/s1_a_q << s1_lz_q[4:0]/@shift ignores lz bit 5"
+  "u2f@pree_u64_to_f32.v@s/s2_a << {s2_lz\[5:3\], 3'd0}/s2_a << {1'b0, s2_lz[4:3], 3'd0}/@shift ignores lz bit 5"
 )
 
 # The module of a unit: pree_fp32_<unit> unless named here (as in mk/fp32.mk).
