@@ -38,7 +38,7 @@
 //     itself: the big operand is M_A, the small one dropped, the exponent A's raw e field, so
 //     no 64-bit special word is registered)                                         -> seam 2
 //   B2 align the small operand (truncating shift)                                  -> seam 3
-//   C 57-bit add                                                                     -> seam 4
+//   C 57-bit add; beside it the exponent after a carry and the saturation test      -> seam 4
 //   D carry-out normalisation, saturation, exponent field, final mux                 -> seam 5
 // Stage plan (registered seams per Stages; the last seam is always the output register):
 //   Stages 1: 5 | 2: 3 5 | 3: 3 4 5 | 4: 1 3 4 5 | 5: all
@@ -167,31 +167,35 @@ module pree_wacc #(
 
   // ---------------------------------------------------------------- C: add
   wire [56:0] sum_d = {1'b0, s3_big} + {1'b0, s3_sml};
+  // Beside the add: the exponent after a carry, and whether a carry saturates (without pass
+  // the exponent is at most 254, so it reaches 255 only by a carry from 254).
+  wire [7:0]  exp_up_d  = s3_exp + 8'd1;
+  wire        exp_top_d = (s3_exp == 8'd254);
 
   wire        s4_valid;
   wire [56:0] s4_sum;
   wire [55:0] s4_big;
-  wire [7:0]  s4_exp;
-  wire        s4_pass, s4_nan, s4_max;
+  wire [7:0]  s4_exp, s4_exp_up;
+  wire        s4_exp_top, s4_pass, s4_nan, s4_max;
 
-  pree_fp32_pipe #(.Width(57 + 56 + 8 + 3), .Regs(seam_regs(4))) u_seam4 (
+  pree_fp32_pipe #(.Width(57 + 56 + 8 + 8 + 4), .Regs(seam_regs(4))) u_seam4 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
-    .d_i   ({sum_d, s3_big, s3_exp, s3_pass, s3_nan, s3_max}),
-    .valid_o (s4_valid), .q_o ({s4_sum, s4_big, s4_exp, s4_pass, s4_nan, s4_max})
+    .d_i   ({sum_d, s3_big, s3_exp, exp_up_d, exp_top_d, s3_pass, s3_nan, s3_max}),
+    .valid_o (s4_valid),
+    .q_o   ({s4_sum, s4_big, s4_exp, s4_exp_up, s4_exp_top, s4_pass, s4_nan, s4_max})
   );
 
   // ---------------------------------------------------------------- D: normalise, final mux
   wire [56:0] sum   = s4_sum;
   wire        carry = sum[56];
   wire [55:0] man_s = carry ? sum[56:1] : sum[55:0];    // truncating: sum[0] is dropped
-  wire [8:0]  exp_s = {1'b0, s4_exp} + {8'd0, carry};
-  // Without pass the exponent is at most 254, so it reaches 255 only by a carry.
-  wire        sat   = (exp_s >= 9'd255);
+  wire [7:0]  exp_s = carry ? s4_exp_up : s4_exp;
+  wire        sat   = carry & s4_exp_top;
 
   wire [63:0] y_d = s4_nan             ? WIDE_NAN
                   : s4_pass            ? {s4_exp, s4_big}
                   : (s4_max | sat)     ? WIDE_MAX
-                  :                      {man_s[55] ? exp_s[7:0] : 8'd0, man_s};
+                  :                      {man_s[55] ? exp_s : 8'd0, man_s};
 
   pree_fp32_pipe #(.Width(64), .Regs(seam_regs(5))) u_seam5 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid), .d_i (y_d),
