@@ -146,8 +146,8 @@ module pree_fp32_div #(
 
   // word[j] / valid[j]: after j division steps (word[0]: the dividend significand seeds the
   // partial remainder, man_a < 2^24 <= 2 * man_b).
-  wire [W-1:0] word  [0:QW];
-  wire         valid [0:QW];
+  wire [W-1:0] word  [0:QW] /* verilator split_var */;
+  wire         valid [0:QW] /* verilator split_var */;
 
   pree_fp32_pipe #(.Width(W), .Regs(seam_regs(2))) u_seam2 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),

@@ -31,8 +31,8 @@ module pree_fp32_pipe #(
       wire unused_clk = clk_i ^ rst_ni;    // no register at this seam
     end else begin : g_reg
       // valid[r] / data[r] enter register r (r = 0 .. Regs-1); register r drives index r + 1.
-      wire             valid [0:Regs];
-      wire [Width-1:0] data  [0:Regs];
+      wire             valid [0:Regs] /* verilator split_var */;
+      wire [Width-1:0] data  [0:Regs] /* verilator split_var */;
       assign valid[0] = valid_i;
       assign data[0]  = d_i;
 
