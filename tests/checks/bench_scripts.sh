@@ -22,8 +22,19 @@ expect_eq "engine rows" "$(grep -cE '^(smallppm|cells) (double|fp32) [12] (bucke
 expect_eq "target lines" "$(grep -c '^target: ' "$TMP/eng/engine.txt")" 2
 grep -q 'byte-identical to the reference' "$TMP/eng/engine.txt" || fail "bench-engine: no byte-identity line"
 expect_eq "engine picture is a PNG" "$(head -c 4 "$TMP/eng/engine.png" | od -An -c | tr -d ' ')" "211PNG"
-# bench-count at its reduced size: three rows, and the same counts twice (callgrind counts repeat).
+# bench-count at its reduced size: three rows, and the same counts twice within 0.1% per figure.
+# Callgrind's counts repeat to within a few ten thousand instructions of 4e8 (glibc's memcpy and
+# malloc paths depend on where the address space puts things), which can flip the table's last
+# printed digit; a real change of the code moves them by far more.
 run scripts/bench-count.sh "$PREE" "$TMP/cnt1" --quick
 run scripts/bench-count.sh "$PREE" "$TMP/cnt2" --quick
 expect_eq "count rows" "$(grep -cE '^(smallppm|cells) ' "$TMP/cnt1/count.txt")" 3
-expect_eq "counts repeat" "$(grep -E '^(smallppm|cells) ' "$TMP/cnt2/count.txt")" "$(grep -E '^(smallppm|cells) ' "$TMP/cnt1/count.txt")"
+rep=$(python3 - "$TMP/cnt1/count.txt" "$TMP/cnt2/count.txt" <<'PY'
+import re, sys
+rows = [[l.split() for l in open(f) if re.match(r"(smallppm|cells) ", l)] for f in sys.argv[1:]]
+bad = [(a[0] + " " + a[1], x, y) for a, b in zip(*rows) for x, y in zip(a[2:], b[2:])
+       if abs(float(x) - float(y)) > 1e-3 * max(abs(float(x)), abs(float(y))) + 0.1]
+print("ok" if len(rows[0]) == len(rows[1]) == 3 and not bad else "differ: %s" % bad)
+PY
+)
+expect_eq "counts repeat within 0.1%" "$rep" "ok"
