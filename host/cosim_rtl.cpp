@@ -216,7 +216,7 @@ struct Rtl : cosim_rtl {
     void counters(uint64_t *cnt) override
     {
         for (int k = 0; k < COSIM_NCNT; k++) cnt[k] = 0;
-        for (int k = 0; k < 7 + NP; k++) cnt[k] = get(top->cnt_o, 48 * k, 48);
+        for (int k = 0; k < 7 + NP; k++) cnt[k] = get(top->cnt_o, COSIM_CTRW * k, COSIM_CTRW);
     }
 };
 

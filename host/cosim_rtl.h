@@ -29,6 +29,7 @@ extern "C" {
 #define COSIM_IDXAW 12   /* 4096 index-table entries */
 #define COSIM_PXAW  17   /* up to 131072 pixels */
 #define COSIM_CNTW  16   /* candidates per photon below 65536 */
+#define COSIM_CTRW  48   /* bits of each counter in cnt_o (pree_top's CtrW) */
 #define COSIM_MAX_PREU 16
 #define COSIM_NCNT (7 + COSIM_MAX_PREU)
 

@@ -106,11 +106,11 @@ module pree_preu #(
   // ------------------------------------------------------------------ tag delay line
   // Flat vectors, slot k-1 holds stage k. Each slot loads when its operation moves into it.
   reg [12*TagW-1:0] tag_q;
-  integer k;
+  integer ts;
   always @(posedge clk_i) begin
     if (valid_i) tag_q[0 +: TagW] <= tag_i;
-    for (k = 1; k < RAD_LAST; k = k + 1)
-      if (valid_q[k]) tag_q[k*TagW +: TagW] <= tag_q[(k-1)*TagW +: TagW];
+    for (ts = 1; ts < RAD_LAST; ts = ts + 1)
+      if (valid_q[ts]) tag_q[ts*TagW +: TagW] <= tag_q[(ts-1)*TagW +: TagW];
   end
 
   // ------------------------------------------------------------------ shared units

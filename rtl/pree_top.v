@@ -47,7 +47,7 @@
 // the read enable. The index load port writes up to NumPreu entries per cycle, which must lie
 // in distinct banks (distinct addresses mod NumPreu).
 //
-// Counters (cnt_o, CNT_W bits each, counting only while cnt_en_i is high), in order:
+// Counters (cnt_o, CtrW bits each, counting only while cnt_en_i is high), in order:
 //   0 update cycles, 1 radiance cycles, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve (cycles in
 //   which fewer than NumPreu operations issued, by cause: the first blocked lane's cause in B,
 //   else abank when A left lanes for a bank conflict, else starve: the controller offered
@@ -64,6 +64,7 @@ module pree_top #(
   parameter PxBankW = 4,    // log2 of the pixel banks (1 .. PxAW-1)
   parameter CntW    = 16,   // bits of a photon's candidate count N^P
   parameter Datapath = 0,   // PREU datapath: 0 paper, 1 stable
+  parameter CtrW    = 48,   // bits of each performance counter (cnt_o)
   parameter StateW  = (Datapath != 0) ? 320 : 160  // do not override: set by Datapath
 ) (
   input  wire                       clk_i,
@@ -102,7 +103,7 @@ module pree_top #(
   input  wire [95:0]                px_wdata_i,
   output wire [95:0]                px_rdata_o,
   // Counters.
-  output wire [(7+NumPreu)*48-1:0]  cnt_o
+  output wire [(7+NumPreu)*CtrW-1:0] cnt_o
 );
 
   localparam LANE_W    = $clog2(NumPreu);
@@ -119,8 +120,7 @@ module pree_top #(
   localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
   localparam WIN_UPD   = (Datapath != 0) ? 13 : 11;           // 1 + the PREU's update latency
   localparam WIN_RAD   = 3;
-  localparam CNT_W     = 48;
-  localparam [CNT_W-1:0] CNT_ONE = 1;
+  localparam [CtrW-1:0] CNT_ONE = 1;
   localparam NCNT      = 7 + NumPreu;
   localparam PH_W      = 192;
 
@@ -572,7 +572,7 @@ module pree_top #(
   // Idle and counters.
   assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !(|c_v_q) && !(|p_busy);
 
-  reg [NCNT*CNT_W-1:0] cnt_q;
+  reg [NCNT*CtrW-1:0] cnt_q;
   reg [2:0]            cause;    // 0 none, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve
   reg                  found;
   always @* begin : stall_cause
@@ -590,14 +590,14 @@ module pree_top #(
   always @(posedge clk_i or negedge rst_ni) begin : counters
     integer l;
     if (!rst_ni) begin
-      cnt_q <= {NCNT*CNT_W{1'b0}};
+      cnt_q <= {NCNT*CtrW{1'b0}};
     end else if (cnt_en_i) begin
-      if (mode_i) cnt_q[1*CNT_W +: CNT_W] <= cnt_q[1*CNT_W +: CNT_W] + CNT_ONE;
-      else        cnt_q[0 +: CNT_W]       <= cnt_q[0 +: CNT_W] + CNT_ONE;
+      if (mode_i) cnt_q[1*CtrW +: CtrW] <= cnt_q[1*CtrW +: CtrW] + CNT_ONE;
+      else        cnt_q[0 +: CtrW]       <= cnt_q[0 +: CtrW] + CNT_ONE;
       for (l = 2; l < 7; l = l + 1)
-        if (cause == l[2:0]) cnt_q[l*CNT_W +: CNT_W] <= cnt_q[l*CNT_W +: CNT_W] + CNT_ONE;
+        if (cause == l[2:0]) cnt_q[l*CtrW +: CtrW] <= cnt_q[l*CtrW +: CtrW] + CNT_ONE;
       for (l = 0; l < NumPreu; l = l + 1)
-        if (p_valid[l]) cnt_q[(7+l)*CNT_W +: CNT_W] <= cnt_q[(7+l)*CNT_W +: CNT_W] + CNT_ONE;
+        if (p_valid[l]) cnt_q[(7+l)*CtrW +: CtrW] <= cnt_q[(7+l)*CtrW +: CtrW] + CNT_ONE;
     end
   end
   assign cnt_o = cnt_q;
