@@ -24,8 +24,8 @@
 //      out beyond those 3 is ORed into the lowest one (sticky)                       -> seam 3
 //   C  add or subtract: a 28-bit unnormalised sum                                    -> seam 4
 //   D  leading-zero count of the sum, limited to exponent - 1 (so that the exponent never
-//      falls below 1: the result is then an exact subnormal) by a sentinel bit that B
-//      places at bit 27 - exponent, zero test                                        -> seam 5
+//      falls below 1: the result is then an exact subnormal): when seam 5 is registered by a
+//      sentinel bit that B places at bit 27 - exponent, else by a compare; zero test -> seam 5
 //   E  normalise: one right shift on a carry out (the lost bit becomes sticky), else the
 //      left shift                                                                    -> seam 6
 //   F  round to nearest even (pree_fp32_round, Denorm = 0), final mux with the special
@@ -71,6 +71,9 @@ module pree_fp32_add #(
       seam_regs = plan[s-1] ? 1 : 0;
     end
   endfunction
+
+  // D's count limited by a sentinel bit (set in B) when D ends with a register.
+  localparam SENTINEL = (seam_regs(5) != 0);
 
 `ifndef SYNTHESIS
   initial begin
@@ -164,17 +167,14 @@ module pree_fp32_add #(
   );
 
   // ---------------------------------------------------------------- B: align
-  // The bits that the shift drops, below the 3 extra bits, are found with a mask of the low
-  // s2_sh bits beside the shifter rather than after it.
-  wire [26:0] aligned  = {s2_man_s, 3'd0} >> s2_sh;
-  wire [26:0] dropped  = ~(27'h7FF_FFFF << s2_sh);
-  wire        lost     = (({s2_man_s, 3'd0} & dropped) != 27'd0);
-  wire [26:0] al_small = {aligned[26:1], aligned[0] | lost};
+  wire [58:0] aligned  = {s2_man_s, 3'd0, 32'd0} >> s2_sh;
+  wire [26:0] al_small = {aligned[58:33], aligned[32] | (aligned[31:0] != 32'd0)};
 
-  // The normalising left shift may not take the exponent below 1, so it is at most exp - 1: a
-  // sentinel one at bit 27 - exp of the sum's 27 low bits (none when exp >= 28) makes the
-  // leading-zero count of D stop there by itself, with no compare after the count.
-  wire [26:0] floor_d  = (s2_exp <= 8'd27) ? (27'd1 << (8'd27 - s2_exp)) : 27'd0;
+  // The normalising left shift may not take the exponent below 1, so it is at most exp - 1.
+  // With a register after D (SENTINEL), a sentinel one at bit 27 - exp of the sum's 27 low
+  // bits (none when exp >= 28) makes D's leading-zero count stop there by itself, with no
+  // compare after the count; without one, D compares (fewer LUTs, measured).
+  wire [26:0] floor_d  = (SENTINEL && s2_exp <= 8'd27) ? (27'd1 << (8'd27 - s2_exp)) : 27'd0;
 
   wire          s3_valid;
   wire [WK-1:0] s3_keep;
@@ -208,12 +208,15 @@ module pree_fp32_add #(
   );
 
   // ---------------------------------------------------------------- D: leading zeros
-  // The left shift: the leading-zero count, but never below exponent 1 (the sentinel of B).
-  wire [4:0] lshift;
+  // The left shift: the leading-zero count, but never below exponent 1 (B's sentinel, or a
+  // compare with exponent - 1; lz <= 27 < 32).
+  wire [4:0] lz;
   pree_fp32_lzc #(.Width(27), .CntWidth(5)) u_lzc (
     .x_i   (s4_sum[26:0] | s4_floor),
-    .cnt_o (lshift)
+    .cnt_o (lz)
   );
+  wire [7:0] exp_m1 = s4_exp - 8'd1;
+  wire [4:0] lshift = (!SENTINEL && ({3'd0, lz} > exp_m1)) ? exp_m1[4:0] : lz;
 
   wire       sum_zero = (s4_sum == 28'd0);
 

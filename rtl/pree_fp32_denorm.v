@@ -11,8 +11,8 @@
 // man_o and sticky_o are the inputs. The exponent itself passes beside this module unchanged:
 // after a shift man_o[26] is 0, which pree_fp32_round packs with exponent field 0 and never
 // takes as an overflow.
-// The sticky bit is formed from a mask of the low sh_i bits (the ones a shift by sh_i drops),
-// beside the shifter rather than after it.
+// (A sticky bit formed from a mask of the low sh_i bits, beside the shifter, measured larger
+// and no shallower after Yosys mapping than this shift of a 59-bit word.)
 `default_nettype none
 
 module pree_fp32_denorm (
@@ -24,11 +24,10 @@ module pree_fp32_denorm (
   output wire        sticky_o
 );
 
-  wire [26:0] shifted = man_i >> sh_i;
-  wire [26:0] dropped = ~(27'h7FF_FFFF << sh_i);         // the low sh_i bits (all for sh_i >= 27)
-  wire        lost    = ((man_i & dropped) != 27'd0);
+  wire [58:0] shifted = {man_i, 32'd0} >> sh_i;
+  wire        lost    = (shifted[31:0] != 32'd0);
 
-  assign man_o    = tiny_i ? shifted : man_i;
+  assign man_o    = tiny_i ? shifted[58:32] : man_i;
   assign sticky_o = sticky_i | (tiny_i & lost);
 
 endmodule

@@ -193,11 +193,23 @@ module pree_fp32_div #(
   wire        norm_sticky = (rem != 25'd0) | (top & quo[0]);
   wire [9:0]  norm_exp    = exp_q - {9'd0, ~top};
 
-  // The denormalising shift for either binade, picked by the quotient's top bit.
-  wire       tiny_0, tiny_1;
-  wire [4:0] sh_0, sh_1;
-  pree_fp32_denorm_amt u_amt_0 (.exp_i (exp_q - 10'd1), .tiny_o (tiny_0), .sh_o (sh_0));
-  pree_fp32_denorm_amt u_amt_1 (.exp_i (exp_q),         .tiny_o (tiny_1), .sh_o (sh_1));
+  // The denormalising shift amount. With a register after N it is formed for either binade
+  // and picked by the quotient's top bit; otherwise from the normalised exponent (fewer LUTs).
+  wire       norm_tiny;
+  wire [4:0] norm_sh;
+
+  generate
+    if (seam_regs(STEP0 + QW + 1) != 0) begin : g_amt_both
+      wire       tiny_0, tiny_1;
+      wire [4:0] sh_0, sh_1;
+      pree_fp32_denorm_amt u_amt_0 (.exp_i (exp_q - 10'd1), .tiny_o (tiny_0), .sh_o (sh_0));
+      pree_fp32_denorm_amt u_amt_1 (.exp_i (exp_q),         .tiny_o (tiny_1), .sh_o (sh_1));
+      assign norm_tiny = top ? tiny_1 : tiny_0;
+      assign norm_sh   = top ? sh_1 : sh_0;
+    end else begin : g_amt_one
+      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
+    end
+  endgenerate
 
   wire          n_valid;
   wire [WK-1:0] n_keep;
@@ -208,7 +220,7 @@ module pree_fp32_div #(
 
   pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(STEP0 + QW + 1))) u_seam_n (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid[QW]),
-    .d_i   ({keep_q, norm_exp, norm_man, norm_sticky, top ? tiny_1 : tiny_0, top ? sh_1 : sh_0}),
+    .d_i   ({keep_q, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
     .valid_o (n_valid), .q_o ({n_keep, n_exp, n_man, n_sticky, n_tiny, n_sh})
   );
 

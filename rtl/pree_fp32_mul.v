@@ -82,6 +82,10 @@ module pree_fp32_mul #(
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
+  // The denormalising shift amount formed for both binades when the normalisation ends with a
+  // register (seam 6).
+  localparam AMT_BOTH = (seam_regs(6) != 0);
+
 `ifndef SYNTHESIS
   initial begin
     if (LATENCY < 1 || LATENCY > MAX_STAGES)
@@ -224,13 +228,24 @@ module pree_fp32_mul #(
   wire        norm_sticky = top ? (s5_prod[20:0] != 21'd0) : (s5_prod[19:0] != 20'd0);
   wire [9:0]  norm_exp    = s5_exp + {9'd0, top};
 
-  // The denormalising shift for either binade, picked by the one-bit normalisation.
-  wire       tiny_0, tiny_1;
-  wire [4:0] sh_0, sh_1;
-  pree_fp32_denorm_amt u_amt_0 (.exp_i (s5_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
-  pree_fp32_denorm_amt u_amt_1 (.exp_i (s5_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
-  wire       norm_tiny = top ? tiny_1 : tiny_0;
-  wire [4:0] norm_sh   = top ? sh_1 : sh_0;
+  // The denormalising shift amount. With a register after this stage (AMT_BOTH) it is formed
+  // for either binade beside the normalisation and picked by it; otherwise from the
+  // normalised exponent (fewer LUTs, measured).
+  wire       norm_tiny;
+  wire [4:0] norm_sh;
+
+  generate
+    if (AMT_BOTH) begin : g_amt_both
+      wire       tiny_0, tiny_1;
+      wire [4:0] sh_0, sh_1;
+      pree_fp32_denorm_amt u_amt_0 (.exp_i (s5_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
+      pree_fp32_denorm_amt u_amt_1 (.exp_i (s5_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
+      assign norm_tiny = top ? tiny_1 : tiny_0;
+      assign norm_sh   = top ? sh_1 : sh_0;
+    end else begin : g_amt_one
+      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
+    end
+  endgenerate
 
   wire          s6_valid;
   wire [WK-1:0] s6_keep;

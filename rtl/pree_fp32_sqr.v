@@ -74,6 +74,10 @@ module pree_fp32_sqr #(
   // All three products as `*` when they are registered.
   localparam SPLIT = (seam_regs(2) != 0);
 
+  // The denormalising shift amount formed for both binades when the normalisation ends with a
+  // register (seam 4).
+  localparam AMT_BOTH = (seam_regs(4) != 0);
+
 `ifndef SYNTHESIS
   initial begin
     if (LATENCY < 1 || LATENCY > MAX_STAGES)
@@ -151,7 +155,10 @@ module pree_fp32_sqr #(
   );
 
   // ---------------------------------------------------------------- C: the square
-  wire [47:0] prod_d = {s2_hi, s2_lo} + {6'd0, s2_mid, 18'd0};
+  // (H^2 and L^2 do not overlap; the three-term form lets Yosys use the DSP's post-adder and
+  // output register in the paper's configuration.)
+  wire [47:0] prod_d = SPLIT ? ({s2_hi, s2_lo} + {6'd0, s2_mid, 18'd0})
+                             : ({s2_hi, 34'd0} + {6'd0, s2_mid, 18'd0} + {14'd0, s2_lo});
 
   wire          s3_valid;
   wire [WK-1:0] s3_keep;
@@ -170,13 +177,24 @@ module pree_fp32_sqr #(
   wire        norm_sticky = top ? (s3_prod[20:0] != 21'd0) : (s3_prod[19:0] != 20'd0);
   wire [9:0]  norm_exp    = s3_exp + {9'd0, top};
 
-  // The denormalising shift for either binade, picked by the one-bit normalisation.
-  wire       tiny_0, tiny_1;
-  wire [4:0] sh_0, sh_1;
-  pree_fp32_denorm_amt u_amt_0 (.exp_i (s3_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
-  pree_fp32_denorm_amt u_amt_1 (.exp_i (s3_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
-  wire       norm_tiny = top ? tiny_1 : tiny_0;
-  wire [4:0] norm_sh   = top ? sh_1 : sh_0;
+  // The denormalising shift amount. With a register after this stage (AMT_BOTH) it is formed
+  // for either binade beside the normalisation and picked by it; otherwise from the
+  // normalised exponent (fewer LUTs, measured).
+  wire       norm_tiny;
+  wire [4:0] norm_sh;
+
+  generate
+    if (AMT_BOTH) begin : g_amt_both
+      wire       tiny_0, tiny_1;
+      wire [4:0] sh_0, sh_1;
+      pree_fp32_denorm_amt u_amt_0 (.exp_i (s3_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
+      pree_fp32_denorm_amt u_amt_1 (.exp_i (s3_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
+      assign norm_tiny = top ? tiny_1 : tiny_0;
+      assign norm_sh   = top ? sh_1 : sh_0;
+    end else begin : g_amt_one
+      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
+    end
+  endgenerate
 
   wire          s4_valid;
   wire [WK-1:0] s4_keep;

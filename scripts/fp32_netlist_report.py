@@ -23,7 +23,7 @@ stage among the registers (or inputs, stage 0) that reach its D, CE or reset pin
 combinational logic. Every unit is a feed-forward pipeline whose data registers load on the
 valid bit of the stage before, so this is the stage number of the RTL whatever the register
 names (the seams of pree_fp32_pipe). A DSP48E1 with internal registers counts them: its P
-output lies AREG/BREG + MREG + PREG stages after its A/B inputs (CREG + PREG after C, PREG
+output lies AREG (BREG) + MREG + PREG stages after its A (B) inputs (CREG + PREG after C, PREG
 after PCIN); a path into such a DSP ends at its first register (with one DSP level when that
 register follows the multiplier), and each later internal register closes a stage of one DSP
 level. A primary output driven by logic (the combinational comparator) is stage 0.
@@ -83,8 +83,10 @@ def main():
                     if dirs[p] != "input" or p in ("CLK",):
                         continue
                     bits = [b for b in bs if isinstance(b, int)]
-                    if p in ("A", "B", "D", "ACIN", "BCIN"):
-                        groups.setdefault("AB", (lat_ab, max(areg, breg) == 0, []))[2].extend(bits)
+                    if p in ("A", "D", "ACIN"):
+                        groups.setdefault("A", (areg + mreg + preg, areg == 0, []))[2].extend(bits)
+                    elif p in ("B", "BCIN"):
+                        groups.setdefault("B", (breg + mreg + preg, breg == 0, []))[2].extend(bits)
                     elif p == "C":
                         groups.setdefault("C", (creg + preg, creg == 0, []))[2].extend(bits)
                     elif p in ("PCIN",):
