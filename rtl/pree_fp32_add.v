@@ -74,6 +74,8 @@ module pree_fp32_add #(
 
   // D's count limited by a sentinel bit (set in B) when D ends with a register.
   localparam SENTINEL = (seam_regs(5) != 0);
+  // B's sticky bit from a mask when B lies between two registers.
+  localparam ALIGN_MASK = (seam_regs(2) != 0) && (seam_regs(3) != 0);
 
 `ifndef SYNTHESIS
   initial begin
@@ -167,8 +169,22 @@ module pree_fp32_add #(
   );
 
   // ---------------------------------------------------------------- B: align
-  wire [58:0] aligned  = {s2_man_s, 3'd0, 32'd0} >> s2_sh;
-  wire [26:0] al_small = {aligned[58:33], aligned[32] | (aligned[31:0] != 32'd0)};
+  // ALIGN_MASK (B between two registers): the bits that the shift drops below the 3 extra bits
+  // are found with a mask of the low s2_sh bits beside the shifter (a shorter path on ECP5,
+  // measured); otherwise from the low word of a 59-bit shift (fewer LUTs, measured).
+  wire [26:0] al_small;
+
+  generate
+    if (ALIGN_MASK) begin : g_align_mask
+      wire [26:0] aligned = {s2_man_s, 3'd0} >> s2_sh;
+      wire [26:0] dropped = ~(27'h7FF_FFFF << s2_sh);
+      wire        lost    = (({s2_man_s, 3'd0} & dropped) != 27'd0);
+      assign al_small = {aligned[26:1], aligned[0] | lost};
+    end else begin : g_align_shift
+      wire [58:0] aligned = {s2_man_s, 3'd0, 32'd0} >> s2_sh;
+      assign al_small = {aligned[58:33], aligned[32] | (aligned[31:0] != 32'd0)};
+    end
+  endgenerate
 
   // The normalising left shift may not take the exponent below 1, so it is at most exp - 1.
   // With a register after D (SENTINEL), a sentinel one at bit 27 - exp of the sum's 27 low

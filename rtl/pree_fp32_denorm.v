@@ -11,11 +11,14 @@
 // man_o and sticky_o are the inputs. The exponent itself passes beside this module unchanged:
 // after a shift man_o[26] is 0, which pree_fp32_round packs with exponent field 0 and never
 // takes as an overflow.
-// (A sticky bit formed from a mask of the low sh_i bits, beside the shifter, measured larger
-// and no shallower after Yosys mapping than this shift of a 59-bit word.)
+// Parameter MaskSticky: 0 forms the sticky bit from the low word of a 59-bit shift (fewer LUTs
+// after Yosys mapping, measured); 1 from a mask of the low sh_i bits beside the shifter, a
+// shorter path on ECP5 (measured), which the deep pipelines use.
 `default_nettype none
 
-module pree_fp32_denorm (
+module pree_fp32_denorm #(
+  parameter MaskSticky = 0
+) (
   input  wire        tiny_i,
   input  wire [4:0]  sh_i,
   input  wire [26:0] man_i,
@@ -24,10 +27,22 @@ module pree_fp32_denorm (
   output wire        sticky_o
 );
 
-  wire [58:0] shifted = {man_i, 32'd0} >> sh_i;
-  wire        lost    = (shifted[31:0] != 32'd0);
+  wire [26:0] shifted;
+  wire        lost;
 
-  assign man_o    = tiny_i ? shifted[58:32] : man_i;
+  generate
+    if (MaskSticky != 0) begin : g_mask
+      wire [26:0] dropped = ~(27'h7FF_FFFF << sh_i);     // the low sh_i bits (all for >= 27)
+      assign shifted = man_i >> sh_i;
+      assign lost    = ((man_i & dropped) != 27'd0);
+    end else begin : g_shift
+      wire [58:0] wide = {man_i, 32'd0} >> sh_i;
+      assign shifted = wide[58:32];
+      assign lost    = (wide[31:0] != 32'd0);
+    end
+  endgenerate
+
+  assign man_o    = tiny_i ? shifted : man_i;
   assign sticky_o = sticky_i | (tiny_i & lost);
 
 endmodule

@@ -228,7 +228,7 @@ module pree_fp32_div #(
   wire [26:0] den_man;
   wire        den_sticky;
 
-  pree_fp32_denorm u_denorm (
+  pree_fp32_denorm #(.MaskSticky(seam_regs(STEP0 + QW + 1))) u_denorm (
     .tiny_i (n_tiny), .sh_i (n_sh), .man_i (n_man), .sticky_i (n_sticky),
     .man_o (den_man), .sticky_o (den_sticky)
   );

@@ -265,7 +265,7 @@ module pree_fp32_mul #(
   wire [26:0] den_man;
   wire        den_sticky;
 
-  pree_fp32_denorm u_denorm (
+  pree_fp32_denorm #(.MaskSticky(AMT_BOTH)) u_denorm (
     .tiny_i (s6_tiny), .sh_i (s6_sh), .man_i (s6_man), .sticky_i (s6_sticky),
     .man_o (den_man), .sticky_o (den_sticky)
   );

@@ -214,7 +214,7 @@ module pree_fp32_sqr #(
   wire [26:0] den_man;
   wire        den_sticky;
 
-  pree_fp32_denorm u_denorm (
+  pree_fp32_denorm #(.MaskSticky(AMT_BOTH)) u_denorm (
     .tiny_i (s4_tiny), .sh_i (s4_sh), .man_i (s4_man), .sticky_i (s4_sticky),
     .man_o (den_man), .sticky_o (den_sticky)
   );

@@ -28,10 +28,9 @@
 //   Zero needs no special case: its normalised word is 0, which packs as +0.
 // Stage plan (registered seams per Stages; the last seam is always the output register):
 //   Stages 1: 5 | 2: 2 5 | 3: 2 4 5 | 4: 1 2 4 5 | 5: all
-// Stages = 2 is the paper's split (stage 1 = the count, stage 2 = shift and round). Why the
-// shift is not beside the count there: the 64-bit count alone is 9 LUT levels after Yosys
-// mapping; count and shift in stage 1 measured 14 LUT levels there and 3 in stage 2, this split
-// 9 / 9 (docs/fp32_units.md).
+// Stages = 2 is the paper's split (stage 1 = the count, stage 2 = shift and round): with the
+// count per byte it measures 4 / 4 LUT levels after Yosys mapping (the earlier 64-bit priority
+// chain: 9 / 9; count and shift together in stage 1: 14 / 3; docs/fp32_units.md).
 `default_nettype none
 
 module pree_u64_to_f32 #(
