@@ -79,7 +79,6 @@ uint32_t get32(const VlWide<N> &port, unsigned lsb)
 struct cosim_rtl {
     virtual ~cosim_rtl() {}
     cosim_in_t in;
-    uint64_t cycles = 0;
     virtual void tick() = 0;
     virtual int ph_ready() = 0;
     virtual int idle() = 0;
@@ -192,7 +191,6 @@ struct Rtl : cosim_rtl {
         top->eval();
         if (tfp) tfp->dump(time);
         time++;
-        cycles++;
     }
     int hp_bank_w() override { return HPB; }
     int ph_ready() override { return top->ph_ready_o; }

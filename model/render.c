@@ -32,7 +32,7 @@ static long peak_rss_kb(void)
  * alpha and, in fp32 mode, the datapath's state layout. */
 static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
 {
-    h->alpha = opt->alpha > 0 ? opt->alpha : UPDATE_ALPHA;
+    h->alpha = render_alpha(opt);
     h->alpha32 = preu_f32(h->alpha);
     h->kappa32 = preu_kappa(h->alpha32);
     for (size_t i = 0; i < h->n; i++) {

@@ -84,6 +84,12 @@ const update_ops_t *render_block_ops(const render_session_t *s);
 int render_close(render_session_t *s, char *err, size_t errlen);
 void render_result_free(render_result_t *res);
 
+/* The alpha a render uses: opt->alpha, or UPDATE_ALPHA when it is 0 (not set). */
+static inline double render_alpha(const render_options_t *opt)
+{
+    return opt->alpha > 0 ? opt->alpha : UPDATE_ALPHA;
+}
+
 /* The emitted photon count for a request (whole batches of 1000, at least one). */
 static inline uint64_t render_emitted(uint64_t requested)
 {

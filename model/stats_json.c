@@ -33,7 +33,7 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
     fprintf(f, "  \"hit_points_saturated\": %llu,\n", st->hit_points_saturated);
     fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.17g,\n",
             opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper",
-            opt->alpha > 0 ? opt->alpha : UPDATE_ALPHA);
+            render_alpha(opt));
     fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
     fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
                "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,
