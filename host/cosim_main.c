@@ -170,7 +170,7 @@ int pree_cmd_cosim(int argc, char **argv)
     const int dp = opt.datapath == DATAPATH_STABLE;
     cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
     if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
-    /* The update rule's run-time constants, as the render derives them (model/render.c). */
+    /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
     cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
     cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,

@@ -80,7 +80,7 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench.
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP -Imodel -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(2)$(1).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a
 	@mkdir -p $$(@D)
