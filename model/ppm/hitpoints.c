@@ -38,6 +38,7 @@ int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixe
 
 int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src)
 {
+    if (src->n == 0) return 0;   /* an empty row: its arrays may be NULL (memcpy's contract) */
     if (reserve(dst, dst->n + src->n)) return -1;
     memcpy(dst->hot + dst->n, src->hot, src->n * sizeof *src->hot);
     memcpy(dst->weight + dst->n, src->weight, src->n * sizeof *src->weight);
