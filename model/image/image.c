@@ -7,6 +7,7 @@
  * first PNG/EXR read or write, so runs that only touch PPM files never pay for it. */
 #include "image.h"
 #include "image_io.h"
+#include "file_in.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -353,8 +354,8 @@ int pree_image_read(const char *path, pree_image_t *img, char *err, size_t errle
     img->samples = PREE_SAMPLES_FLOAT;
 
     /* PNM (P2, P3, P5, P6) is read here; everything else by OpenImageIO. */
-    FILE *f = fopen(path, "rb");
-    if (!f) return set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    FILE *f = file_in_open(path, PREE_INPUT_MAX_BYTES, err, errlen);
+    if (!f) return -1;
     unsigned char magic[2] = {0, 0};
     size_t got = fread(magic, 1, 2, f);
     int pnm = got == 2 && magic[0] == 'P' && (magic[1] == '2' || magic[1] == '3' || magic[1] == '5' || magic[1] == '6');

@@ -159,7 +159,7 @@ cmp -s "$tmp/d.ppm" "$tmp/heat.ppm" || fail "--diff heat map bytes differ from t
 # 4. Errors: exit status, one line on stderr naming the problem, no --diff file left behind.
 expect() {   # expect STATUS PATTERN ARGS...: exit status and a one-line message matching PATTERN
   local want=$1 pat=$2; shift 2
-  "$PREE" compare "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+  timeout 60 "$PREE" compare "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
   if [ $rc -ne "$want" ]; then fail "pree compare $*: exit $rc, want $want"; return; fi
   [ "$(wc -l <"$tmp/err")" -eq 1 ] || fail "pree compare $*: stderr is not one line: $(cat "$tmp/err")"
   grep -q -- "$pat" "$tmp/err" || fail "pree compare $*: message '$(cat "$tmp/err")' lacks '$pat'"
@@ -169,6 +169,10 @@ expect 1 'sizes differ' "$tmp/a.ppm" "$tmp/small.ppm"
 expect 1 'sample types differ' "$tmp/a.ppm" "$tmp/a.pfm"
 expect 1 "$tmp/missing.png" "$tmp/a.ppm" "$tmp/missing.png"
 expect 1 'at least 11x11' "$tmp/small.ppm" "$tmp/small.ppm"
+expect 1 '/dev/zero: not a regular file' "$tmp/a.ppm" /dev/zero   # once an endless read
+mkfifo "$tmp/fifo"
+expect 1 'fifo: not a regular file' "$tmp/fifo" "$tmp/a.ppm"         # once a wait for a writer
+expect 1 'is a directory' "$tmp/a.ppm" "$tmp"
 expect 1 "$tmp/nodir/d.png" "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/nodir/d.png"
 expect 1 'unknown 8-bit image extension' "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/d.tif"
 expect 1 'sizes differ' "$tmp/a.ppm" "$tmp/small.ppm" --diff "$tmp/never.png"
