@@ -31,8 +31,8 @@ int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long lon
     char *end;
     errno = 0;
     long long v = strtoll(s, &end, 10);
-    if (end == s || *end != '\0' || errno == ERANGE)
-        return cli_error(a, "%s: '%s' is not an integer", opt, s);
+    if (end == s || *end != '\0') return cli_error(a, "%s: '%s' is not an integer", opt, s);
+    if (errno == ERANGE) return cli_error(a, "%s: %s is out of range [%lld, %lld]", opt, s, lo, hi);
     if (v < lo || v > hi) return cli_error(a, "%s: %lld is out of range [%lld, %lld]", opt, v, lo, hi);
     *out = v;
     return 0;

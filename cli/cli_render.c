@@ -2,6 +2,7 @@
  * the images and the statistics. Ctrl-C stops after the current photon block and writes
  * the image of the photons done so far; the exit status is then 130. */
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -113,6 +114,15 @@ int pree_cmd_render(int argc, char **argv)
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
     if (rc < 0) {
         fprintf(stderr, "pree render: %s: %s\n", scene_path, err);
+        render_result_free(&res);
+        scene_free(&scene);
+        return 1;
+    }
+    size_t nonfinite = 0;
+    for (size_t i = 0; i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
+    if (nonfinite) {   /* never an image of inf or NaN with status 0 */
+        fprintf(stderr, "pree render: %s: %zu pixel values are not finite (a light's power beyond the %s range?); "
+                "nothing written\n", scene_path, nonfinite, opt.precision == PRECISION_FP32 ? "binary32" : "double");
         render_result_free(&res);
         scene_free(&scene);
         return 1;

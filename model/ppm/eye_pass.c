@@ -1,5 +1,6 @@
 /* eye_pass.c: eye rays from the camera to their diffuse hit points, rows in parallel. */
 #include <omp.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "eye_pass.h"
@@ -43,6 +44,24 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     }
 }
 
+/* The tracer (Embree's ray.valid()) takes ray origins with |x| up to 1.8e18 and finite
+ * directions; the corner rays bound every eye ray's origin and direction. 0, or -1 with err. */
+static int camera_rays_check(const camera_t *cam, vec3 dir, vec3 cx, vec3 cy, char *err, size_t errlen)
+{
+    for (int k = 0; k < 4; k++) {
+        vec3 d = v3_add(v3_add(v3_scale(cx, (k & 1) - 0.5), v3_scale(cy, (k >> 1) - 0.5)), dir);
+        vec3 o = v3_add(cam->origin, v3_scale(d, cam->near)), n = v3_norm(d);
+        double m = fmax(fabs(o.x), fmax(fabs(o.y), fabs(o.z)));
+        if (!v3_is_finite(n) || !(m <= 1e17)) {
+            snprintf(err, errlen, "camera: the eye rays (scale %g, near %g, this image size) %s", cam->scale,
+                     cam->near, v3_is_finite(n) ? "start beyond +-1e17, outside the tracer's range"
+                                                : "have no direction (is 'dir' along the x axis without 'up'?)");
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t *out,
              eye_stats_t *stats, char *err, size_t errlen)
 {
@@ -52,6 +71,7 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
     vec3 cx = cam->has_up ? v3_scale(v3_norm(v3_cross(dir, cam->up)), w * cam->scale / h)
                           : v3(w * cam->scale / h, 0, 0);
     vec3 cy = v3_scale(v3_norm(v3_cross(cx, dir)), cam->scale);
+    if (camera_rays_check(cam, dir, cx, cy, err, errlen)) return -1;
     hitpoints_t *rows = calloc((size_t)h, sizeof *rows);
     if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
     eye_stats_t total = {0, 0};

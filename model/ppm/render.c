@@ -287,6 +287,11 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     /* Initial radius, hit-point state, and the grid. */
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
+        snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
+                 "bounding box) is 0: use a larger image", res->hp.n);
+        goto fail;
+    }
     if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c). */
     s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);

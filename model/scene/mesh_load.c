@@ -280,6 +280,12 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
                 rc = -1;
                 break;
             }
+            if (fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))) > SCENE_COORD_MAX) {
+                snprintf(err, errlen, "%s: vertex %zu lies beyond +-%g (the range the tracer and binary32 hold)%s",
+                         path, v0 + k + 1, SCENE_COORD_MAX, " after the transform");
+                rc = -1;
+                break;
+            }
             if (m->normals && am->mNormals) {
                 vec3 n = v3(am->mNormals[k].x, am->mNormals[k].y, am->mNormals[k].z);
                 vec3 r = v3(cof[0][0] * n.x + cof[0][1] * n.y + cof[0][2] * n.z,

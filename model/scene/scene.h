@@ -59,6 +59,14 @@ typedef struct {
     vec3 up;
 } camera_t;
 
+/* The largest magnitude of a scene coordinate, radius or distance: Embree's rays hold origins
+ * up to |x| = 1.8e18 (ray.valid()), and binary32 squared distances need |x| below ~1.8e19;
+ * 1e15 leaves a margin for sums of coordinates and the camera's near offset. */
+#define SCENE_COORD_MAX 1e15
+/* The camera's scale (the image plane's height at distance 1) lies in [1e-6, 1e6]. */
+#define SCENE_SCALE_MIN 1e-6
+#define SCENE_SCALE_MAX 1e6
+
 typedef struct {
     char path[512];
     camera_t camera;
