@@ -1,6 +1,7 @@
 /* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--json]`: print SSIM, SNR, PSNR,
  * RMSE and the maximum absolute difference of B against the reference A. */
 #include "cli.h"
+#include "cli_outputs.h"
 #include "compare.h"
 #include "image.h"
 
@@ -101,6 +102,10 @@ int pree_cmd_compare(int argc, char **argv)
     if (nfiles != 2) {
         fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])\n");
         return 2;
+    }
+    if (diff) {   /* before any work: never over an input, a device or a missing directory */
+        cli_file_t in[2] = {{"IMAGE_A", files[0]}, {"IMAGE_B", files[1]}}, out = {"--diff", diff};
+        if (cli_outputs_check("compare", in, 2, &out, 1)) return 1;
     }
 
     char err[1024], errs[2][1024];

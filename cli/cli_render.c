@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include "cli.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -99,6 +100,11 @@ int pree_cmd_render(int argc, char **argv)
         snprintf(default_out, sizeof default_out, "%s.png", base);
         outs[nout++] = default_out;
     }
+
+    cli_file_t in = {"the scene", scene_path}, out[MAX_OUTPUTS + 1];
+    for (int k = 0; k < nout; k++) out[k] = (cli_file_t){"--out", outs[k]};
+    if (stats_path) out[nout] = (cli_file_t){"--stats", stats_path};
+    if (cli_outputs_check("render", &in, 1, out, nout + (stats_path != NULL))) return 1;
 
     scene_t scene;
     if (scene_load(scene_path, &scene, err, sizeof err)) {

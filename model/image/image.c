@@ -8,6 +8,7 @@
 #include "image.h"
 #include "image_io.h"
 #include "file_in.h"
+#include "atomic_out.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -159,30 +160,6 @@ static const char *extension(const char *path)
     return dot ? dot + 1 : "";
 }
 
-/* A fresh temporary file beside `path`: "<dir>/.<name>.tmp-<pid>-<n>", created exclusively
- * with mode 0666 less the umask. Returns the open descriptor and fills tmp, or -1. */
-static int make_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
-{
-    static atomic_uint counter;
-    const char *slash = strrchr(path, '/');
-    int dirlen = slash ? (int)(slash - path + 1) : 0;
-    const char *name = slash ? slash + 1 : path;
-    if (!*name) return set_err(err, errlen, "%s: %s", path, "not a file name");
-    for (int tries = 0; tries < 100; tries++) {
-        unsigned n = atomic_fetch_add(&counter, 1);
-        int len = snprintf(tmp, tmplen, "%.*s.%s.tmp-%ld-%u", dirlen, path, name, (long)getpid(), n);
-        if (len < 0 || (size_t)len >= tmplen) return set_err(err, errlen, "%s: %s", path, "path too long");
-        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) return fd;
-        if (errno != EEXIST) {
-            if (err && errlen) snprintf(err, errlen, "%s: cannot create a temporary file beside it: %s",
-                                        path, strerror(errno));
-            return -1;
-        }
-    }
-    return set_err(err, errlen, "%s: %s", path, "cannot find a free temporary file name");
-}
-
 /* Write smallppm's ASCII P3 from 8-bit values to the open descriptor fd (which it closes). */
 static int write_ppm_fd(int fd, const char *path, int w, int h, const unsigned char *v,
                         char *err, size_t errlen)
@@ -220,7 +197,7 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
                         const void *pixels, char *err, size_t errlen)
 {
     char tmp[4096];
-    int fd = make_temp(path, tmp, sizeof tmp, err, errlen);
+    int fd = atomic_out_begin(path, tmp, sizeof tmp, err, errlen);
     if (fd < 0) return -1;
     int rc;
     if (!strcasecmp(ext, "ppm")) {
@@ -237,11 +214,8 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
             }
         }
     }
-    if (rc == 0 && rename(tmp, path) != 0) {
-        rc = set_err(err, errlen, "%s: cannot rename the finished temporary file over it: %s",
-                     path, strerror(errno));
-    }
-    if (rc) unlink(tmp);
+    if (rc) atomic_out_discard(tmp);
+    else rc = atomic_out_commit(tmp, path, err, errlen);
     return rc;
 }
 

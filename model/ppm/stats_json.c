@@ -4,6 +4,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "stats_json.h"
+#include "atomic_out.h"
 
 static const char *grid_name(grid_kind_t g)
 {
@@ -62,14 +63,17 @@ int stats_json_write(const char *path, const char *scene, const render_options_t
                      const render_stats_t *st, int interrupted, char *err, size_t errlen)
 {
     char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
-    stats_json_print(f, scene, opt, st, interrupted);
-    if (fclose(f) != 0 || rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        unlink(tmp);
+    int fd = atomic_out_begin(path, tmp, sizeof tmp, err, errlen);
+    FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
+    if (!f) {
+        if (fd >= 0) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); close(fd); atomic_out_discard(tmp); }
         return -1;
     }
-    return 0;
+    stats_json_print(f, scene, opt, st, interrupted);
+    if (ferror(f) | (fclose(f) != 0)) {
+        snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));
+        atomic_out_discard(tmp);
+        return -1;
+    }
+    return atomic_out_commit(tmp, path, err, errlen);
 }

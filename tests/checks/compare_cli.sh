@@ -173,6 +173,11 @@ expect 1 '/dev/zero: not a regular file' "$tmp/a.ppm" /dev/zero   # once an endl
 mkfifo "$tmp/fifo"
 expect 1 'fifo: not a regular file' "$tmp/fifo" "$tmp/a.ppm"         # once a wait for a writer
 expect 1 'is a directory' "$tmp/a.ppm" "$tmp"
+cp "$tmp/a.ppm" "$tmp/keep.ppm"
+expect 1 'the same file as IMAGE_A' "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/a.ppm"   # once overwrote a.ppm
+expect 1 'the same file as IMAGE_B' "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/./b.ppm"
+cmp -s "$tmp/a.ppm" "$tmp/keep.ppm" || fail "--diff a.ppm changed the input"
+expect 1 '/dev/null: not a regular file' "$tmp/a.ppm" "$tmp/b.ppm" --diff /dev/null
 expect 1 "$tmp/nodir/d.png" "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/nodir/d.png"
 expect 1 'unknown 8-bit image extension' "$tmp/a.ppm" "$tmp/b.ppm" --diff "$tmp/d.tif"
 expect 1 'sizes differ' "$tmp/a.ppm" "$tmp/small.ppm" --diff "$tmp/never.png"

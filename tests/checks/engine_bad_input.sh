@@ -14,7 +14,7 @@ expect_error() {
   [ "$(wc -l < "$TMP/stderr")" -eq 1 ] || { cat "$TMP/stderr"; fail "$name: expected one error line (command: pree $*)"; }
   grep -qE -e "$pattern" "$TMP/stderr" || fail "$name: error '$(cat "$TMP/stderr")' does not match /$pattern/"
   [ ! -e "$TMP/out.png" ] && [ ! -e "$TMP/out.json" ] || fail "$name: an output file was written"
-  ls "$TMP" | grep -q '\.tmp\.' && fail "$name: a temporary file was left behind"
+  ls -a "$TMP" | grep -q '\.tmp[-.]' && fail "$name: a temporary file was left behind"
   echo "ok: $name (exit $rc): $(cat "$TMP/stderr")"
 }
 
@@ -138,3 +138,25 @@ expect_error "a BOM after line 1" "bad.scene:2: unknown directive '\\\\xEF\\\\xB
 # Finite light power whose image overflows: an error, never inf or NaN pixels with status 0.
 scene "$cam" "$mat" "$sph" "light point 0 0 -3 flux 1.7e308 1 1" "light point 0 0 -3 flux 1.7e308 1 1"
 expect_error "image beyond double's range" "bad.scene: [0-9]+ pixel values are not finite .*nothing written" render "$TMP/bad.scene" "${small[@]}" "${out[@]}"
+
+# Outputs are checked before any work, are never an input or another output (by inode), and
+# never replace anything but a regular file; the inputs stay as they were.
+cp "$good" "$TMP/scene.png"; cp "$good" "$TMP/keep.scene"; ln "$TMP/keep.scene" "$TMP/hard.json"
+expect_error "--stats over the scene" "--stats .*keep.scene: the same file as the scene" render "$TMP/keep.scene" --out "$TMP/out.png" --stats "$TMP/keep.scene" --quiet
+expect_error "--out over a scene named .png" "--out .*scene.png: the same file as the scene" render "$TMP/scene.png" --out "$TMP/scene.png" --quiet
+expect_error "--stats a hard link to the scene" "--stats .*hard.json: the same file as the scene" render "$TMP/keep.scene" --out "$TMP/out.png" --stats "$TMP/hard.json" --quiet
+cmp -s "$good" "$TMP/keep.scene" && cmp -s "$good" "$TMP/scene.png" || fail "an input was changed"
+expect_error "--stats and --out the same file" "--stats .*/x.png: the same file as --out" render "$good" --out "$TMP/x.png" --stats "$TMP/./x.png" --quiet
+[ ! -e "$TMP/x.png" ] || fail "x.png written"
+expect_error "two --out spellings of one file" "--out .*: the same file as --out" render "$good" --out "$TMP/out.png" --out "$TMP/../$(basename "$TMP")/out.png" --quiet
+expect_error "--stats /dev/null" "--stats /dev/null: not a regular file" render "$good" "${out[@]:0:2}" --stats /dev/null --quiet
+[ -c /dev/null ] || fail "/dev/null is no longer a device"
+ln -s "$TMP/keep.scene" "$TMP/link.png"
+expect_error "--out a symbolic link" "--out .*link.png: is a symbolic link" render "$good" --out "$TMP/link.png" --quiet
+expect_error "--stats into a missing directory" "--stats .*nodir/s.json: the directory .* does not exist" render "$good" --out "$TMP/out.png" --stats "$TMP/nodir/s.json" --quiet
+long=$(printf 'n%.0s' $(seq 252))
+expect_error "a name over 255 bytes" "the name is longer than the file system's 255 bytes" render "$good" --out "$TMP/$long.png" --quiet
+run "$PREE" render "$good" "${small[@]}" --out "$TMP/${long:0:251}.png" --stats "$TMP/${long:0:250}.json" --quiet
+[ -s "$TMP/${long:0:251}.png" ] && [ -s "$TMP/${long:0:250}.json" ] || fail "255-byte names not written"
+ls -a "$TMP" | grep -q '\.tmp[-.]' && fail "a temporary file was left behind"
+echo "ok: 255-byte output names are written"
