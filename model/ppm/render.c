@@ -12,6 +12,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "hp_order.h"
+#include "mem_check.h"
 #include "photon_pass.h"
 #include "radiance.h"
 #include "render.h"
@@ -261,6 +262,11 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     st->scene_glass = scene->has_glass;
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
+    /* Memory: before anything large, with one hit point a pixel; again with the true count. */
+    if (mem_check(MEM_BASE_BYTES + (uint64_t)st->scene_triangles * MEM_TRIANGLE_BYTES +
+                  (uint64_t)s->npix * (MEM_PIXEL_BYTES + MEM_HIT_POINT_BYTES), opt->max_memory,
+                  "one hit point a pixel assumed", err, errlen))
+        goto fail;
     s->bb = calloc(1, sizeof *s->bb);
     res->rgb = calloc(s->npix * 3, sizeof *res->rgb);
     if (!s->bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto fail; }
@@ -277,6 +283,9 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, err, errlen)) goto fail;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
+    if (mem_check((uint64_t)res->hp.n * MEM_HIT_POINT_BYTES, opt->max_memory, "the hit points' state and grid",
+                  err, errlen))
+        goto fail;
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
     for (size_t i = 0; i < res->hp.n; i++) {

@@ -33,6 +33,7 @@ typedef struct {
     int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
+    uint64_t max_memory;     /* bytes the render may hold (mem_check.h); 0: RLIMIT_AS and MemAvailable */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
                               * update then runs photon-major on one thread */
 } render_options_t;
