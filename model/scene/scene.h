@@ -71,6 +71,9 @@ typedef struct {
     char path[512];
     camera_t camera;
     material_t *materials; int num_materials;
+    int materials_cap;     /* scene_materials.c: the array's capacity and its index by name */
+    int *mat_index;        /* open addressing: material id + 1, 0 empty */
+    size_t mat_index_cap, mat_index_used;
     sphere_t *spheres;     int num_spheres;
     mesh_t *meshes;        int num_meshes;
     light_t *lights;       int num_lights;
@@ -87,5 +90,7 @@ void scene_free(scene_t *scene);
 /* Add a material, returning its index, or -1 if the name exists (err filled). */
 int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen);
 int scene_find_material(const scene_t *scene, const char *name);
+/* Free the materials and their index (scene_free calls it). */
+void scene_materials_free(scene_t *scene);
 
 #endif

@@ -116,26 +116,6 @@ static void *grow(void *p, int count, size_t elem)
     return realloc(p, (size_t)(count + 1) * elem);
 }
 
-int scene_find_material(const scene_t *scene, const char *name)
-{
-    for (int i = 0; i < scene->num_materials; i++)
-        if (!strcmp(scene->materials[i].name, name)) return i;
-    return -1;
-}
-
-int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen)
-{
-    if (scene_find_material(scene, m->name) >= 0) {
-        snprintf(err, errlen, "material '%s' is defined twice", m->name);
-        return -1;
-    }
-    material_t *mats = grow(scene->materials, scene->num_materials, sizeof *mats);
-    if (!mats) { snprintf(err, errlen, "out of memory"); return -1; }
-    scene->materials = mats;
-    mats[scene->num_materials] = *m;
-    return scene->num_materials++;
-}
-
 static int material_ref(parse_ctx_t *pc, const scene_t *s, const char *name, int *out)
 {
     int id = scene_find_material(s, name);
@@ -416,7 +396,7 @@ void scene_free(scene_t *s)
 {
     for (int i = 0; i < s->num_meshes; i++) mesh_free(&s->meshes[i]);
     free(s->meshes);
-    free(s->materials);
+    scene_materials_free(s);
     free(s->spheres);
     for (int i = 0; i < s->num_lights; i++) free(s->lights[i].tris);
     free(s->lights);
