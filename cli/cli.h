@@ -7,6 +7,7 @@
 
 int pree_cmd_render(int argc, char **argv);
 int pree_cmd_compare(int argc, char **argv);
+int pree_cmd_check(int argc, char **argv);
 /* host/cosim_main.c: the co-simulation program's own entry (pree-cosim-*). */
 int pree_cmd_cosim(int argc, char **argv);
 

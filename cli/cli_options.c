@@ -38,6 +38,24 @@ int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long lon
     return 0;
 }
 
+int cli_size(cli_args_t *a, const char *opt, uint64_t *out)
+{
+    const char *s = cli_value(a, opt);
+    if (!s) return 2;
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    const char *units = "KMGT";
+    const char *u = *end ? strchr(units, *end) : NULL;
+    double scale = u ? (double)(1ull << (10 * (u - units + 1))) : 1.0;
+    if (end == s || errno || !(v >= 0) || (*end && (!u || end[1])))
+        return cli_error(a, "%s: '%s' is not a size (bytes, or a number with K, M, G or T)", opt, s);
+    v *= scale;
+    if (v < 1048576.0 || v > 1125899906842624.0) return cli_error(a, "%s: %s is out of range [1M, 1024T]", opt, s);
+    *out = (uint64_t)v;
+    return 0;
+}
+
 int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, double *out)
 {
     const char *s = cli_value(a, opt);

@@ -18,6 +18,9 @@ int cli_error(cli_args_t *a, const char *fmt, ...) __attribute__((format(printf,
 const char *cli_value(cli_args_t *a, const char *opt);
 /* An integer value in [lo, hi]; 0, or 2 with the error printed. */
 int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long long *out);
+/* A size in bytes: a number, or one with K, M, G or T (powers of 1024), in [1M, 1024T];
+ * 0, or 2 with the error printed. */
+int cli_size(cli_args_t *a, const char *opt, uint64_t *out);
 /* A real value in (lo, hi] (lo_open) or [lo, hi]; 0, or 2 with the error printed. */
 int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, double *out);
 /* The render options that `pree render` and `pree cosim` share: --width/--height (at least

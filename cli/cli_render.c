@@ -20,25 +20,6 @@
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) { (void)sig; interrupted = 1; }
 
-/* SIZE: bytes, or a number with K, M, G or T (powers of 1024), from 1M to 1P. */
-static int parse_size(cli_args_t *a, const char *opt, uint64_t *out)
-{
-    const char *s = cli_value(a, opt);
-    if (!s) return 2;
-    char *end;
-    errno = 0;
-    double v = strtod(s, &end);
-    const char *units = "KMGT";
-    const char *u = *end ? strchr(units, *end) : NULL;
-    double scale = u ? (double)(1ull << (10 * (u - units + 1))) : 1.0;
-    if (end == s || errno || !(v >= 0) || (*end && (!u || end[1])))
-        return cli_error(a, "%s: '%s' is not a size (bytes, or a number with K, M, G or T)", opt, s);
-    v *= scale;
-    if (v < 1048576.0 || v > 1125899906842624.0) return cli_error(a, "%s: %s is out of range [1M, 1024T]", opt, s);
-    *out = (uint64_t)v;
-    return 0;
-}
-
 static void render_usage(FILE *f)
 {
     fprintf(f,
@@ -106,7 +87,7 @@ int pree_cmd_render(int argc, char **argv)
             if (cli_image_ext(&a, s)) return 2;
             outs[nout++] = s;
         } else if (!strcmp(arg, "--max-memory")) {
-            if (parse_size(&a, arg, &opt.max_memory)) return 2;
+            if (cli_size(&a, arg, &opt.max_memory)) return 2;
         } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
         else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree render --help')", arg);
         else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);

@@ -18,6 +18,7 @@ static int run_cosim(int argc, char **argv);
 
 static const command_t commands[] = {
     {"render",  pree_cmd_render,  "render a scene with progressive photon mapping"},
+    {"check",   pree_cmd_check,   "parse and validate a scene; report what a render would need"},
     {"compare", pree_cmd_compare, "compare two images: SSIM, SNR, PSNR, RMSE, max difference"},
     {"cosim",   run_cosim,        "render with the Verilated PREE RTL doing the radiance estimation"},
 };

@@ -44,10 +44,21 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     }
 }
 
-/* The tracer (Embree's ray.valid()) takes ray origins with |x| up to 1.8e18 and finite
- * directions; the corner rays bound every eye ray's origin and direction. 0, or -1 with err. */
-static int camera_rays_check(const camera_t *cam, vec3 dir, vec3 cx, vec3 cy, char *err, size_t errlen)
+/* The image axes of a w x h image: the reference program's camera fixes x to world +x. */
+static void camera_axes(const camera_t *cam, int w, int h, vec3 *dir, vec3 *cx, vec3 *cy)
 {
+    *dir = v3_norm(cam->dir);
+    *cx = cam->has_up ? v3_scale(v3_norm(v3_cross(*dir, cam->up)), w * cam->scale / h)
+                      : v3(w * cam->scale / h, 0, 0);
+    *cy = v3_scale(v3_norm(v3_cross(*cx, *dir)), cam->scale);
+}
+
+/* The tracer (Embree's ray.valid()) takes ray origins with |x| up to 1.8e18 and finite
+ * directions; the corner rays bound every eye ray's origin and direction. */
+int eye_camera_check(const camera_t *cam, int w, int h, char *err, size_t errlen)
+{
+    vec3 dir, cx, cy;
+    camera_axes(cam, w, h, &dir, &cx, &cy);
     for (int k = 0; k < 4; k++) {
         vec3 d = v3_add(v3_add(v3_scale(cx, (k & 1) - 0.5), v3_scale(cy, (k >> 1) - 0.5)), dir);
         vec3 o = v3_add(cam->origin, v3_scale(d, cam->near)), n = v3_norm(d);
@@ -66,12 +77,9 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
              eye_stats_t *stats, char *err, size_t errlen)
 {
     const camera_t *cam = &scene->camera;
-    vec3 dir = v3_norm(cam->dir);
-    /* Image axes: the reference program's camera fixes x to world +x. */
-    vec3 cx = cam->has_up ? v3_scale(v3_norm(v3_cross(dir, cam->up)), w * cam->scale / h)
-                          : v3(w * cam->scale / h, 0, 0);
-    vec3 cy = v3_scale(v3_norm(v3_cross(cx, dir)), cam->scale);
-    if (camera_rays_check(cam, dir, cx, cy, err, errlen)) return -1;
+    vec3 dir, cx, cy;
+    camera_axes(cam, w, h, &dir, &cx, &cy);
+    if (eye_camera_check(cam, w, h, err, errlen)) return -1;
     hitpoints_t *rows = calloc((size_t)h, sizeof *rows);
     if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
     eye_stats_t total = {0, 0};

@@ -16,6 +16,10 @@ typedef struct {
     unsigned long long glass_splits;  /* glass hits that branched into two paths */
 } eye_stats_t;
 
+/* 0 when every eye ray of a width x height image starts within +-1e17 and has a direction
+ * (what the tracer takes), else -1 with a one-line message in err. */
+int eye_camera_check(const camera_t *cam, int width, int height, char *err, size_t errlen);
+
 int eye_pass(const scene_t *scene, const tracer_t *tr, int width, int height,
              hitpoints_t *out, eye_stats_t *stats, char *err, size_t errlen);
 

@@ -263,9 +263,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
     /* Memory: before anything large, with one hit point a pixel; again with the true count. */
-    if (mem_check(MEM_BASE_BYTES + (uint64_t)st->scene_triangles * MEM_TRIANGLE_BYTES +
-                  (uint64_t)s->npix * (MEM_PIXEL_BYTES + MEM_HIT_POINT_BYTES), opt->max_memory,
-                  "one hit point a pixel assumed", err, errlen))
+    if (mem_check(mem_estimate_start(st->scene_triangles, s->npix), opt->max_memory, MEM_START_WHAT, err, errlen))
         goto fail;
     s->bb = calloc(1, sizeof *s->bb);
     res->rgb = calloc(s->npix * 3, sizeof *res->rgb);
