@@ -173,7 +173,7 @@ static int resolve_material(scene_t *s, const mesh_opts_t *o, const struct aiMat
     snprintf(want, sizeof want, "%.40s:%.22s", base, name.data);
     for (int k = 1; k < 1000; k++) {
         if (k == 1) snprintf(m.name, sizeof m.name, "%s", want);
-        else snprintf(m.name, sizeof m.name, "%.55s#%d", want, k);
+        else snprintf(m.name, sizeof m.name, "%.55s#%u", want, (unsigned)k % 1000u);   /* k < 1000 */
         int id = scene_find_material(s, m.name);
         if (id < 0) return scene_add_material(s, &m, err, errlen);
         const material_t *e = &s->materials[id];

@@ -7,7 +7,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 [ -x build/pree ] || make -s build/pree >/dev/null || { echo "FAIL: cannot build build/pree (make build/pree)"; exit 1; }
-pree=$PWD/build/pree
+pree=${PREE:-$PWD/build/pree}
 d=build/checks/mesh_bad_input; rm -rf "$d"; mkdir -p "$d"; cd "$d"
 fail=0
 scene() {   # scene NAME MESH-LINE: a scene file with one mesh line
