@@ -1,6 +1,7 @@
 /* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--json]`: print SSIM, SNR, PSNR,
  * RMSE and the maximum absolute difference of B against the reference A. */
 #include "cli.h"
+#include "cli_options.h"
 #include "compare.h"
 #include "image.h"
 
@@ -73,35 +74,35 @@ static int write_diff(const char *path, const pree_image_t *a, const pree_image_
     return rc;
 }
 
+enum { OPT_DIFF = CLI_OWN, OPT_JSON };
+
+static const struct option compare_longopts[] = {
+    {"help", no_argument, NULL, CLI_HELP},
+    {"diff", required_argument, NULL, OPT_DIFF},
+    {"json", no_argument, NULL, OPT_JSON},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_compare(int argc, char **argv)
 {
-    const char *files[2] = {NULL, NULL}, *diff = NULL;
-    int nfiles = 0, json = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { usage(stdout); return 0; }
-        if (!strcmp(arg, "--json")) { json = 1; continue; }
-        if (!strcmp(arg, "--diff") || !strncmp(arg, "--diff=", 7)) {
-            if (arg[6] == '=') diff = arg + 7;
-            else if (i + 1 < argc) diff = argv[++i];
-            else { fprintf(stderr, "pree compare: --diff: needs an output file name\n"); return 2; }
-            if (!*diff) { fprintf(stderr, "pree compare: --diff: empty output file name\n"); return 2; }
-            continue;
+    const char *diff = NULL;
+    int json = 0;
+    cli_args_t o;
+    cli_begin(&o, argc, argv, "compare", compare_longopts);
+    for (int id; (id = cli_next(&o)) != 0;) {
+        if (id < 0) return 2;
+        if (id == CLI_HELP) { usage(stdout); return 0; }
+        if (id == OPT_JSON) json = 1;
+        if (id == OPT_DIFF) {
+            diff = o.val;
+            if (!*diff) return cli_error(&o, "--diff: empty output file name");
         }
-        if (arg[0] == '-' && arg[1] != '\0') {
-            fprintf(stderr, "pree compare: unknown option '%s' (try 'pree compare --help')\n", arg);
-            return 2;
-        }
-        if (nfiles == 2) {
-            fprintf(stderr, "pree compare: too many images: '%s' (give exactly two)\n", arg);
-            return 2;
-        }
-        files[nfiles++] = arg;
     }
-    if (nfiles != 2) {
-        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])\n");
-        return 2;
-    }
+    int nfiles;
+    char **files = cli_operands(&o, &nfiles);
+    if (nfiles > 2) return cli_error(&o, "too many images: '%s' (give exactly two)", files[2]);
+    if (nfiles != 2)
+        return cli_error(&o, "needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])");
 
     char err[1024], errs[2][1024];
     pree_image_t img[2] = {{0}, {0}};

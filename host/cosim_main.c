@@ -124,6 +124,23 @@ static void to_float(const double *rgb, size_t n, float *out)
     for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
 }
 
+enum { OPT_THREADS = CLI_OWN, OPT_GAP, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
+       OPT_TRACE, OPT_OUT, OPT_STATS };
+
+static const struct option cosim_longopts[] = {
+    CLI_RENDER_LONGOPTS,
+    {"threads", required_argument, NULL, OPT_THREADS},
+    {"gap", required_argument, NULL, OPT_GAP},
+    {"no-reference", no_argument, NULL, OPT_NO_REFERENCE},
+    {"no-reorder", no_argument, NULL, OPT_NO_REORDER},
+    {"no-schedule", no_argument, NULL, OPT_NO_SCHEDULE},
+    {"window", required_argument, NULL, OPT_WINDOW},
+    {"trace", required_argument, NULL, OPT_TRACE},
+    {"out", required_argument, NULL, OPT_OUT},
+    {"stats", required_argument, NULL, OPT_STATS},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_cosim(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
@@ -132,33 +149,33 @@ int pree_cmd_cosim(int argc, char **argv)
     int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
     double gap = 0;
     char err[1024];
-    cli_args_t a = {argc, argv, 1, "cosim"};
-    while (a.i < argc) {
-        const char *arg = argv[a.i++];
+    cli_args_t a;
+    cli_begin(&a, argc, argv, "cosim", cosim_longopts);
+    for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
-        int r = cli_render_option(&a, arg, &opt, 11);
+        if (id < 0) return 2;
+        int r = cli_render_option(&a, id, &opt, 11);
         if (r != 1) { if (r) return r; continue; }
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { cosim_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; threads = (int)v; }
-        else if (!strcmp(arg, "--gap")) {
-            const char *s = cli_value(&a, arg);
-            char *end;
-            if (!s) return 2;
-            gap = strtod(s, &end);
-            if (*end || !(gap >= 0 && gap < 1)) return cli_error(&a, "--gap: '%s' is not in [0, 1)", s);
-        } else if (!strcmp(arg, "--no-reference")) reference = 0;
-        else if (!strcmp(arg, "--no-reorder")) reorder = 0;
-        else if (!strcmp(arg, "--no-schedule")) schedule = 0;
-        else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
-        else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
-        else if (!strcmp(arg, "--out")) {
-            if (!(out_path = cli_value(&a, arg))) return 2;
-            if (cli_image_ext(&a, out_path)) return 2;
-        } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
-        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree cosim --help')", arg);
-        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
-        else scene_path = arg;
+        switch (id) {
+        case CLI_HELP: cosim_usage(stdout); return 0;
+        case OPT_THREADS: if (cli_int(&a, 1, 1024, &v)) return 2; threads = (int)v; break;
+        case OPT_GAP:
+            if (cli_real(&a, 0, 0, 1, &gap)) return 2;
+            if (gap == 1) return cli_error(&a, "--gap: '%s' is not in [0, 1)", a.val);
+            break;
+        case OPT_NO_REFERENCE: reference = 0; break;
+        case OPT_NO_REORDER: reorder = 0; break;
+        case OPT_NO_SCHEDULE: schedule = 0; break;
+        case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; window = (int)v; break;
+        case OPT_TRACE: trace_path = a.val; break;
+        case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
+        case OPT_STATS: stats_path = a.val; break;
+        }
     }
+    int nops;
+    char **ops = cli_operands(&a, &nops);
+    if (nops > 1) return cli_error(&a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
+    if (nops == 1) scene_path = ops[0];
     if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
