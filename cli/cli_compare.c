@@ -4,6 +4,7 @@
 #include "cli_options.h"
 #include "compare.h"
 #include "image.h"
+#include "json_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -30,24 +31,11 @@ static void usage(FILE *f)
         "2 usage error. See docs/compare.md for the exact definitions.\n");
 }
 
-/* A figure as text: "inf"/"-inf" for infinities, else 10 significant digits for people and
- * 17 (enough to round-trip a double) in JSON. */
-static void fmt_num(char *buf, size_t len, double v, int json)
+/* A figure as text for people: "inf"/"-inf" for infinities, else 10 significant digits. */
+static void fmt_num(char *buf, size_t len, double v)
 {
-    if (isinf(v)) snprintf(buf, len, json ? "\"%s\"" : "%s", v > 0 ? "inf" : "-inf");
-    else snprintf(buf, len, json ? "%.17g" : "%.10g", v);
-}
-
-static void json_string(const char *s)
-{
-    putchar('"');
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\') printf("\\%c", ch);
-        else if (ch < 0x20) printf("\\u%04x", ch);
-        else putchar(ch);
-    }
-    putchar('"');
+    if (isinf(v)) snprintf(buf, len, "%s", v > 0 ? "inf" : "-inf");
+    else snprintf(buf, len, "%.10g", v);
 }
 
 /* Write the --diff image: a heat map for .png/.ppm, linear |a - b| for .exr. */
@@ -131,20 +119,19 @@ int pree_cmd_compare(int argc, char **argv)
     const double vals[] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs};
     char num[64];
     if (json) {
-        printf("{\"image_a\": ");
-        json_string(files[0]);
-        printf(", \"image_b\": ");
-        json_string(files[1]);
-        printf(", \"width\": %d, \"height\": %d", a.width, a.height);
-        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
-            fmt_num(num, sizeof num, vals[k], 1);
-            printf(", \"%s\": %s", keys[k], num);
-        }
-        printf("}\n");
+        json_t *fig = json_object();
+        json_set_str(fig, "image_a", files[0]);
+        json_set_str(fig, "image_b", files[1]);
+        json_set_u64(fig, "width", (uint64_t)a.width);
+        json_set_u64(fig, "height", (uint64_t)a.height);
+        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)   /* JSON has no infinity */
+            json_object_set_new(fig, keys[k], isinf(vals[k]) ? json_string(vals[k] > 0 ? "inf" : "-inf")
+                                                           : json_real(vals[k]));
+        if (json_file_print(stdout, fig)) { fprintf(stderr, "pree compare: cannot write the figures\n"); goto done; }
     } else {
         printf("width %d\nheight %d\n", a.width, a.height);
         for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
-            fmt_num(num, sizeof num, vals[k], 0);
+            fmt_num(num, sizeof num, vals[k]);
             printf("%s %s\n", keys[k], num);
         }
     }
