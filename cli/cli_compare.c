@@ -76,7 +76,7 @@ int pree_cmd_compare(int argc, char **argv)
     const char *diff = NULL;
     int json = 0;
     cli_args_t o;
-    cli_begin(&o, argc, argv, "compare", compare_longopts);
+    cli_begin(&o, argc, argv, "compare", compare_longopts, NULL, 0);
     for (int id; (id = cli_next(&o)) != 0;) {
         if (id < 0) return 2;
         if (id == CLI_HELP) { usage(stdout); return 0; }

@@ -44,12 +44,11 @@ static void render_usage(FILE *f)
         "  --quiet                no progress on stderr\n");
 }
 
-enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_THREADS, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS };
+enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
     {"photon-offset", required_argument, NULL, OPT_PHOTON_OFFSET},
-    {"threads", required_argument, NULL, OPT_THREADS},
     {"precision", required_argument, NULL, OPT_PRECISION},
     {"scan", required_argument, NULL, OPT_SCAN},
     {"out", required_argument, NULL, OPT_OUT},
@@ -61,25 +60,22 @@ int pree_cmd_render(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    const char *scene_path = NULL, *stats_path = NULL;
+    const char *scene_path, *stats_path = NULL;
     const char *outs[MAX_OUTPUTS];
     int nout = 0;
     char err[1024];
     cli_args_t a;
-    cli_begin(&a, argc, argv, "render", render_longopts);
+    cli_begin(&a, argc, argv, "render", render_longopts, &opt, 1);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         int k;
         if (id < 0) return 2;
-        int r = cli_render_option(&a, id, &opt, 1);
-        if (r != 1) { if (r) return r; continue; }
         switch (id) {
         case CLI_HELP: render_usage(stdout); return 0;
         case OPT_PHOTON_OFFSET:
             if (cli_int(&a, 0, 10000000000LL, &v)) return 2;
             opt.photon_offset = (uint64_t)v;
             break;
-        case OPT_THREADS: if (cli_int(&a, 1, 1024, &v)) return 2; opt.threads = (int)v; break;
         case OPT_PRECISION: {
             static const char *const names[] = {"double", "fp32"};
             if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
@@ -100,11 +96,7 @@ int pree_cmd_render(int argc, char **argv)
         case OPT_STATS: stats_path = a.val; break;
         }
     }
-    int nops;
-    char **ops = cli_operands(&a, &nops);
-    if (nops > 1) return cli_error(&a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
-    if (nops == 1) scene_path = ops[0];
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree render SCENE [options])");
+    if (!(scene_path = cli_scene(&a))) return 2;
     if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
