@@ -3,7 +3,6 @@
  * memory, triangles, lights) without building the BVH or tracing a ray. Exit 0 when a render
  * could start, 1 when it could not (the one-line reason on stderr), 2 on a usage error. */
 #include <stdio.h>
-#include <string.h>
 #include "cli.h"
 #include "cli_options.h"
 #include "eye_pass.h"
@@ -33,23 +32,27 @@ static void report(const char *path, const scene_t *s, const render_options_t *o
     printf("memory_estimate_bytes %llu (%.2f GiB)\n", (unsigned long long)mem, (double)mem / (1u << 30));
 }
 
+enum { OPT_MAX_MEMORY = CLI_OWN };
+
+static const struct option check_longopts[] = {
+    CLI_RENDER_LONGOPTS,
+    {"max-memory", required_argument, NULL, OPT_MAX_MEMORY},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_check(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
-    const char *scene_path = NULL;
-    cli_args_t a = {argc, argv, 1, "check"};
-    while (a.i < argc) {
-        const char *arg = argv[a.i++];
-        int r = cli_render_option(&a, arg, &opt, 1);
-        if (r != 1) { if (r) return r; continue; }
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { check_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--max-memory")) { if (cli_size(&a, arg, &opt.max_memory)) return 2; }
-        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree check --help')", arg);
-        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
-        else scene_path = arg;
+    const char *scene_path;
+    cli_args_t a;
+    cli_begin(&a, argc, argv, "check", check_longopts, &opt, 1);
+    for (int id; (id = cli_next(&a)) != 0;) {
+        if (id < 0) return 2;
+        if (id == CLI_HELP) { check_usage(stdout); return 0; }
+        if (id == OPT_MAX_MEMORY && cli_size(&a, &opt.max_memory)) return 2;
     }
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree check SCENE [options])");
+    if (!(scene_path = cli_scene(&a))) return 2;
     scene_t scene;
     char err[1024];
     if (scene_load(scene_path, &scene, err, sizeof err)) {

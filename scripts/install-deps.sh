@@ -25,7 +25,7 @@ if [ "${1:-}" = --fpga ]; then
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
+      libassimp-dev libjansson-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
       clang-14 libclang-rt-14-dev)   # clang + libFuzzer: make fuzz, tests/checks/fuzz_short.sh
 missing=()
 for p in "${pkgs[@]}"; do
