@@ -26,7 +26,7 @@ fuzz: $(FUZZ_BINS)
 	@for n in $(FUZZ_NAMES); do \
 	  mkdir -p $(FUZZ_DIR)/corpus-$$n && cp -n tests/fuzz/corpus/$$n/* $(FUZZ_DIR)/corpus-$$n/ && \
 	  echo "fuzz: $$n for $(FUZZ_TIME) s" && \
-	  (cd $(FUZZ_DIR) && ./fuzz_$$n -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 \
+	  (cd $(FUZZ_DIR) && LSAN_OPTIONS=suppressions=$(CURDIR)/tests/lsan.supp:print_suppressions=0 ./fuzz_$$n -max_total_time=$(FUZZ_TIME) -timeout=10 -rss_limit_mb=2048 \
 	     -print_final_stats=1 -artifact_prefix=crash-$$n- corpus-$$n 2>&1 | tee fuzz-$$n.log | \
 	     grep -E '^(#[0-9]+.*(pulse|DONE)|stat::|==[0-9]+==ERROR|SUMMARY)') || exit 1; \
 	  grep -q '^stat::number_of_executed_units' $(FUZZ_DIR)/fuzz-$$n.log || exit 1; \

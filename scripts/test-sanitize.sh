@@ -8,6 +8,7 @@ cd "$(dirname "$0")/.."
 dir=${1:-build-san}
 export ASAN_OPTIONS=halt_on_error=1:detect_leaks=1:abort_on_error=0
 export UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1
+export LSAN_OPTIONS=suppressions=$PWD/tests/lsan.supp:print_suppressions=0   # Debian libraries' leaks
 logdir=$dir/test-logs; mkdir -p "$logdir"
 pass=0; fail=0
 run_one() {   # run_one NAME COMMAND...: pass when it exits 0 and no sanitizer wrote a report

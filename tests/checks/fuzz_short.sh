@@ -4,6 +4,7 @@
 # (10 s a unit), leak or sanitizer report, naming the input that gave it.
 . "$(dirname "$0")/../lib/check.sh"
 secs=${FUZZ_SHORT:-30}
+export LSAN_OPTIONS=suppressions=$ROOT/tests/lsan.supp:print_suppressions=0
 for n in scene mesh; do
   bin="$ROOT/build/fuzz/fuzz_$n"
   [ -x "$bin" ] || fail "$bin not built (make fuzz-build)"
