@@ -9,6 +9,7 @@
 #include <unistd.h>
 #include "cli.h"
 #include "cli_options.h"
+#include "cli_pm.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -42,12 +43,14 @@ static void render_usage(FILE *f)
         "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
         "  --stats FILE.json      write the statistics\n"
         "  --quiet                no progress on stderr\n");
+    cli_pm_usage(f);
 }
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
+    CLI_PM_LONGOPTS,
     {"photon-offset", required_argument, NULL, OPT_PHOTON_OFFSET},
     {"precision", required_argument, NULL, OPT_PRECISION},
     {"scan", required_argument, NULL, OPT_SCAN},
@@ -94,9 +97,10 @@ int pree_cmd_render(int argc, char **argv)
             outs[nout++] = a.val;
             break;
         case OPT_STATS: stats_path = a.val; break;
+        default: if (cli_pm_option(&a, id, &opt)) return 2;
         }
     }
-    if (!(scene_path = cli_scene(&a))) return 2;
+    if (!(scene_path = cli_scene(&a)) || cli_pm_check(&a, &opt)) return 2;
     if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)

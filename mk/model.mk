@@ -3,7 +3,10 @@
 # command line (cli/*.c), and the cmocka unit tests in tests/unit (one binary per test_*.c).
 
 MODEL_C   := $(wildcard model/*/*.c)
-MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o)
+# C++ only where a library demands it: nanoflann (model/pm/knn_naive.cpp); OpenImageIO's is the
+# shared module below.
+MODEL_CXX := $(filter-out model/image/image_io.cpp,$(wildcard model/*/*.cpp))
+MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o) $(MODEL_CXX:%.cpp=$(BUILD)/%.o)
 CLI_OBJ   := $(patsubst %.c,$(BUILD)/%.o,$(wildcard cli/*.c))
 
 # OpenImageIO (model/image/image_io.cpp) is a shared module that model/image/image.c loads on the first PNG

@@ -14,6 +14,8 @@
 #include "hp_order.h"
 #include "photon_pass.h"
 #include "radiance.h"
+#include "fnv1a.h"
+#include "pm_render.h"
 #include "render.h"
 #include "update_batch.h"
 
@@ -126,17 +128,10 @@ static void progress(const render_options_t *opt, uint64_t done, uint64_t total,
     fflush(stderr);
 }
 
-static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < n; i++) { h ^= p[i]; h *= 0x100000001b3ull; }
-    return h;
-}
-
 /* Hashes of the image and of the final hit-point state, for determinism checks. */
 static void hash_results(render_result_t *res, precision_t prec)
 {
-    const uint64_t basis = 0xcbf29ce484222325ull;
+    const uint64_t basis = FNV1A_BASIS;
     const hitpoints_t *h = &res->hp;
     res->stats.image_hash = fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
     uint64_t s = basis;
@@ -253,12 +248,8 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     }
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
     s->T = opt->record_ops ? 1 : omp_get_max_threads();
+    render_stats_scene(st, scene);
     st->threads = s->T;
-    st->scene_spheres = (unsigned long long)scene->num_spheres;
-    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
-    st->scene_lights = (unsigned long long)scene->num_lights;
-    st->scene_mirror = scene->has_mirror;
-    st->scene_glass = scene->has_glass;
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
     s->bb = calloc(1, sizeof *s->bb);
@@ -430,9 +421,19 @@ done:
     return rc;
 }
 
+void render_stats_scene(render_stats_t *st, const scene_t *scene)
+{
+    st->scene_spheres = (unsigned long long)scene->num_spheres;
+    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
+    st->scene_lights = (unsigned long long)scene->num_lights;
+    st->scene_mirror = scene->has_mirror;
+    st->scene_glass = scene->has_glass;
+}
+
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen)
 {
+    if (opt->estimator == ESTIMATOR_PM) return pm_render(scene, opt, res, err, errlen);
     render_session_t *s = render_open(scene, opt, res, err, errlen);
     if (!s) return -1;
     while (render_step(s, err, errlen) > 0) {}

@@ -26,6 +26,14 @@ static const json_field_t seconds[] = {
     SK(sec_total, JF_REAL, "total"),
 };
 
+#define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
+static const json_field_t pm_fields[] = {
+    P(photons_stored, JF_U64), P(k, JF_U64), P(max_radius, JF_REAL), P(clusters, JF_U64),
+    P(clusters_sparse, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
+    P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_cluster, JF_REAL),
+    P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
+};
+
 static const char *grid_name(grid_kind_t g)
 {
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
@@ -51,6 +59,12 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_fields(o, st, counts, N(counts));
     json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
     json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
+    if (opt->estimator == ESTIMATOR_PM) {
+        json_t *pm = json_fields(st, pm_fields, N(pm_fields));
+        json_set_str(pm, "knn_search", opt->knn_search == KNN_NAIVE ? "naive" : "clustered");
+        json_object_set_new(o, "pm", pm);
+    }
+    json_set_str(o, "estimator", opt->estimator == ESTIMATOR_PM ? "pm" : "ppm");
     return o;
 }
 
