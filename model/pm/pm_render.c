@@ -87,5 +87,6 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
     free(L);
     photon_map_free(&map);
     st->sec_total = omp_get_wtime() - t0;
+    st->peak_rss_kb = render_peak_rss_kb();
     return rc;
 }

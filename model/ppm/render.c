@@ -24,7 +24,7 @@
 _Static_assert(TRACE_CHUNKS <= UPDATE_BATCH_MAX_CHUNKS, "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
 #define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
-static long peak_rss_kb(void)
+long render_peak_rss_kb(void)
 {
     struct rusage ru;
     return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
@@ -417,7 +417,7 @@ int render_close(render_session_t *s, char *err, size_t errlen)
 done:
     st->sec_total = omp_get_wtime() - s->t_start;
     session_free(s);
-    st->peak_rss_kb = peak_rss_kb();
+    st->peak_rss_kb = render_peak_rss_kb();
     return rc;
 }
 

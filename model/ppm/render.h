@@ -80,6 +80,8 @@ typedef struct {
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen);
+/* The process's peak resident memory so far, KiB. */
+long render_peak_rss_kb(void);
 /* The scene-content figures of the statistics. */
 void render_stats_scene(render_stats_t *st, const scene_t *scene);
 
