@@ -1,7 +1,9 @@
-/* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--json]`: print SSIM, SNR, PSNR,
- * RMSE and the maximum absolute difference of B against the reference A. */
+/* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json]`: print SSIM, SNR,
+ * PSNR, RMSE and the maximum absolute difference of B against the reference A, and write the
+ * difference maps (diffmap.h). */
 #include "cli.h"
 #include "compare.h"
+#include "diffmap.h"
 #include "image.h"
 
 #include <math.h>
@@ -13,16 +15,21 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-        "usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json]\n"
+        "usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json]\n"
         "\n"
         "Compare IMAGE_B against the reference IMAGE_A (.png, .ppm or .exr, same size and sample\n"
         "type) and print one 'key value' line per figure: width, height, peak (the dynamic\n"
         "range L: 255 for 8-bit images, the reference's max - min for float images), ssim,\n"
         "snr_db, psnr_db (inf when identical), rmse, max_abs.\n"
         "\n"
-        "  --diff OUT  also write a difference image: OUT.png or OUT.ppm gets a heat map of the\n"
-        "              per-pixel largest channel difference scaled by its maximum (black = none,\n"
-        "              then red, yellow, white = max_abs); OUT.exr gets |A - B| per channel, linear\n"
+        "  --diff OUT  also write difference maps. OUT.png or OUT.ppm: three false-colour pictures\n"
+        "              (black = none, then red, yellow, white = the largest), each with a colour\n"
+        "              bar and its values below: OUT the relative error, per pixel the largest\n"
+        "              channel's |A - B| / (|A| + 0.01 peak); OUT-abs the absolute error |A - B|;\n"
+        "              OUT-ssim the SSIM map (1 - SSIM drawn, SSIM on the labels). Each bar's top\n"
+        "              is its map's maximum, printed as rel_max, max_abs and ssim_min.\n"
+        "              OUT.exr: |A - B| per channel, linear\n"
+        "  --log       the maps' colour on a log scale (four decades below the maximum)\n"
         "  --json      print the figures as one JSON object instead (inf as the string \"inf\")\n"
         "\n"
         "Exit status: 0 success, 1 unreadable image, size or type mismatch, or write failure,\n"
@@ -49,38 +56,96 @@ static void json_string(const char *s)
     putchar('"');
 }
 
-/* Write the --diff image: a heat map for .png/.ppm, linear |a - b| for .exr. */
-static int write_diff(const char *path, const pree_image_t *a, const pree_image_t *b,
-                      char *err, size_t errlen)
+/* OUT with SUFFIX before its extension: "d.png" + "-abs" = "d-abs.png". */
+static void suffixed(char *buf, size_t len, const char *path, const char *suffix)
 {
     const char *slash = strrchr(path, '/');
     const char *dot = strrchr(slash ? slash + 1 : path, '.');
-    size_t n = (size_t)a->width * a->height * 3;
-    int rc;
+    size_t stem = dot ? (size_t)(dot - path) : strlen(path);
+    snprintf(buf, len, "%.*s%s%s", (int)stem, path, suffix, dot ? dot : "");
+}
+
+/* Draw field e (w x h) with scale s into an 8-bit picture with its colour bar at path. */
+static int write_field(const char *path, const double *e, int w, int h, const pree_scale_t *s,
+                       char *err, size_t errlen)
+{
+    int cw, ch;
+    pree_diffmap_size(w, h, &cw, &ch);
+    unsigned char *u = malloc((size_t)3 * cw * ch);
+    if (!u) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
+    pree_diffmap_draw(e, w, h, s, u);
+    int rc = pree_image_write_u8(path, cw, ch, u, err, errlen);
+    free(u);
+    return rc;
+}
+
+/* The --diff figures: each field's scale maximum (what the top of its bar stands for). */
+typedef struct { int valid; double rel_max, abs_max, ssim_min; } diff_figs_t;
+
+/* --diff OUT.png|.ppm: OUT the relative error, OUT-abs the absolute error, OUT-ssim the SSIM
+ * map, each in false colour with its bar; OUT.exr: linear |A - B| per channel. On failure no
+ * file of the set is left. */
+static int write_diff(const char *path, const pree_image_t *a, const pree_image_t *b, double peak,
+                      int log, diff_figs_t *f, char *err, size_t errlen)
+{
+    const char *slash = strrchr(path, '/');
+    const char *dot = strrchr(slash ? slash + 1 : path, '.');
+    const int w = a->width, h = a->height;
+    size_t n = (size_t)w * h * 3;
+    int rc = -1;
     if (dot && !strcasecmp(dot, ".exr")) {
         double *d = malloc(n * sizeof *d);
         if (!d) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
         for (size_t i = 0; i < n; i++) d[i] = fabs((double)a->rgb[i] - (double)b->rgb[i]);
-        rc = pree_image_write(path, a->width, a->height, d, err, errlen);
+        rc = pree_image_write(path, w, h, d, err, errlen);
         free(d);
-    } else {
-        unsigned char *u = malloc(n);
-        if (!u) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
-        pree_diff_heatmap(a->rgb, b->rgb, a->width, a->height, u);
-        rc = pree_image_write_u8(path, a->width, a->height, u, err, errlen);
-        free(u);
+        return rc;
     }
+    char names[3][4096];
+    snprintf(names[0], sizeof names[0], "%s", path);
+    suffixed(names[1], sizeof names[1], path, "-abs");
+    suffixed(names[2], sizeof names[2], path, "-ssim");
+    double *e = malloc(sizeof(double) * w * h);
+    if (!e) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
+    int done = 0;
+    pree_scale_t s = {0};
+    pree_err_rel(a->rgb, b->rgb, w, h, PREE_REL_EPS * peak, e);
+    f->rel_max = pree_scale_fit(e, (long)w * h, log, &s);
+    s.title = log ? "rel err (log)" : "rel err";
+    if (write_field(names[0], e, w, h, &s, err, errlen)) goto out;
+    done = 1;
+    pree_err_abs(a->rgb, b->rgb, w, h, e);
+    f->abs_max = pree_scale_fit(e, (long)w * h, log, &s);
+    s.title = log ? "abs err (log)" : "abs err";
+    if (write_field(names[1], e, w, h, &s, err, errlen)) goto out;
+    done = 2;
+    if (isnan(pree_ssim_map(a->rgb, b->rgb, w, h, peak, e))) {
+        snprintf(err, errlen, "%.900s: out of memory", names[2]);
+        goto out;
+    }
+    for (long p = 0; p < (long)w * h; p++) e[p] = 1.0 - e[p];   /* drawn as 1 - SSIM */
+    f->ssim_min = 1.0 - pree_scale_fit(e, (long)w * h, log, &s);
+    s.one_minus = 1;
+    s.title = log ? "ssim (log 1-ssim)" : "ssim";
+    if (write_field(names[2], e, w, h, &s, err, errlen)) goto out;
+    rc = 0;
+    f->valid = 1;
+out:
+    for (int k = 0; rc && k < done; k++) remove(names[k]);
+    free(e);
     return rc;
 }
 
 int pree_cmd_compare(int argc, char **argv)
 {
     const char *files[2] = {NULL, NULL}, *diff = NULL;
-    int nfiles = 0, json = 0;
+    int nfiles = 0, json = 0, log = 0;
+    diff_figs_t figs = {0};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { usage(stdout); return 0; }
         if (!strcmp(arg, "--json")) { json = 1; continue; }
+        if (!strcmp(arg, "--log")) { log = 1; continue; }
         if (!strcmp(arg, "--diff") || !strncmp(arg, "--diff=", 7)) {
             if (arg[6] == '=') diff = arg + 7;
             else if (i + 1 < argc) diff = argv[++i];
@@ -99,7 +164,7 @@ int pree_cmd_compare(int argc, char **argv)
         files[nfiles++] = arg;
     }
     if (nfiles != 2) {
-        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])\n");
+        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json])\n");
         return 2;
     }
 
@@ -121,13 +186,14 @@ int pree_cmd_compare(int argc, char **argv)
         fprintf(stderr, "pree compare: %s vs %s: %s\n", files[0], files[1], err);
         goto done;
     }
-    if (diff && write_diff(diff, &a, &b, err, sizeof err)) {
+    if (diff && write_diff(diff, &a, &b, m.peak, log, &figs, err, sizeof err)) {
         fprintf(stderr, "pree compare: --diff: %s\n", err);
         goto done;
     }
 
-    const char *keys[] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs"};
-    const double vals[] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs};
+    const char *keys[] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs", "rel_max", "ssim_min"};
+    const double vals[] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs, figs.rel_max, figs.ssim_min};
+    const size_t nkeys = figs.valid ? 8 : 6;   /* the --diff maps' scale figures when drawn */
     char num[64];
     if (json) {
         printf("{\"image_a\": ");
@@ -135,14 +201,14 @@ int pree_cmd_compare(int argc, char **argv)
         printf(", \"image_b\": ");
         json_string(files[1]);
         printf(", \"width\": %d, \"height\": %d", a.width, a.height);
-        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        for (size_t k = 0; k < nkeys; k++) {
             fmt_num(num, sizeof num, vals[k], 1);
             printf(", \"%s\": %s", keys[k], num);
         }
         printf("}\n");
     } else {
         printf("width %d\nheight %d\n", a.width, a.height);
-        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
+        for (size_t k = 0; k < nkeys; k++) {
             fmt_num(num, sizeof num, vals[k], 0);
             printf("%s %s\n", keys[k], num);
         }
