@@ -5,9 +5,14 @@
 #include <unistd.h>
 #include "stats_json.h"
 
-static const char *grid_name(grid_kind_t g)
+const char *stats_grid_name(grid_kind_t g)
 {
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
+}
+
+const char *stats_datapath_name(const render_options_t *opt)
+{
+    return opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper";
 }
 
 void stats_json_string(FILE *f, const char *s)
@@ -28,12 +33,11 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
     stats_json_string(f, scene);
     fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n", opt->width, opt->height);
     fprintf(f, "  \"precision\": \"%s\",\n  \"grid\": \"%s\",\n  \"skips\": %s,\n  \"threads\": %d,\n",
-            opt->precision == PRECISION_FP32 ? "fp32" : "double", grid_name(opt->grid),
+            opt->precision == PRECISION_FP32 ? "fp32" : "double", stats_grid_name(opt->grid),
             (!opt->no_skip && opt->grid == GRID_CELLS) ? "true" : "false", st->threads);
     fprintf(f, "  \"hit_points_saturated\": %llu,\n", st->hit_points_saturated);
     fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.17g,\n",
-            opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper",
-            render_alpha(opt));
+            stats_datapath_name(opt), render_alpha(opt));
     fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
     fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
                "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,

@@ -8,6 +8,10 @@
 
 int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
                      const render_stats_t *st, int interrupted, char *err, size_t errlen);
+/* The names the statistics (and the EXR metadata) give: "cells", "smallppm", "brute"; "paper",
+ * "stable", or "none" for the double mode. */
+const char *stats_grid_name(grid_kind_t g);
+const char *stats_datapath_name(const render_options_t *opt);
 /* s as a JSON string literal, quoted and escaped. */
 void stats_json_string(FILE *f, const char *s);
 void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
