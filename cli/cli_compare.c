@@ -1,9 +1,10 @@
-/* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json]`: print SSIM, SNR,
+/* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json]`: print SSIM, SNR,
  * PSNR, RMSE and the maximum absolute difference of B against the reference A, and write the
  * difference maps (diffmap.h). */
 #include "cli.h"
 #include "compare.h"
 #include "diffmap.h"
+#include "flip.h"
 #include "image.h"
 
 #include <math.h>
@@ -15,7 +16,7 @@
 static void usage(FILE *f)
 {
     fprintf(f,
-        "usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json]\n"
+        "usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json]\n"
         "\n"
         "Compare IMAGE_B against the reference IMAGE_A (.png, .ppm or .exr, same size and sample\n"
         "type) and print one 'key value' line per figure: width, height, peak (the dynamic\n"
@@ -30,6 +31,9 @@ static void usage(FILE *f)
         "              is its map's maximum, printed as rel_max, max_abs and ssim_min.\n"
         "              OUT.exr: |A - B| per channel, linear\n"
         "  --log       the maps' colour on a log scale (four decades below the maximum)\n"
+        "  --flip      also LDR-FLIP (Andersson et al. 2020, 67 pixels per degree): the mean as\n"
+        "              'flip'; with --diff the map as OUT-flip, its largest pixel as flip_max.\n"
+        "              Float images are compared through the engine's display transform\n"
         "  --json      print the figures as one JSON object instead (inf as the string \"inf\")\n"
         "\n"
         "Exit status: 0 success, 1 unreadable image, size or type mismatch, or write failure,\n"
@@ -80,13 +84,13 @@ static int write_field(const char *path, const double *e, int w, int h, const pr
 }
 
 /* The --diff figures: each field's scale maximum (what the top of its bar stands for). */
-typedef struct { int valid; double rel_max, abs_max, ssim_min; } diff_figs_t;
+typedef struct { int valid; double rel_max, abs_max, ssim_min, flip_max; } diff_figs_t;
 
 /* --diff OUT.png|.ppm: OUT the relative error, OUT-abs the absolute error, OUT-ssim the SSIM
  * map, each in false colour with its bar; OUT.exr: linear |A - B| per channel. On failure no
  * file of the set is left. */
 static int write_diff(const char *path, const pree_image_t *a, const pree_image_t *b, double peak,
-                      int log, diff_figs_t *f, char *err, size_t errlen)
+                      int log, const double *flip, diff_figs_t *f, char *err, size_t errlen)
 {
     const char *slash = strrchr(path, '/');
     const char *dot = strrchr(slash ? slash + 1 : path, '.');
@@ -101,10 +105,11 @@ static int write_diff(const char *path, const pree_image_t *a, const pree_image_
         free(d);
         return rc;
     }
-    char names[3][4096];
+    char names[4][4096];
     snprintf(names[0], sizeof names[0], "%s", path);
     suffixed(names[1], sizeof names[1], path, "-abs");
     suffixed(names[2], sizeof names[2], path, "-ssim");
+    suffixed(names[3], sizeof names[3], path, "-flip");
     double *e = malloc(sizeof(double) * w * h);
     if (!e) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
     int done = 0;
@@ -128,6 +133,13 @@ static int write_diff(const char *path, const pree_image_t *a, const pree_image_
     s.one_minus = 1;
     s.title = log ? "ssim (log 1-ssim)" : "ssim";
     if (write_field(names[2], e, w, h, &s, err, errlen)) goto out;
+    done = 3;
+    if (flip) {
+        f->flip_max = pree_scale_fit(flip, (long)w * h, log, &s);
+        s.one_minus = 0;
+        s.title = log ? "flip (log)" : "flip";
+        if (write_field(names[3], flip, w, h, &s, err, errlen)) goto out;
+    }
     rc = 0;
     f->valid = 1;
 out:
@@ -136,16 +148,35 @@ out:
     return rc;
 }
 
+/* The FLIP map of b against a (display values, flip.h) and its mean in *mean; NULL when out
+ * of memory. */
+static double *compute_flip(const pree_image_t *a, const pree_image_t *b, double *mean)
+{
+    const size_t n = (size_t)a->width * a->height;
+    float *da = malloc(sizeof(float) * 3 * n), *db = malloc(sizeof(float) * 3 * n);
+    double *map = malloc(sizeof(double) * n);
+    if (da && db && map) {
+        pree_flip_input(a, da);
+        pree_flip_input(b, db);
+        *mean = pree_flip(da, db, a->width, a->height, PREE_FLIP_PPD, map);
+    }
+    free(da);
+    free(db);
+    if (map && isnan(*mean)) { free(map); map = NULL; }
+    return map;
+}
+
 int pree_cmd_compare(int argc, char **argv)
 {
     const char *files[2] = {NULL, NULL}, *diff = NULL;
-    int nfiles = 0, json = 0, log = 0;
+    int nfiles = 0, json = 0, log = 0, want_flip = 0;
     diff_figs_t figs = {0};
     for (int i = 1; i < argc; i++) {
         const char *arg = argv[i];
         if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { usage(stdout); return 0; }
         if (!strcmp(arg, "--json")) { json = 1; continue; }
         if (!strcmp(arg, "--log")) { log = 1; continue; }
+        if (!strcmp(arg, "--flip")) { want_flip = 1; continue; }
         if (!strcmp(arg, "--diff") || !strncmp(arg, "--diff=", 7)) {
             if (arg[6] == '=') diff = arg + 7;
             else if (i + 1 < argc) diff = argv[++i];
@@ -164,7 +195,7 @@ int pree_cmd_compare(int argc, char **argv)
         files[nfiles++] = arg;
     }
     if (nfiles != 2) {
-        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--json])\n");
+        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json])\n");
         return 2;
     }
 
@@ -186,14 +217,25 @@ int pree_cmd_compare(int argc, char **argv)
         fprintf(stderr, "pree compare: %s vs %s: %s\n", files[0], files[1], err);
         goto done;
     }
-    if (diff && write_diff(diff, &a, &b, m.peak, log, &figs, err, sizeof err)) {
+    double flip_mean = NAN, *flip = want_flip ? compute_flip(&a, &b, &flip_mean) : NULL;
+    if (want_flip && !flip) { fprintf(stderr, "pree compare: FLIP: out of memory\n"); goto done; }
+    int bad_diff = diff && write_diff(diff, &a, &b, m.peak, log, flip, &figs, err, sizeof err);
+    free(flip);
+    if (bad_diff) {
         fprintf(stderr, "pree compare: --diff: %s\n", err);
         goto done;
     }
 
-    const char *keys[] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs", "rel_max", "ssim_min"};
-    const double vals[] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs, figs.rel_max, figs.ssim_min};
-    const size_t nkeys = figs.valid ? 8 : 6;   /* the --diff maps' scale figures when drawn */
+    /* The figures: the metrics, FLIP with --flip, the maps' scale tops with --diff. */
+    const char *keys[11] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs"};
+    double vals[11] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs};
+    size_t nkeys = 6;
+    if (want_flip) { keys[nkeys] = "flip"; vals[nkeys++] = flip_mean; }
+    if (figs.valid) {
+        keys[nkeys] = "rel_max"; vals[nkeys++] = figs.rel_max;
+        keys[nkeys] = "ssim_min"; vals[nkeys++] = figs.ssim_min;
+        if (want_flip) { keys[nkeys] = "flip_max"; vals[nkeys++] = figs.flip_max; }
+    }
     char num[64];
     if (json) {
         printf("{\"image_a\": ");
