@@ -65,9 +65,11 @@ build: $(DEPS_STAMP) $(BUILD)/pree
 JOBS ?= $(shell nproc)
 PARALLEL := -j$(JOBS)
 
+# The clock for the time to the first image starts after the packages are in, before the build.
 run: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree
-	@scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
+	@export PREE_RUN_START=$$(date +%s.%N); \
+	  $(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree && \
+	  scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
 
 test-prereqs: $(DEPS_STAMP) $(TEST_PREREQS)
 
