@@ -2,17 +2,11 @@
 """run-summary.py OUT RTL: the closing summary of `make run` (scripts/make-run.sh): where the
 images, maps and report are, and the figures, all read from the JSON files the run wrote.
 RTL is 1 when the co-simulation ran."""
-import json
 import os
 import sys
 
-
-def load(path):
-    try:
-        with open(path) as f:
-            return json.load(f)
-    except (OSError, ValueError):
-        return None
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "report"))
+from sections import load_json as load  # noqa: E402
 
 
 def find(obj, key):
