@@ -2,10 +2,12 @@
  * PSNR, RMSE and the maximum absolute difference of B against the reference A, and write the
  * difference maps (diffmap.h). */
 #include "cli.h"
+#include "cli_options.h"
 #include "compare.h"
 #include "diffmap.h"
 #include "flip.h"
 #include "image.h"
+#include "json_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -40,24 +42,11 @@ static void usage(FILE *f)
         "2 usage error. See docs/compare.md for the exact definitions.\n");
 }
 
-/* A figure as text: "inf"/"-inf" for infinities, else 10 significant digits for people and
- * 17 (enough to round-trip a double) in JSON. */
-static void fmt_num(char *buf, size_t len, double v, int json)
+/* A figure as text for people: "inf"/"-inf" for infinities, else 10 significant digits. */
+static void fmt_num(char *buf, size_t len, double v)
 {
-    if (isinf(v)) snprintf(buf, len, json ? "\"%s\"" : "%s", v > 0 ? "inf" : "-inf");
-    else snprintf(buf, len, json ? "%.17g" : "%.10g", v);
-}
-
-static void json_string(const char *s)
-{
-    putchar('"');
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\') printf("\\%c", ch);
-        else if (ch < 0x20) printf("\\u%04x", ch);
-        else putchar(ch);
-    }
-    putchar('"');
+    if (isinf(v)) snprintf(buf, len, "%s", v > 0 ? "inf" : "-inf");
+    else snprintf(buf, len, "%.10g", v);
 }
 
 /* OUT with SUFFIX before its extension: "d.png" + "-abs" = "d-abs.png". */
@@ -166,38 +155,40 @@ static double *compute_flip(const pree_image_t *a, const pree_image_t *b, double
     return map;
 }
 
+enum { OPT_DIFF = CLI_OWN, OPT_JSON, OPT_LOG, OPT_FLIP };
+
+static const struct option compare_longopts[] = {
+    {"help", no_argument, NULL, CLI_HELP},
+    {"diff", required_argument, NULL, OPT_DIFF},
+    {"json", no_argument, NULL, OPT_JSON},
+    {"log", no_argument, NULL, OPT_LOG},
+    {"flip", no_argument, NULL, OPT_FLIP},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_compare(int argc, char **argv)
 {
-    const char *files[2] = {NULL, NULL}, *diff = NULL;
-    int nfiles = 0, json = 0, log = 0, want_flip = 0;
+    const char *diff = NULL;
+    int json = 0, log = 0, want_flip = 0;
     diff_figs_t figs = {0};
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { usage(stdout); return 0; }
-        if (!strcmp(arg, "--json")) { json = 1; continue; }
-        if (!strcmp(arg, "--log")) { log = 1; continue; }
-        if (!strcmp(arg, "--flip")) { want_flip = 1; continue; }
-        if (!strcmp(arg, "--diff") || !strncmp(arg, "--diff=", 7)) {
-            if (arg[6] == '=') diff = arg + 7;
-            else if (i + 1 < argc) diff = argv[++i];
-            else { fprintf(stderr, "pree compare: --diff: needs an output file name\n"); return 2; }
-            if (!*diff) { fprintf(stderr, "pree compare: --diff: empty output file name\n"); return 2; }
-            continue;
+    cli_args_t o;
+    cli_begin(&o, argc, argv, "compare", compare_longopts, NULL, 0);
+    for (int id; (id = cli_next(&o)) != 0;) {
+        if (id < 0) return 2;
+        if (id == CLI_HELP) { usage(stdout); return 0; }
+        if (id == OPT_JSON) json = 1;
+        if (id == OPT_LOG) log = 1;
+        if (id == OPT_FLIP) want_flip = 1;
+        if (id == OPT_DIFF) {
+            diff = o.val;
+            if (!*diff) return cli_error(&o, "--diff: empty output file name");
         }
-        if (arg[0] == '-' && arg[1] != '\0') {
-            fprintf(stderr, "pree compare: unknown option '%s' (try 'pree compare --help')\n", arg);
-            return 2;
-        }
-        if (nfiles == 2) {
-            fprintf(stderr, "pree compare: too many images: '%s' (give exactly two)\n", arg);
-            return 2;
-        }
-        files[nfiles++] = arg;
     }
-    if (nfiles != 2) {
-        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json])\n");
-        return 2;
-    }
+    int nfiles;
+    char **files = cli_operands(&o, &nfiles);
+    if (nfiles > 2) return cli_error(&o, "too many images: '%s' (give exactly two)", files[2]);
+    if (nfiles != 2)
+        return cli_error(&o, "needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json])");
 
     char err[1024], errs[2][1024];
     pree_image_t img[2] = {{0}, {0}};
@@ -238,20 +229,19 @@ int pree_cmd_compare(int argc, char **argv)
     }
     char num[64];
     if (json) {
-        printf("{\"image_a\": ");
-        json_string(files[0]);
-        printf(", \"image_b\": ");
-        json_string(files[1]);
-        printf(", \"width\": %d, \"height\": %d", a.width, a.height);
-        for (size_t k = 0; k < nkeys; k++) {
-            fmt_num(num, sizeof num, vals[k], 1);
-            printf(", \"%s\": %s", keys[k], num);
-        }
-        printf("}\n");
+        json_t *fig = json_object();
+        json_set_str(fig, "image_a", files[0]);
+        json_set_str(fig, "image_b", files[1]);
+        json_set_u64(fig, "width", (uint64_t)a.width);
+        json_set_u64(fig, "height", (uint64_t)a.height);
+        for (size_t k = 0; k < nkeys; k++)   /* JSON has no infinity */
+            json_object_set_new(fig, keys[k], isinf(vals[k]) ? json_string(vals[k] > 0 ? "inf" : "-inf")
+                                                           : json_real(vals[k]));
+        if (json_file_print(stdout, fig)) { fprintf(stderr, "pree compare: cannot write the figures\n"); goto done; }
     } else {
         printf("width %d\nheight %d\n", a.width, a.height);
         for (size_t k = 0; k < nkeys; k++) {
-            fmt_num(num, sizeof num, vals[k], 0);
+            fmt_num(num, sizeof num, vals[k]);
             printf("%s %s\n", keys[k], num);
         }
     }

@@ -30,7 +30,7 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
+      libassimp-dev libjansson-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
       openimageio-tools chromium)
 missing=()
 for p in "${pkgs[@]}"; do

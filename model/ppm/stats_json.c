@@ -1,9 +1,30 @@
-/* stats_json.c: render statistics in JSON. */
-#include <errno.h>
-#include <stdio.h>
-#include <string.h>
-#include <unistd.h>
+/* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
+#include "json_file.h"
 #include "stats_json.h"
+
+#define S(member, kind) JSON_FIELD(render_stats_t, member, kind)
+#define SK(member, kind, key) JSON_FIELD_AS(render_stats_t, member, kind, key)
+#define N(a) (sizeof a / sizeof a[0])
+
+static const json_field_t counts[] = {
+    S(hit_points_saturated, JF_U64), S(hit_points, JF_U64), S(hit_points_zero_weight, JF_U64),
+    S(eye_rays, JF_U64), S(glass_splits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
+    SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(photons_emitted, JF_U64),
+    S(photon_segments, JF_U64), S(photon_hits, JF_U64), SK(photon_hits_no_cell, JF_U64, "skip_photon_hits_no_cell"),
+    SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
+    SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
+    SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
+    S(image_hash, JF_HEX64), S(state_hash, JF_HEX64),
+};
+static const json_field_t contents[] = {
+    SK(scene_spheres, JF_U64, "spheres"), SK(scene_triangles, JF_U64, "triangles"),
+    SK(scene_lights, JF_U64, "lights"), SK(scene_mirror, JF_BOOL, "mirror"), SK(scene_glass, JF_BOOL, "glass"),
+};
+static const json_field_t seconds[] = {
+    SK(sec_bvh, JF_REAL, "bvh"), SK(sec_eye, JF_REAL, "eye"), SK(sec_grid, JF_REAL, "grid"),
+    SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_radiance, JF_REAL, "radiance"),
+    SK(sec_total, JF_REAL, "total"),
+};
 
 const char *stats_grid_name(grid_kind_t g)
 {
@@ -15,65 +36,30 @@ const char *stats_datapath_name(const render_options_t *opt)
     return opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper";
 }
 
-void stats_json_string(FILE *f, const char *s)
+json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
 {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\') fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20) fprintf(f, "\\u%04x", *s);
-        else fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
-void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
-                      const render_stats_t *st, int interrupted)
-{
-    fprintf(f, "{\n  \"scene\": ");
-    stats_json_string(f, scene);
-    fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n", opt->width, opt->height);
-    fprintf(f, "  \"precision\": \"%s\",\n  \"grid\": \"%s\",\n  \"skips\": %s,\n  \"threads\": %d,\n",
-            opt->precision == PRECISION_FP32 ? "fp32" : "double", stats_grid_name(opt->grid),
-            (!opt->no_skip && opt->grid == GRID_CELLS) ? "true" : "false", st->threads);
-    fprintf(f, "  \"hit_points_saturated\": %llu,\n", st->hit_points_saturated);
-    fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.17g,\n",
-            stats_datapath_name(opt), render_alpha(opt));
-    fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
-    fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
-               "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,
-            st->scene_mirror ? "true" : "false", st->scene_glass ? "true" : "false");
-    fprintf(f, "  \"hit_points\": %llu,\n  \"hit_points_zero_weight\": %llu,\n", st->hit_points, st->hit_points_zero_weight);
-    fprintf(f, "  \"eye_rays\": %llu,\n  \"glass_splits\": %llu,\n", st->eye_rays, st->glass_splits);
-    fprintf(f, "  \"initial_radius\": %.17g,\n  \"safe_radius\": %.17g,\n  \"grid_entries\": %zu,\n",
-            st->r0, st->r_safe, st->grid_entries);
-    fprintf(f, "  \"photons_emitted\": %llu,\n  \"photon_offset\": %llu,\n  \"photon_segments\": %llu,\n", st->photons_emitted,
-            (unsigned long long)opt->photon_offset, st->photon_segments);
-    fprintf(f, "  \"photon_hits\": %llu,\n  \"skip_photon_hits_no_cell\": %llu,\n", st->photon_hits, st->photon_hits_no_cell);
-    fprintf(f, "  \"hpuo_candidates\": %llu,\n  \"skip_candidates_outside_radius\": %llu,\n",
-            st->upd.candidates, st->upd.skipped_radius);
-    fprintf(f, "  \"hpuo_normal_passed\": %llu,\n  \"hpuo_accepted\": %llu,\n", st->upd.normal_passed, st->upd.accepted);
-    fprintf(f, "  \"skip_radiance_zero_weight\": %llu,\n", st->radiance_skipped);
-    fprintf(f, "  \"peak_rss_kib\": %ld,\n", st->peak_rss_kb);
-    fprintf(f, "  \"image_hash\": \"%016llx\",\n  \"state_hash\": \"%016llx\",\n",
-            (unsigned long long)st->image_hash, (unsigned long long)st->state_hash);
-    fprintf(f, "  \"update_mcand_per_s\": %.3f,\n", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
-    fprintf(f, "  \"seconds\": {\"bvh\": %.6f, \"eye\": %.6f, \"grid\": %.6f, \"trace\": %.6f, \"update\": %.6f, "
-               "\"radiance\": %.6f, \"total\": %.6f}\n}\n",
-            st->sec_bvh, st->sec_eye, st->sec_grid, st->sec_trace, st->sec_update, st->sec_radiance, st->sec_total);
+    json_t *o = json_object();
+    if (!o) return NULL;
+    json_set_str(o, "scene", scene);
+    json_set_u64(o, "width", (uint64_t)opt->width);
+    json_set_u64(o, "height", (uint64_t)opt->height);
+    json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
+    json_set_str(o, "grid", stats_grid_name(opt->grid));
+    json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
+    json_set_u64(o, "threads", (uint64_t)st->threads);
+    json_set_str(o, "datapath", stats_datapath_name(opt));
+    json_set_real(o, "alpha", render_alpha(opt));
+    json_set_bool(o, "interrupted", interrupted);
+    json_set_u64(o, "photon_offset", opt->photon_offset);
+    json_object_set_new(o, "scene_contents", json_fields(st, contents, N(contents)));
+    json_set_fields(o, st, counts, N(counts));
+    json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
+    json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
+    return o;
 }
 
 int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
                      const render_stats_t *st, int interrupted, char *err, size_t errlen)
 {
-    char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
-    stats_json_print(f, scene, opt, st, interrupted);
-    if (fclose(f) != 0 || rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    return json_file_write(path, stats_json(scene, opt, st, interrupted), err, errlen);
 }
