@@ -146,6 +146,9 @@ def utilization(out, build):
                      os.path.relpath(path)] + [sc.get(c, "-") for c in causes])
     s = ["<h2>PREU utilization and short cycles (update mode)</h2>",
          table(["PREUs", "run", "operations", "cycles", "utilization", "source"] + causes, rows)]
+    if not any(src for _, src in cfgs):
+        s.append(not_run(os.path.join(build, "cosim"), "co-simulation statistics", "make run, make sim or make sim-full"))
+        return "\n".join(s)
     s.append(svg.bars("PREU utilization, update mode", ["%d PREUs" % p for p, _ in cfgs], ["utilization"],
                       [[100 * src[1]["update"]["preu_utilization"] if src else None] for _, src in cfgs], "%"))
     s.append(svg.bars("Short cycles by cause, update mode", ["%d PREUs" % p for p, _ in cfgs], causes,
