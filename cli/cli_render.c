@@ -19,6 +19,25 @@
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) { (void)sig; interrupted = 1; }
 
+/* Write the image to path; an EXR file carries the run's description in its header (pree:scene,
+ * pree:size, pree:photons, ...: docs/compare.md, "Image files written by the engine"). */
+static int write_image(const char *path, const char *scene, const render_options_t *opt,
+                       const render_result_t *res, char *err, size_t errlen)
+{
+    char size[32], photons[32], offset[32], alpha[32], hash[32];
+    snprintf(size, sizeof size, "%dx%d", res->width, res->height);
+    snprintf(photons, sizeof photons, "%llu", (unsigned long long)res->stats.photons_emitted);
+    snprintf(offset, sizeof offset, "%llu", (unsigned long long)opt->photon_offset);
+    snprintf(alpha, sizeof alpha, "%.17g", render_alpha(opt));
+    snprintf(hash, sizeof hash, "%016llx", (unsigned long long)res->stats.image_hash);
+    const char *meta[] = {
+        "pree:scene", scene, "pree:size", size, "pree:photons", photons, "pree:photon_offset", offset,
+        "pree:precision", opt->precision == PRECISION_FP32 ? "fp32" : "double",
+        "pree:datapath", stats_datapath_name(opt), "pree:grid", stats_grid_name(opt->grid),
+        "pree:alpha", alpha, "pree:version", pree_version(), "pree:image_hash", hash, NULL};
+    return pree_image_write_meta(path, res->width, res->height, res->rgb, meta, err, errlen);
+}
+
 static void render_usage(FILE *f)
 {
     fprintf(f,
@@ -145,7 +164,7 @@ int pree_cmd_render(int argc, char **argv)
         fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
                 (unsigned long long)res.stats.photons_emitted);
     for (int k = 0; k < nout; k++) {
-        if (pree_image_write(outs[k], res.width, res.height, res.rgb, err, sizeof err)) {
+        if (write_image(outs[k], scene_path, &opt, &res, err, sizeof err)) {
             fprintf(stderr, "pree render: %s\n", err);
             status = 1;
         }

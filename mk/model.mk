@@ -44,4 +44,14 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
 	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
 
+# The version `pree --version` and the EXR metadata give: git describe, baked in at build time.
+# build/version.h is rewritten (at parse time) only when the description changes, so an unchanged
+# tree rebuilds nothing.
+PREE_VERSION := $(shell git describe --always --dirty --tags 2>/dev/null || echo unknown)
+VERSION_H    := $(BUILD)/version.h
+VERSION_LINE := \#define PREE_VERSION "$(PREE_VERSION)"
+$(shell mkdir -p $(BUILD) && { echo '$(VERSION_LINE)' | cmp -s - $(VERSION_H) || echo '$(VERSION_LINE)' >$(VERSION_H); })
+$(BUILD)/cli/cli_version.o: $(VERSION_H)
+$(BUILD)/cli/cli_version.o: CFLAGS += -I$(BUILD)
+
 -include $(wildcard $(BUILD)/model/*/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)

@@ -34,9 +34,14 @@ static const json_field_t pm_fields[] = {
     P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
 };
 
-static const char *grid_name(grid_kind_t g)
+const char *stats_grid_name(grid_kind_t g)
 {
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
+}
+
+const char *stats_datapath_name(const render_options_t *opt)
+{
+    return opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper";
 }
 
 json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
@@ -47,11 +52,10 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_u64(o, "width", (uint64_t)opt->width);
     json_set_u64(o, "height", (uint64_t)opt->height);
     json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
-    json_set_str(o, "grid", grid_name(opt->grid));
+    json_set_str(o, "grid", stats_grid_name(opt->grid));
     json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
     json_set_u64(o, "threads", (uint64_t)st->threads);
-    json_set_str(o, "datapath", opt->precision != PRECISION_FP32 ? "none"
-                                : opt->datapath == DATAPATH_STABLE ? "stable" : "paper");
+    json_set_str(o, "datapath", stats_datapath_name(opt));
     json_set_real(o, "alpha", render_alpha(opt));
     json_set_bool(o, "interrupted", interrupted);
     json_set_u64(o, "photon_offset", opt->photon_offset);
