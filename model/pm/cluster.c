@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cluster.h"
+#include "morton.h"
 
 typedef struct { uint32_t object; uint64_t morton; uint32_t index; } sort_key_t;
 
@@ -13,18 +14,6 @@ static int key_cmp(const void *a, const void *b)
     if (x->object != y->object) return x->object < y->object ? -1 : 1;
     if (x->morton != y->morton) return x->morton < y->morton ? -1 : 1;
     return x->index < y->index ? -1 : x->index > y->index;
-}
-
-/* 21 bits of v spread to every third bit. */
-static uint64_t spread3(uint64_t v)
-{
-    v &= 0x1fffff;
-    v = (v | v << 32) & 0x1f00000000ffffull;
-    v = (v | v << 16) & 0x1f0000ff0000ffull;
-    v = (v | v << 8) & 0x100f00f00f00f00full;
-    v = (v | v << 4) & 0x10c30c30c30c30c3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
 }
 
 static sort_key_t *sorted_keys(const hitpoints_t *h)
@@ -41,7 +30,7 @@ static sort_key_t *sorted_keys(const hitpoints_t *h)
         uint64_t m = 0;
         for (int a = 0; a < 3; a++) {
             double span = hi[a] - lo[a], t = span > 0 ? (p[a] - lo[a]) / span : 0;
-            m |= spread3((uint64_t)(t * 2097151.0)) << a;
+            m |= morton_spread3((uint64_t)(t * 2097151.0)) << a;
         }
         k[i] = (sort_key_t){h->hot[i].object, m, (uint32_t)i};
     }
