@@ -35,6 +35,8 @@ void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
             opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper",
             render_alpha(opt));
     fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
+    fprintf(f, "  \"time_limited\": %s,\n  \"photons_resumed\": %llu,\n", st->time_limited ? "true" : "false",
+            st->photons_resumed);
     fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
                "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,
             st->scene_mirror ? "true" : "false", st->scene_glass ? "true" : "false");
