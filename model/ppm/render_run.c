@@ -47,8 +47,9 @@ static int session_checkpoint(render_session_t *s, char *err, size_t errlen)
 
 void render_test_interrupt(const char *phase)
 {
-    const char *want = getenv("PREE_TEST_INTERRUPT");
+    const char *want = getenv("PREE_TEST_INTERRUPT"), *kill = getenv("PREE_TEST_KILL");
     if (want && !strcmp(want, phase)) raise(SIGINT);
+    if (kill && !strcmp(kill, phase)) raise(SIGKILL);
 }
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,

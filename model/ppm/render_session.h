@@ -45,7 +45,8 @@ int render_session_resume(render_session_t *s, char *err, size_t errlen);
 
 /* Fault injection for the regression (tests/checks/engine_interrupt.sh): with the environment
  * variable PREE_TEST_INTERRUPT=PHASE, raise SIGINT, through the program's handler, as PHASE
- * (bvh, eye, grid, or blockK: this run's K-th photon block) begins. */
+ * (bvh, eye, grid, or blockK: this run's K-th photon block) begins; with PREE_TEST_KILL=PHASE,
+ * raise SIGKILL there instead (a crash: what survives is the last checkpoint). */
 void render_test_interrupt(const char *phase);
 
 #endif
