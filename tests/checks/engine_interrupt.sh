@@ -9,33 +9,29 @@
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 SCENE=$ROOT/scenes/cornell3
-"$PREE" render "$SCENE" --width 160 --height 120 --photons 200000000 --quiet \
-    --out "$TMP/i.ppm" --stats "$TMP/i.json" &
-pid=$!
-# Wait until the photon pass is under way (the eye pass and grid take well under a second).
-sleep 3
-kill -INT $pid
-wait $pid; rc=$?
-expect_eq "exit status after SIGINT" $rc 130
-[ -s "$TMP/i.ppm" ] || fail "no image written after the interrupt"
-expect_eq interrupted "$(json "$TMP/i.json" interrupted)" True
-n=$(json "$TMP/i.json" photons_emitted)
-[ "$n" -gt 0 ] && [ "$n" -lt 200000000 ] && [ $((n % 32000)) -eq 0 ] \
-  || fail "photons_emitted $n is not a positive whole number of blocks below the request"
-echo "ok: stopped after $n photons"
+# signal_render SIG WAIT W H NAME: send SIG WAIT seconds into a render of 2e8 photons; status 130
+# and an image (NAME.ppm, NAME.json) of a positive whole number of blocks below the request.
+signal_render() {
+  "$PREE" render "$SCENE" --width "$3" --height "$4" --photons 200000000 --quiet \
+      --out "$TMP/$5.ppm" --stats "$TMP/$5.json" &
+  local pid=$!
+  sleep "$2"   # the photon pass is under way (the eye pass and grid take well under a second)
+  kill -"$1" $pid
+  wait $pid; local rc=$?
+  expect_eq "exit status after SIG$1" $rc 130
+  [ -s "$TMP/$5.ppm" ] || fail "no image written after SIG$1"
+  expect_eq "interrupted (SIG$1)" "$(json "$TMP/$5.json" interrupted)" True
+  n=$(json "$TMP/$5.json" photons_emitted)
+  [ "$n" -gt 0 ] && [ "$n" -lt 200000000 ] && [ $((n % 32000)) -eq 0 ] \
+    || fail "photons_emitted $n is not a positive whole number of blocks below the request"
+  echo "ok: SIG$1: stopped after $n photons"
+}
+signal_render INT 3 160 120 i
 run "$PREE" render "$SCENE" --width 160 --height 120 --photons "$n" --quiet --out "$TMP/n.ppm" --stats "$TMP/n.json"
 expect_eq "interrupted image = a render of $n photons" "$(json "$TMP/i.json" image_hash)" "$(json "$TMP/n.json" image_hash)"
 expect_eq "interrupted state = a render of $n photons" "$(json "$TMP/i.json" state_hash)" "$(json "$TMP/n.json" state_hash)"
 cmp "$TMP/i.ppm" "$TMP/n.ppm" || fail "the interrupted image differs from the render of $n photons"
-
-# SIGTERM is honoured the same way.
-"$PREE" render "$SCENE" --width 96 --height 72 --photons 200000000 --quiet --out "$TMP/t.ppm" &
-pid=$!
-sleep 2
-kill -TERM $pid
-wait $pid; rc=$?
-expect_eq "exit status after SIGTERM" $rc 130
-[ -s "$TMP/t.ppm" ] || fail "no image written after SIGTERM"
+signal_render TERM 2 96 72 t
 
 # An interrupt in each phase before a photon block is done: status 130, the phase named, nothing written.
 for phase in bvh:"BVH build" eye:"eye pass" grid:"grid build" block1:"first photon block"; do
