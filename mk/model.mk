@@ -16,7 +16,7 @@ $(OIIO_MODULE): model/image/image_io.cpp model/image/image_io.h model/image/imag
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -fPIC -shared $< -o $@ -lOpenImageIO -lOpenImageIO_Util
 LIBPREE   := $(BUILD)/libpree.a
-LDLIBS    += -lassimp -lz
+LDLIBS    += -lassimp -lz -ljansson
 
 UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)

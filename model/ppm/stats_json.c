@@ -1,8 +1,5 @@
-/* stats_json.c: render statistics in JSON. */
-#include <errno.h>
-#include <stdio.h>
-#include <string.h>
-#include <unistd.h>
+/* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
+#include "json_file.h"
 #include "stats_json.h"
 
 static const char *grid_name(grid_kind_t g)
@@ -10,68 +7,83 @@ static const char *grid_name(grid_kind_t g)
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
 }
 
-void stats_json_string(FILE *f, const char *s)
+static json_t *scene_contents(const render_stats_t *st)
 {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\') fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20) fprintf(f, "\\u%04x", *s);
-        else fputc(*s, f);
-    }
-    fputc('"', f);
+    json_t *o = json_object();
+    json_set_u64(o, "spheres", st->scene_spheres);
+    json_set_u64(o, "triangles", st->scene_triangles);
+    json_set_u64(o, "lights", st->scene_lights);
+    json_set_bool(o, "mirror", st->scene_mirror);
+    json_set_bool(o, "glass", st->scene_glass);
+    return o;
 }
 
-void stats_json_print(FILE *f, const char *scene, const render_options_t *opt,
-                      const render_stats_t *st, int interrupted)
+static json_t *phase_seconds(const render_stats_t *st)
 {
-    fprintf(f, "{\n  \"scene\": ");
-    stats_json_string(f, scene);
-    fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n", opt->width, opt->height);
-    fprintf(f, "  \"precision\": \"%s\",\n  \"grid\": \"%s\",\n  \"skips\": %s,\n  \"threads\": %d,\n",
-            opt->precision == PRECISION_FP32 ? "fp32" : "double", grid_name(opt->grid),
-            (!opt->no_skip && opt->grid == GRID_CELLS) ? "true" : "false", st->threads);
-    fprintf(f, "  \"hit_points_saturated\": %llu,\n", st->hit_points_saturated);
-    fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.17g,\n",
-            opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper",
-            render_alpha(opt));
-    fprintf(f, "  \"interrupted\": %s,\n", interrupted ? "true" : "false");
-    fprintf(f, "  \"time_limited\": %s,\n  \"photons_resumed\": %llu,\n", st->time_limited ? "true" : "false",
-            st->photons_resumed);
-    fprintf(f, "  \"scene_contents\": {\"spheres\": %llu, \"triangles\": %llu, \"lights\": %llu, "
-               "\"mirror\": %s, \"glass\": %s},\n", st->scene_spheres, st->scene_triangles, st->scene_lights,
-            st->scene_mirror ? "true" : "false", st->scene_glass ? "true" : "false");
-    fprintf(f, "  \"hit_points\": %llu,\n  \"hit_points_zero_weight\": %llu,\n", st->hit_points, st->hit_points_zero_weight);
-    fprintf(f, "  \"eye_rays\": %llu,\n  \"glass_splits\": %llu,\n", st->eye_rays, st->glass_splits);
-    fprintf(f, "  \"initial_radius\": %.17g,\n  \"safe_radius\": %.17g,\n  \"grid_entries\": %zu,\n",
-            st->r0, st->r_safe, st->grid_entries);
-    fprintf(f, "  \"photons_emitted\": %llu,\n  \"photon_offset\": %llu,\n  \"photon_segments\": %llu,\n", st->photons_emitted,
-            (unsigned long long)opt->photon_offset, st->photon_segments);
-    fprintf(f, "  \"photon_hits\": %llu,\n  \"skip_photon_hits_no_cell\": %llu,\n", st->photon_hits, st->photon_hits_no_cell);
-    fprintf(f, "  \"hpuo_candidates\": %llu,\n  \"skip_candidates_outside_radius\": %llu,\n",
-            st->upd.candidates, st->upd.skipped_radius);
-    fprintf(f, "  \"hpuo_normal_passed\": %llu,\n  \"hpuo_accepted\": %llu,\n", st->upd.normal_passed, st->upd.accepted);
-    fprintf(f, "  \"skip_radiance_zero_weight\": %llu,\n", st->radiance_skipped);
-    fprintf(f, "  \"peak_rss_kib\": %ld,\n", st->peak_rss_kb);
-    fprintf(f, "  \"image_hash\": \"%016llx\",\n  \"state_hash\": \"%016llx\",\n",
-            (unsigned long long)st->image_hash, (unsigned long long)st->state_hash);
-    fprintf(f, "  \"update_mcand_per_s\": %.3f,\n", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
-    fprintf(f, "  \"seconds\": {\"bvh\": %.6f, \"eye\": %.6f, \"grid\": %.6f, \"trace\": %.6f, \"update\": %.6f, "
-               "\"radiance\": %.6f, \"total\": %.6f}\n}\n",
-            st->sec_bvh, st->sec_eye, st->sec_grid, st->sec_trace, st->sec_update, st->sec_radiance, st->sec_total);
+    json_t *o = json_object();
+    json_set_real(o, "bvh", st->sec_bvh);
+    json_set_real(o, "eye", st->sec_eye);
+    json_set_real(o, "grid", st->sec_grid);
+    json_set_real(o, "trace", st->sec_trace);
+    json_set_real(o, "update", st->sec_update);
+    json_set_real(o, "radiance", st->sec_radiance);
+    json_set_real(o, "total", st->sec_total);
+    return o;
+}
+
+static void set_hash(json_t *o, const char *key, uint64_t h)
+{
+    char s[17];
+    snprintf(s, sizeof s, "%016llx", (unsigned long long)h);
+    json_set_str(o, key, s);
+}
+
+json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
+{
+    json_t *o = json_object();
+    if (!o) return NULL;
+    json_set_str(o, "scene", scene);
+    json_set_u64(o, "width", (uint64_t)opt->width);
+    json_set_u64(o, "height", (uint64_t)opt->height);
+    json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
+    json_set_str(o, "grid", grid_name(opt->grid));
+    json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
+    json_set_u64(o, "threads", (uint64_t)st->threads);
+    json_set_u64(o, "hit_points_saturated", st->hit_points_saturated);
+    json_set_str(o, "datapath", opt->precision != PRECISION_FP32 ? "none"
+                                : opt->datapath == DATAPATH_STABLE ? "stable" : "paper");
+    json_set_real(o, "alpha", render_alpha(opt));
+    json_set_bool(o, "interrupted", interrupted);
+    json_set_bool(o, "time_limited", st->time_limited);
+    json_set_u64(o, "photons_resumed", st->photons_resumed);
+    json_object_set_new(o, "scene_contents", scene_contents(st));
+    json_set_u64(o, "hit_points", st->hit_points);
+    json_set_u64(o, "hit_points_zero_weight", st->hit_points_zero_weight);
+    json_set_u64(o, "eye_rays", st->eye_rays);
+    json_set_u64(o, "glass_splits", st->glass_splits);
+    json_set_real(o, "initial_radius", st->r0);
+    json_set_real(o, "safe_radius", st->r_safe);
+    json_set_u64(o, "grid_entries", st->grid_entries);
+    json_set_u64(o, "photons_emitted", st->photons_emitted);
+    json_set_u64(o, "photon_offset", opt->photon_offset);
+    json_set_u64(o, "photon_segments", st->photon_segments);
+    json_set_u64(o, "photon_hits", st->photon_hits);
+    json_set_u64(o, "skip_photon_hits_no_cell", st->photon_hits_no_cell);
+    json_set_u64(o, "hpuo_candidates", st->upd.candidates);
+    json_set_u64(o, "skip_candidates_outside_radius", st->upd.skipped_radius);
+    json_set_u64(o, "hpuo_normal_passed", st->upd.normal_passed);
+    json_set_u64(o, "hpuo_accepted", st->upd.accepted);
+    json_set_u64(o, "skip_radiance_zero_weight", st->radiance_skipped);
+    json_object_set_new(o, "peak_rss_kib", json_integer(st->peak_rss_kb));
+    set_hash(o, "image_hash", st->image_hash);
+    set_hash(o, "state_hash", st->state_hash);
+    json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
+    json_object_set_new(o, "seconds", phase_seconds(st));
+    return o;
 }
 
 int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
                      const render_stats_t *st, int interrupted, char *err, size_t errlen)
 {
-    char tmp[4096];
-    snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "w");
-    if (!f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
-    stats_json_print(f, scene, opt, st, interrupted);
-    if (fclose(f) != 0 || rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        unlink(tmp);
-        return -1;
-    }
-    return 0;
+    return json_file_write(path, stats_json(scene, opt, st, interrupted), err, errlen);
 }
