@@ -1,8 +1,8 @@
 /* cli_render.c: `pree render SCENE [options]`: parse and check the options, render, write
  * the images and the statistics. SIGINT or SIGTERM stops the render in any phase (the photon
  * block in progress is abandoned) and writes the image of the photon blocks done so far, or
- * nothing when no block was done; the exit status is then 130. SIGPIPE is ignored: a closed
- * stderr stops the progress, never the render. */
+ * nothing when no block was done; the exit status is then 130 (a second signal ends the process
+ * at once). SIGPIPE is ignored: a closed stderr stops the progress, never the render. */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -152,6 +152,7 @@ int pree_cmd_render(int argc, char **argv)
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
+    sa.sa_flags = SA_RESETHAND;   /* a second signal ends the process at once */
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
     signal(SIGPIPE, SIG_IGN);
