@@ -7,18 +7,17 @@
 #include <strings.h>
 #include "cli_options.h"
 
-void cli_begin(cli_args_t *a, int argc, char **argv, const char *cmd, const struct option *longopts)
+void cli_begin(cli_args_t *a, int argc, char **argv, const char *cmd, const struct option *longopts,
+               render_options_t *render, int min_size)
 {
-    memset(a, 0, sizeof *a);
-    a->argc = argc;
-    a->argv = argv;
-    a->cmd = cmd;
-    a->longopts = longopts;
+    *a = (cli_args_t){.argc = argc, .argv = argv, .cmd = cmd, .longopts = longopts, .render = render,
+                      .min_size = min_size};
     optind = 0;   /* glibc: full re-initialisation of the scan */
     opterr = 0;   /* the messages are ours */
 }
 
-int cli_next(cli_args_t *a)
+/* One getopt_long step: the option's id, 0 at the end, -1 on a scanning error (printed). */
+static int cli_scan(cli_args_t *a)
 {
     int idx = -1;
     /* GNU order: operands may come between options. ":" makes a missing value ':' rather
@@ -45,10 +44,31 @@ int cli_next(cli_args_t *a)
     return c;
 }
 
+int cli_next(cli_args_t *a)
+{
+    for (;;) {
+        int id = cli_scan(a);
+        if (id <= 0 || !a->render || id == CLI_HELP) return id;
+        int r = cli_render_option(a, id, a->render, a->min_size);
+        if (r == 1) return id;
+        if (r != 0) return -1;
+    }
+}
+
 char **cli_operands(const cli_args_t *a, int *n)
 {
     *n = a->argc - optind;
     return a->argv + optind;
+}
+
+const char *cli_scene(cli_args_t *a)
+{
+    int n;
+    char **ops = cli_operands(a, &n);
+    if (n == 1) return ops[0];
+    if (n == 0) cli_error(a, "no scene given (usage: pree %s SCENE [options])", a->cmd);
+    else cli_error(a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
+    return NULL;
 }
 
 int cli_error(cli_args_t *a, const char *fmt, ...)
@@ -135,6 +155,10 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
         if (cli_int(a, 4, 16, &v)) return 2;
         if (v != 4 && v != 8 && v != 16) return cli_error(a, "--preu: %lld is not 4, 8 or 16", v);
         opt->preu = (int)v;
+        return 0;
+    case CLI_THREADS:
+        if (cli_int(a, 1, 1024, &v)) return 2;
+        opt->threads = (int)v;
         return 0;
     case CLI_NO_SKIP: opt->no_skip = 1; return 0;
     case CLI_QUIET: opt->progress = 0; return 0;

@@ -15,7 +15,7 @@
 enum {
     CLI_HELP = 'h',
     CLI_WIDTH = 0x100, CLI_HEIGHT, CLI_PHOTONS, CLI_PREU, CLI_GRID, CLI_NO_SKIP, CLI_QUIET,
-    CLI_DATAPATH, CLI_ALPHA,
+    CLI_DATAPATH, CLI_ALPHA, CLI_THREADS,
     CLI_OWN = 0x200
 };
 
@@ -30,7 +30,8 @@ enum {
     {"no-skip", no_argument, NULL, CLI_NO_SKIP},                                      \
     {"quiet", no_argument, NULL, CLI_QUIET},                                          \
     {"datapath", required_argument, NULL, CLI_DATAPATH},                              \
-    {"alpha", required_argument, NULL, CLI_ALPHA}
+    {"alpha", required_argument, NULL, CLI_ALPHA},                                    \
+    {"threads", required_argument, NULL, CLI_THREADS}
 
 typedef struct {
     int argc;
@@ -39,15 +40,23 @@ typedef struct {
     const struct option *longopts;  /* terminated by a zero entry */
     const char *val;                /* the current option's value (NULL for a flag) */
     char name[64];                  /* the current option as "--name", for messages */
+    render_options_t *render;       /* where cli_next applies CLI_RENDER_LONGOPTS, or NULL */
+    int min_size;                   /* the smallest --width/--height there */
 } cli_args_t;
 
-/* Start scanning argv (argv[0] is the subcommand's name). */
-void cli_begin(cli_args_t *a, int argc, char **argv, const char *cmd, const struct option *longopts);
-/* The next option's id; 0 when the options are done (the operands are cli_operands()); -1 on
- * an unknown option, a missing or unexpected value (error printed, the caller returns 2). */
+/* Start scanning argv (argv[0] is the subcommand's name). With render set, cli_next applies
+ * the shared render options to it itself (cli_render_option, images at least min_size). */
+void cli_begin(cli_args_t *a, int argc, char **argv, const char *cmd, const struct option *longopts,
+               render_options_t *render, int min_size);
+/* The next option's id (one the command handles itself); 0 when the options are done (the
+ * operands are cli_operands()); -1 on an unknown option, a missing, unexpected or bad value
+ * (error printed, the caller returns 2). */
 int cli_next(cli_args_t *a);
 /* The operands left after the options, and their count. */
 char **cli_operands(const cli_args_t *a, int *n);
+/* The one operand a command that takes a scene expects: the scene's path, or NULL with the
+ * error printed (none, or more than one). */
+const char *cli_scene(cli_args_t *a);
 
 /* Print "pree CMD: message" and return 2. */
 int cli_error(cli_args_t *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
@@ -58,7 +67,8 @@ int cli_real(cli_args_t *a, double lo, int lo_open, double hi, double *out);
 /* The current option's value as one of names[0..n): its index, or -1 (error printed). */
 int cli_keyword(cli_args_t *a, const char *const *names, int n);
 /* Apply one of CLI_RENDER_LONGOPTS (not --help): --width/--height (at least min_size),
- * --photons, --preu, --grid, --no-skip, --quiet, --datapath paper|stable, --alpha A.
+ * --photons, --preu, --grid, --no-skip, --quiet, --datapath paper|stable, --alpha A,
+ * --threads T.
  * Returns 1 when id is not one of them, 0 when it was taken, 2 on an error (printed). */
 int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size);
 /* 0 when path ends in .png, .ppm or .exr; else 2 with the error printed. */

@@ -12,6 +12,7 @@
 #include "cli.h"
 #include "checkpoint.h"
 #include "cli_options.h"
+#include "cli_pm.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -20,6 +21,25 @@
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) { (void)sig; interrupted = 1; }
+
+/* Write the image to path; an EXR file carries the run's description in its header (pree:scene,
+ * pree:size, pree:photons, ...: docs/compare.md, "Image files written by the engine"). */
+static int write_image(const char *path, const char *scene, const render_options_t *opt,
+                       const render_result_t *res, char *err, size_t errlen)
+{
+    char size[32], photons[32], offset[32], alpha[32], hash[32];
+    snprintf(size, sizeof size, "%dx%d", res->width, res->height);
+    snprintf(photons, sizeof photons, "%llu", (unsigned long long)res->stats.photons_emitted);
+    snprintf(offset, sizeof offset, "%llu", (unsigned long long)opt->photon_offset);
+    snprintf(alpha, sizeof alpha, "%.17g", render_alpha(opt));
+    snprintf(hash, sizeof hash, "%016llx", (unsigned long long)res->stats.image_hash);
+    const char *meta[] = {
+        "pree:scene", scene, "pree:size", size, "pree:photons", photons, "pree:photon_offset", offset,
+        "pree:precision", opt->precision == PRECISION_FP32 ? "fp32" : "double",
+        "pree:datapath", stats_datapath_name(opt), "pree:grid", stats_grid_name(opt->grid),
+        "pree:alpha", alpha, "pree:version", pree_version(), "pree:image_hash", hash, NULL};
+    return pree_image_write_meta(path, res->width, res->height, res->rgb, meta, err, errlen);
+}
 
 static void render_usage(FILE *f)
 {
@@ -52,15 +72,16 @@ static void render_usage(FILE *f)
         "  --time-limit S         stop after the photon block in progress once S seconds have passed;\n"
         "                         the image holds the photons done (stats: photons_emitted), exit 0\n"
         "  --quiet                no progress on stderr\n");
+    cli_pm_usage(f);
 }
 
-enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_THREADS, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
+enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
        OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
+    CLI_PM_LONGOPTS,
     {"photon-offset", required_argument, NULL, OPT_PHOTON_OFFSET},
-    {"threads", required_argument, NULL, OPT_THREADS},
     {"precision", required_argument, NULL, OPT_PRECISION},
     {"scan", required_argument, NULL, OPT_SCAN},
     {"out", required_argument, NULL, OPT_OUT},
@@ -76,25 +97,22 @@ int pree_cmd_render(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    const char *scene_path = NULL, *stats_path = NULL;
+    const char *scene_path, *stats_path = NULL;
     const char *outs[MAX_OUTPUTS];
     int nout = 0;
     char err[1024];
     cli_args_t a;
-    cli_begin(&a, argc, argv, "render", render_longopts);
+    cli_begin(&a, argc, argv, "render", render_longopts, &opt, 1);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         int k;
         if (id < 0) return 2;
-        int r = cli_render_option(&a, id, &opt, 1);
-        if (r != 1) { if (r) return r; continue; }
         switch (id) {
         case CLI_HELP: render_usage(stdout); return 0;
         case OPT_PHOTON_OFFSET:
             if (cli_int(&a, 0, 10000000000LL, &v)) return 2;
             opt.photon_offset = (uint64_t)v;
             break;
-        case OPT_THREADS: if (cli_int(&a, 1, 1024, &v)) return 2; opt.threads = (int)v; break;
         case OPT_PRECISION: {
             static const char *const names[] = {"double", "fp32"};
             if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
@@ -120,13 +138,10 @@ int pree_cmd_render(int argc, char **argv)
             opt.checkpoint_every = (uint64_t)v;
             break;
         case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt.time_limit)) return 2; break;
+        default: if (cli_pm_option(&a, id, &opt)) return 2;
         }
     }
-    int nops;
-    char **ops = cli_operands(&a, &nops);
-    if (nops > 1) return cli_error(&a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
-    if (nops == 1) scene_path = ops[0];
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree render SCENE [options])");
+    if (!(scene_path = cli_scene(&a)) || cli_pm_check(&a, &opt)) return 2;
     if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
@@ -181,7 +196,7 @@ int pree_cmd_render(int argc, char **argv)
         fprintf(stderr, "pree render: time limit of %g s reached after %llu photons; writing what was made\n",
                 opt.time_limit, (unsigned long long)res.stats.photons_emitted);
     for (int k = 0; k < nout; k++) {
-        if (pree_image_write(outs[k], res.width, res.height, res.rgb, err, sizeof err)) {
+        if (write_image(outs[k], scene_path, &opt, &res, err, sizeof err)) {
             fprintf(stderr, "pree render: %s\n", err);
             status = 1;
         }

@@ -45,7 +45,7 @@ static void cosim_usage(FILE *f)
     fprintf(f,
         "usage: pree cosim SCENE [options]\n"
         "  --width W --height H --photons N --grid G --no-skip --threads T   as for 'pree render'\n"
-        "                         (--threads: the double reference render only)\n"
+        "                         (--threads: the eye pass and the double reference render)\n"
         "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
@@ -124,12 +124,11 @@ static void to_float(const double *rgb, size_t n, float *out)
     for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
 }
 
-enum { OPT_THREADS = CLI_OWN, OPT_GAP, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
+enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
        OPT_TRACE, OPT_OUT, OPT_STATS };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
-    {"threads", required_argument, NULL, OPT_THREADS},
     {"gap", required_argument, NULL, OPT_GAP},
     {"no-reference", no_argument, NULL, OPT_NO_REFERENCE},
     {"no-reorder", no_argument, NULL, OPT_NO_REORDER},
@@ -145,20 +144,17 @@ int pree_cmd_cosim(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
-    const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
+    const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
+    int reference = 1, reorder = 1, schedule = 1, window = 128;
     double gap = 0;
     char err[1024];
     cli_args_t a;
-    cli_begin(&a, argc, argv, "cosim", cosim_longopts);
+    cli_begin(&a, argc, argv, "cosim", cosim_longopts, &opt, 11);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         if (id < 0) return 2;
-        int r = cli_render_option(&a, id, &opt, 11);
-        if (r != 1) { if (r) return r; continue; }
         switch (id) {
         case CLI_HELP: cosim_usage(stdout); return 0;
-        case OPT_THREADS: if (cli_int(&a, 1, 1024, &v)) return 2; threads = (int)v; break;
         case OPT_GAP:
             if (cli_real(&a, 0, 0, 1, &gap)) return 2;
             if (gap == 1) return cli_error(&a, "--gap: '%s' is not in [0, 1)", a.val);
@@ -172,11 +168,7 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_STATS: stats_path = a.val; break;
         }
     }
-    int nops;
-    char **ops = cli_operands(&a, &nops);
-    if (nops > 1) return cli_error(&a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
-    if (nops == 1) scene_path = ops[0];
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
+    if (!(scene_path = cli_scene(&a))) return 2;
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -279,7 +271,7 @@ int pree_cmd_cosim(int argc, char **argv)
     int have_m = 0;
     if (reference) {
         render_options_t ropt = {.width = opt.width, .height = opt.height, .photons = opt.photons,
-                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = threads,
+                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = opt.threads,
                                  .no_skip = opt.no_skip, .preu = opt.preu};
         if (render_run(&scene, &ropt, &ref, err, sizeof err)) { fprintf(stderr, "pree cosim: reference: %s\n", err); goto out; }
         pree_image_t ia = {0}, ib = {0};

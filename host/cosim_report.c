@@ -1,5 +1,6 @@
 /* cosim_report.c: the co-simulation's figures and their JSON file (see cosim_report.h). */
 #include "cosim_report.h"
+#include <stddef.h>
 #include "json_file.h"
 
 static const char *const causes[5] = {"hazard_in_flight", "same_key_in_lanes", "bank_conflict_b",
@@ -15,7 +16,9 @@ void cosim_report_figures(cosim_report_t *r)
     r->ops_rad = ops_all - r->ops_upd;
     r->util_upd = r->cyc_upd ? (double)r->ops_upd / ((double)r->preu * (double)r->cyc_upd) : 0;
     r->util_rad = r->cyc_rad ? (double)r->ops_rad / ((double)r->preu * (double)r->cyc_rad) : 0;
+    r->ops_per_cycle = r->cyc_upd ? (double)r->ops_upd / (double)r->cyc_upd : 0;
     r->sim_ops_per_cpu_s = r->cpu_update_rtl > 0 ? (double)r->ops_upd / r->cpu_update_rtl : 0;
+    r->sim_cycles_per_cpu_s = r->cpu_update_rtl > 0 ? (double)r->cyc_upd / r->cpu_update_rtl : 0;
     r->pass = r->hp_diff == 0 && r->img_diff == 0 && r->ops_upd == r->ops_sent && r->ops_rad == r->hit_points;
 }
 
@@ -26,6 +29,40 @@ static json_t *by_cause(const uint64_t *cnt, const uint64_t *base)
     for (int k = 0; k < 5; k++) json_set_u64(o, causes[k], cnt[CNT_HAZ + k] - (base ? base[CNT_HAZ + k] : 0));
     return o;
 }
+
+#define R(member, kind, key) JSON_FIELD_AS(cosim_report_t, member, kind, key)
+#define N(a) (sizeof a / sizeof a[0])
+
+static const json_field_t run_fields[] = {
+    R(width, JF_INT, "width"), R(height, JF_INT, "height"), R(photons_emitted, JF_U64, "photons_emitted"),
+    R(alpha, JF_REAL, "alpha"), R(preu, JF_INT, "preu"), R(reorder, JF_BOOL, "reorder"),
+    R(gap, JF_REAL, "input_gap"), R(hit_points, JF_U64, "hit_points"),
+};
+static const json_field_t out_fields[] = {
+    R(photons_sent, JF_U64, "photon_hits_streamed"), R(photons_empty, JF_U64, "photon_hits_without_operations"),
+    R(hp_diff, JF_U64, "hp_words_differing"), R(hp_diff_points, JF_U64, "hp_points_differing"),
+    R(img_diff, JF_U64, "image_words_differing"),
+};
+static const json_field_t metric_fields[] = {
+    R(m.ssim, JF_REAL, "ssim_vs_double"), R(m.snr_db, JF_REAL, "snr_db_vs_double"),
+    R(m.psnr_db, JF_REAL, "psnr_db_vs_double"),
+};
+static const json_field_t update_fields[] = {
+    R(cyc_upd, JF_U64, "cycles"), R(ops_upd, JF_U64, "operations"), R(ops_per_cycle, JF_REAL, "ops_per_cycle"),
+    R(util_upd, JF_REAL, "preu_utilization"),
+};
+static const json_field_t radiance_fields[] = {
+    R(cyc_rad, JF_U64, "cycles"), R(ops_rad, JF_U64, "operations"), R(util_rad, JF_REAL, "preu_utilization"),
+};
+static const json_field_t second_fields[] = {
+    R(sec_engine, JF_REAL, "engine_with_rtl_wall"), R(sec_update_rtl, JF_REAL, "rtl_update_wall"),
+    R(cpu_update_rtl, JF_REAL, "rtl_update_cpu"), R(sec_rad_rtl, JF_REAL, "rtl_radiance_wall"),
+    R(cpu_process, JF_REAL, "process_cpu"),
+};
+static const json_field_t speed_fields[] = {
+    R(sim_ops_per_cpu_s, JF_REAL, "simulated_ops_per_cpu_second"),
+    R(sim_cycles_per_cpu_s, JF_REAL, "simulated_cycles_per_cpu_second"), R(pass, JF_BOOL, "pass"),
+};
 
 static json_t *schedule(const cosim_report_t *r)
 {
@@ -41,11 +78,7 @@ static json_t *schedule(const cosim_report_t *r)
 
 static json_t *update_pass(const cosim_report_t *r)
 {
-    json_t *o = json_object(), *per = json_array();
-    json_set_u64(o, "cycles", r->cyc_upd);
-    json_set_u64(o, "operations", r->ops_upd);
-    json_set_real(o, "ops_per_cycle", r->cyc_upd ? (double)r->ops_upd / (double)r->cyc_upd : 0);
-    json_set_real(o, "preu_utilization", r->util_upd);
+    json_t *o = json_fields(r, update_fields, N(update_fields)), *per = json_array();
     for (int l = 0; l < r->preu; l++) json_array_append_new(per, json_integer((json_int_t)r->cnt_upd[CNT_OPS0 + l]));
     json_object_set_new(o, "ops_per_preu", per);
     json_object_set_new(o, "short_cycles_by_cause", by_cause(r->cnt_upd, NULL));
@@ -54,22 +87,8 @@ static json_t *update_pass(const cosim_report_t *r)
 
 static json_t *radiance_pass(const cosim_report_t *r)
 {
-    json_t *o = json_object();
-    json_set_u64(o, "cycles", r->cyc_rad);
-    json_set_u64(o, "operations", r->ops_rad);
-    json_set_real(o, "preu_utilization", r->util_rad);
+    json_t *o = json_fields(r, radiance_fields, N(radiance_fields));
     json_object_set_new(o, "short_cycles_by_cause", by_cause(r->cnt_all, r->cnt_upd));
-    return o;
-}
-
-static json_t *seconds(const cosim_report_t *r)
-{
-    json_t *o = json_object();
-    json_set_real(o, "engine_with_rtl_wall", r->sec_engine);
-    json_set_real(o, "rtl_update_wall", r->sec_update_rtl);
-    json_set_real(o, "rtl_update_cpu", r->cpu_update_rtl);
-    json_set_real(o, "rtl_radiance_wall", r->sec_rad_rtl);
-    json_set_real(o, "process_cpu", r->cpu_process);
     return o;
 }
 
@@ -77,32 +96,14 @@ int cosim_report_write(const char *path, const cosim_report_t *r, char *err, siz
 {
     json_t *o = json_object();
     json_set_str(o, "scene", r->scene);
-    json_set_u64(o, "width", (uint64_t)r->width);
-    json_set_u64(o, "height", (uint64_t)r->height);
-    json_set_u64(o, "photons_emitted", r->photons_emitted);
     json_set_str(o, "datapath", r->datapath ? "stable" : "paper");
-    json_set_real(o, "alpha", r->alpha);
-    json_set_u64(o, "preu", (uint64_t)r->preu);
-    json_set_bool(o, "reorder", r->reorder);
-    json_set_real(o, "input_gap", r->gap);
-    json_set_u64(o, "hit_points", r->hit_points);
+    json_set_fields(o, r, run_fields, N(run_fields));
     json_object_set_new(o, "schedule", schedule(r));
-    json_set_u64(o, "photon_hits_streamed", r->photons_sent);
-    json_set_u64(o, "photon_hits_without_operations", r->photons_empty);
-    json_set_u64(o, "hp_words_differing", r->hp_diff);
-    json_set_u64(o, "hp_points_differing", r->hp_diff_points);
-    json_set_u64(o, "image_words_differing", r->img_diff);
-    if (r->have_metrics) {
-        json_set_real(o, "ssim_vs_double", r->m.ssim);
-        json_set_real(o, "snr_db_vs_double", r->m.snr_db);
-        json_set_real(o, "psnr_db_vs_double", r->m.psnr_db);
-    }
+    json_set_fields(o, r, out_fields, N(out_fields));
+    if (r->have_metrics) json_set_fields(o, r, metric_fields, N(metric_fields));
     json_object_set_new(o, "update", update_pass(r));
     json_object_set_new(o, "radiance", radiance_pass(r));
-    json_object_set_new(o, "seconds", seconds(r));
-    json_set_real(o, "simulated_ops_per_cpu_second", r->sim_ops_per_cpu_s);
-    json_set_real(o, "simulated_cycles_per_cpu_second",
-                  r->cpu_update_rtl > 0 ? (double)r->cyc_upd / r->cpu_update_rtl : 0);
-    json_set_bool(o, "pass", r->pass);
+    json_object_set_new(o, "seconds", json_fields(r, second_fields, N(second_fields)));
+    json_set_fields(o, r, speed_fields, N(speed_fields));
     return json_file_write(path, o, err, errlen);
 }

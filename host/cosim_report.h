@@ -31,7 +31,7 @@ typedef struct {
     double sec_engine, sec_update_rtl, cpu_update_rtl, sec_rad_rtl, cpu_process;
     /* Derived by cosim_report_figures. */
     uint64_t ops_upd, ops_rad, cyc_upd, cyc_rad;
-    double util_upd, util_rad, sim_ops_per_cpu_s;
+    double ops_per_cycle, util_upd, util_rad, sim_ops_per_cpu_s, sim_cycles_per_cpu_s;
     int pass;                       /* 0 differing words, and every operation counted */
 } cosim_report_t;
 

@@ -99,6 +99,9 @@ struct Rtl : cosim_rtl {
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
     std::unique_ptr<V> top;
     std::unique_ptr<VerilatedFstC> tfp;
+    // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
+    // cycle, so a waveform viewer shows real times; cycle n's rising edge is at (8n + 4) ns.
+    static constexpr uint64_t HALF_PERIOD_PS = 4000;
     uint64_t time = 0;
     cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
 
@@ -187,11 +190,11 @@ struct Rtl : cosim_rtl {
         top->clk_i = 0;
         top->eval();
         if (tfp) tfp->dump(time);
-        time++;
+        time += HALF_PERIOD_PS;
         top->clk_i = 1;
         top->eval();
         if (tfp) tfp->dump(time);
-        time++;
+        time += HALF_PERIOD_PS;
     }
     int hp_bank_w() override { return HPB; }
     void set_reset(int on) override

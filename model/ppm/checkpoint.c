@@ -10,12 +10,12 @@
 #include <string.h>
 #include <unistd.h>
 #include "checkpoint.h"
-#include "render_check.h"
+#include "fnv1a.h"
 
 static const char MAGIC[8] = {'P', 'R', 'E', 'E', 'C', 'K', 'P', '1'};
-#define FNV_BASIS 0xcbf29ce484222325ull
-#define HASH(f, x) ((f) = render_fnv1a((f), &(x), sizeof(x)))
-#define HASH_N(f, p, n) ((f) = render_fnv1a((f), (p), (n) * sizeof *(p)))
+#define FNV_BASIS FNV1A_BASIS
+#define HASH(f, x) ((f) = fnv1a((f), &(x), sizeof(x)))
+#define HASH_N(f, p, n) ((f) = fnv1a((f), (p), (n) * sizeof *(p)))
 
 static uint64_t scene_hash(uint64_t f, const scene_t *sc)
 {
@@ -49,7 +49,7 @@ uint64_t checkpoint_fingerprint(const scene_t *scene, const render_options_t *op
     /* The build: format, state layout, compiler. */
     static const char build[] = "pree checkpoint 1; compiler " __VERSION__;
     const size_t sizes[3] = {sizeof(preu_hp_t), sizeof(preu_shp_t), sizeof(hp_hot_t)};
-    uint64_t f = render_fnv1a(FNV_BASIS, build, sizeof build);
+    uint64_t f = fnv1a(FNV_BASIS, build, sizeof build);
     HASH(f, sizes);
     /* The options that change the bits (not --photons: a resume may extend a render). */
     const double alpha = render_alpha(opt);
@@ -113,7 +113,7 @@ typedef struct { FILE *f; uint64_t hash; int ok; } stream_t;
 
 static void put(stream_t *s, const void *p, size_t n)
 {
-    s->hash = render_fnv1a(s->hash, p, n);
+    s->hash = fnv1a(s->hash, p, n);
     if (s->ok && fwrite(p, 1, n, s->f) != n) s->ok = 0;
 }
 
@@ -121,7 +121,7 @@ static void get(stream_t *s, void *p, size_t n)
 {
     if (!s->ok) return;
     if (fread(p, 1, n, s->f) != n) { s->ok = 0; return; }
-    s->hash = render_fnv1a(s->hash, p, n);
+    s->hash = fnv1a(s->hash, p, n);
 }
 
 static void temp_name(char *tmp, size_t len, const char *path)

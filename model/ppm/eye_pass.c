@@ -25,7 +25,7 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     switch (m->kind) {
     case MAT_DIFFUSE:
         /* Store the measurement point; the eye path ends here. */
-        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel)) c->failed = 1;
+        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel, (uint32_t)h.object)) c->failed = 1;
         return;
     case MAT_MIRROR:
         eye_trace(c, h.x, optics_reflect(d, h.n), depth, v3_mul(m->colour, throughput), pixel);

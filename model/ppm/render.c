@@ -13,13 +13,13 @@
 #include <unistd.h>
 #include "hp_order.h"
 #include "radiance.h"
-#include "render_check.h"
 #include "checkpoint.h"
+#include "render_check.h"
 #include "render_session.h"
 
 #define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
-static long peak_rss_kb(void)
+long render_peak_rss_kb(void)
 {
     struct rusage ru;
     return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
@@ -168,12 +168,8 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     }
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
     s->T = opt->record_ops ? 1 : omp_get_max_threads();
+    render_stats_scene(st, scene);
     st->threads = s->T;
-    st->scene_spheres = (unsigned long long)scene->num_spheres;
-    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
-    st->scene_lights = (unsigned long long)scene->num_lights;
-    st->scene_mirror = scene->has_mirror;
-    st->scene_glass = scene->has_glass;
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
     s->bb = calloc(1, sizeof *s->bb);
@@ -354,8 +350,17 @@ int render_close(render_session_t *s, char *err, size_t errlen)
 done:
     st->sec_total = omp_get_wtime() - s->t_start;
     session_free(s);
-    st->peak_rss_kb = peak_rss_kb();
+    st->peak_rss_kb = render_peak_rss_kb();
     return rc;
+}
+
+void render_stats_scene(render_stats_t *st, const scene_t *scene)
+{
+    st->scene_spheres = (unsigned long long)scene->num_spheres;
+    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
+    st->scene_lights = (unsigned long long)scene->num_lights;
+    st->scene_mirror = scene->has_mirror;
+    st->scene_glass = scene->has_glass;
 }
 
 void render_result_free(render_result_t *res)

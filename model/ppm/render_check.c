@@ -2,28 +2,22 @@
  * mode's range checks at the PREE boundary and on the final image. */
 #include <math.h>
 #include <stdio.h>
+#include "fnv1a.h"
 #include "render_check.h"
-
-uint64_t render_fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < n; i++) { h ^= p[i]; h *= 0x100000001b3ull; }
-    return h;
-}
 
 /* Hashes of the image and of the final hit-point state, for determinism checks. */
 void render_hash_results(render_result_t *res, precision_t prec)
 {
-    const uint64_t basis = 0xcbf29ce484222325ull;
+    const uint64_t basis = FNV1A_BASIS;
     const hitpoints_t *h = &res->hp;
-    res->stats.image_hash = render_fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
+    res->stats.image_hash = fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
     uint64_t s = basis;
-    if (prec == PRECISION_FP32 && h->stable) s = render_fnv1a(s, h->stable, h->n * sizeof *h->stable);
-    else if (prec == PRECISION_FP32) s = render_fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
+    if (prec == PRECISION_FP32 && h->stable) s = fnv1a(s, h->stable, h->n * sizeof *h->stable);
+    else if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
     else {
-        s = render_fnv1a(s, h->r2, h->n * sizeof *h->r2);
-        s = render_fnv1a(s, h->flux, h->n * sizeof *h->flux);
-        for (size_t i = 0; i < h->n; i++) s = render_fnv1a(s, &h->hot[i].count, sizeof h->hot[i].count);
+        s = fnv1a(s, h->r2, h->n * sizeof *h->r2);
+        s = fnv1a(s, h->flux, h->n * sizeof *h->flux);
+        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->hot[i].count, sizeof h->hot[i].count);
     }
     res->stats.state_hash = s;
 }

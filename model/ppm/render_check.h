@@ -7,9 +7,6 @@
 #include "photon_pass.h"
 #include "render.h"
 
-/* FNV-1a over n bytes, continuing from h (the basis 0xcbf29ce484222325 to start). */
-uint64_t render_fnv1a(uint64_t h, const void *data, size_t n);
-
 /* res->stats.image_hash and state_hash, for determinism checks. */
 void render_hash_results(render_result_t *res, precision_t prec);
 

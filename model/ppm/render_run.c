@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "checkpoint.h"
+#include "pm_render.h"
 #include "render_session.h"
 
 /* Continue from opt.resume: the state, the photons done and the pass counters. */
@@ -55,6 +56,14 @@ void render_test_interrupt(const char *phase)
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen)
 {
+    if (opt->estimator == ESTIMATOR_PM) {
+        if (opt->checkpoint || opt->resume || opt->time_limit > 0) {
+            memset(res, 0, sizeof *res);
+            snprintf(err, errlen, "--checkpoint, --resume and --time-limit apply to the PPM estimator only");
+            return -1;
+        }
+        return pm_render(scene, opt, res, err, errlen);
+    }
     render_session_t *s = render_open(scene, opt, res, err, errlen);
     if (!s) return -1;
     const uint64_t every = opt->checkpoint_every ? opt->checkpoint_every : RENDER_CHECKPOINT_EVERY;

@@ -2,40 +2,46 @@
 #include "json_file.h"
 #include "stats_json.h"
 
-static const char *grid_name(grid_kind_t g)
+#define S(member, kind) JSON_FIELD(render_stats_t, member, kind)
+#define SK(member, kind, key) JSON_FIELD_AS(render_stats_t, member, kind, key)
+#define N(a) (sizeof a / sizeof a[0])
+
+static const json_field_t counts[] = {
+    S(hit_points_saturated, JF_U64), S(hit_points, JF_U64), S(hit_points_zero_weight, JF_U64),
+    S(eye_rays, JF_U64), S(glass_splits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
+    SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(photons_emitted, JF_U64),
+    S(photon_segments, JF_U64), S(photon_hits, JF_U64), SK(photon_hits_no_cell, JF_U64, "skip_photon_hits_no_cell"),
+    SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
+    SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
+    SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
+    S(image_hash, JF_HEX64), S(state_hash, JF_HEX64), S(time_limited, JF_BOOL), S(photons_resumed, JF_U64),
+};
+static const json_field_t contents[] = {
+    SK(scene_spheres, JF_U64, "spheres"), SK(scene_triangles, JF_U64, "triangles"),
+    SK(scene_lights, JF_U64, "lights"), SK(scene_mirror, JF_BOOL, "mirror"), SK(scene_glass, JF_BOOL, "glass"),
+};
+static const json_field_t seconds[] = {
+    SK(sec_bvh, JF_REAL, "bvh"), SK(sec_eye, JF_REAL, "eye"), SK(sec_grid, JF_REAL, "grid"),
+    SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_radiance, JF_REAL, "radiance"),
+    SK(sec_total, JF_REAL, "total"),
+};
+
+#define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
+static const json_field_t pm_fields[] = {
+    P(photons_stored, JF_U64), P(k, JF_U64), P(max_radius, JF_REAL), P(clusters, JF_U64),
+    P(clusters_sparse, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
+    P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_cluster, JF_REAL),
+    P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
+};
+
+const char *stats_grid_name(grid_kind_t g)
 {
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
 }
 
-static json_t *scene_contents(const render_stats_t *st)
+const char *stats_datapath_name(const render_options_t *opt)
 {
-    json_t *o = json_object();
-    json_set_u64(o, "spheres", st->scene_spheres);
-    json_set_u64(o, "triangles", st->scene_triangles);
-    json_set_u64(o, "lights", st->scene_lights);
-    json_set_bool(o, "mirror", st->scene_mirror);
-    json_set_bool(o, "glass", st->scene_glass);
-    return o;
-}
-
-static json_t *phase_seconds(const render_stats_t *st)
-{
-    json_t *o = json_object();
-    json_set_real(o, "bvh", st->sec_bvh);
-    json_set_real(o, "eye", st->sec_eye);
-    json_set_real(o, "grid", st->sec_grid);
-    json_set_real(o, "trace", st->sec_trace);
-    json_set_real(o, "update", st->sec_update);
-    json_set_real(o, "radiance", st->sec_radiance);
-    json_set_real(o, "total", st->sec_total);
-    return o;
-}
-
-static void set_hash(json_t *o, const char *key, uint64_t h)
-{
-    char s[17];
-    snprintf(s, sizeof s, "%016llx", (unsigned long long)h);
-    json_set_str(o, key, s);
+    return opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper";
 }
 
 json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
@@ -46,39 +52,23 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_u64(o, "width", (uint64_t)opt->width);
     json_set_u64(o, "height", (uint64_t)opt->height);
     json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
-    json_set_str(o, "grid", grid_name(opt->grid));
+    json_set_str(o, "grid", stats_grid_name(opt->grid));
     json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
     json_set_u64(o, "threads", (uint64_t)st->threads);
-    json_set_u64(o, "hit_points_saturated", st->hit_points_saturated);
-    json_set_str(o, "datapath", opt->precision != PRECISION_FP32 ? "none"
-                                : opt->datapath == DATAPATH_STABLE ? "stable" : "paper");
+    json_set_str(o, "datapath", stats_datapath_name(opt));
     json_set_real(o, "alpha", render_alpha(opt));
     json_set_bool(o, "interrupted", interrupted);
-    json_set_bool(o, "time_limited", st->time_limited);
-    json_set_u64(o, "photons_resumed", st->photons_resumed);
-    json_object_set_new(o, "scene_contents", scene_contents(st));
-    json_set_u64(o, "hit_points", st->hit_points);
-    json_set_u64(o, "hit_points_zero_weight", st->hit_points_zero_weight);
-    json_set_u64(o, "eye_rays", st->eye_rays);
-    json_set_u64(o, "glass_splits", st->glass_splits);
-    json_set_real(o, "initial_radius", st->r0);
-    json_set_real(o, "safe_radius", st->r_safe);
-    json_set_u64(o, "grid_entries", st->grid_entries);
-    json_set_u64(o, "photons_emitted", st->photons_emitted);
     json_set_u64(o, "photon_offset", opt->photon_offset);
-    json_set_u64(o, "photon_segments", st->photon_segments);
-    json_set_u64(o, "photon_hits", st->photon_hits);
-    json_set_u64(o, "skip_photon_hits_no_cell", st->photon_hits_no_cell);
-    json_set_u64(o, "hpuo_candidates", st->upd.candidates);
-    json_set_u64(o, "skip_candidates_outside_radius", st->upd.skipped_radius);
-    json_set_u64(o, "hpuo_normal_passed", st->upd.normal_passed);
-    json_set_u64(o, "hpuo_accepted", st->upd.accepted);
-    json_set_u64(o, "skip_radiance_zero_weight", st->radiance_skipped);
-    json_object_set_new(o, "peak_rss_kib", json_integer(st->peak_rss_kb));
-    set_hash(o, "image_hash", st->image_hash);
-    set_hash(o, "state_hash", st->state_hash);
+    json_object_set_new(o, "scene_contents", json_fields(st, contents, N(contents)));
+    json_set_fields(o, st, counts, N(counts));
     json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
-    json_object_set_new(o, "seconds", phase_seconds(st));
+    json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
+    if (opt->estimator == ESTIMATOR_PM) {
+        json_t *pm = json_fields(st, pm_fields, N(pm_fields));
+        json_set_str(pm, "knn_search", opt->knn_search == KNN_NAIVE ? "naive" : "clustered");
+        json_object_set_new(o, "pm", pm);
+    }
+    json_set_str(o, "estimator", opt->estimator == ESTIMATOR_PM ? "pm" : "ppm");
     return o;
 }
 

@@ -241,6 +241,7 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
         hit->x = v3_add(o, v3_scale(d, ctx.best_t));
         hit->n = v3_norm(v3_sub(hit->x, s->centre));
         hit->material = s->material;
+        hit->object = ctx.best_sphere;
         return 1;
     }
     const mesh_t *m = &tr->src->meshes[tr->mesh_of_geom[rh.hit.geomID]];
@@ -262,5 +263,6 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
     /* Triangles have no outside: their normal faces the incoming ray. */
     hit->n = v3_dot(n, d) < 0 ? n : v3_scale(n, -1.0);
     hit->material = m->tri_material[rh.hit.primID];
+    hit->object = tr->src->num_spheres + (int)tr->mesh_of_geom[rh.hit.geomID];
     return 1;
 }

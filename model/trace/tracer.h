@@ -24,6 +24,7 @@ typedef struct {
     vec3 x;         /* hit position o + d * t */
     vec3 n;         /* unit normal: outward for spheres; facing the ray for triangles */
     int material;
+    int object;     /* sphere s: s; mesh m: num_spheres + m (the photon-map estimator groups by it) */
 } hit_t;
 
 tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err, size_t errlen);

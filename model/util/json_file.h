@@ -38,4 +38,22 @@ static inline void json_set_bool(json_t *o, const char *key, int v)
     json_object_set_new(o, key, json_boolean(v));
 }
 
+/* A struct's members as JSON values, from a table: {key, kind, offsetof(type, member)}.
+ * JF_U64 reads a 64-bit unsigned member (uint64_t, unsigned long long or size_t), JF_INT an
+ * int, JF_LONG a long, JF_REAL a double, JF_BOOL an int (0 false), JF_HEX64 a uint64_t as
+ * 16 hex digits in a string (the hashes). */
+typedef enum { JF_U64, JF_INT, JF_LONG, JF_REAL, JF_BOOL, JF_HEX64 } json_field_kind_t;
+typedef struct {
+    const char *key;
+    json_field_kind_t kind;
+    size_t off;
+} json_field_t;
+#define JSON_FIELD(type, member, kind) {#member, kind, offsetof(type, member)}
+#define JSON_FIELD_AS(type, member, kind, key) {key, kind, offsetof(type, member)}
+
+/* Set each field of base (a struct) in o, in table order. */
+void json_set_fields(json_t *o, const void *base, const json_field_t *fields, size_t n);
+/* A new object holding those fields (NULL when out of memory). */
+json_t *json_fields(const void *base, const json_field_t *fields, size_t n);
+
 #endif
