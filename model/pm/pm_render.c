@@ -21,7 +21,7 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     double t = omp_get_wtime();
     eye_stats_t es;
     phase(opt, "eye pass");
-    if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, err, errlen)) return -1;
+    if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
     st->eye_rays = es.rays;
@@ -60,7 +60,7 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
     res->rgb = calloc(npix * 3, sizeof *res->rgb);
     if (!res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); return -1; }
     double t = omp_get_wtime();
-    tracer_t *tr = tracer_create(scene, err, errlen);
+    tracer_t *tr = tracer_create(scene, opt->interrupt, err, errlen);
     if (!tr) return -1;
     st->sec_bvh = omp_get_wtime() - t;
     photon_map_t map = {0};

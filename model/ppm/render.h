@@ -3,8 +3,10 @@
  *
  * With opt->estimator = ESTIMATOR_PM it is the photon-map estimator instead (model/pm/).
  *
- * render_run() returns 0 (complete), 1 (interrupted: the image holds the whole photon
- * batches done so far) or -1 with a one-line message in err. An fp32 render whose image holds
+ * render_run() returns 0 (complete, or stopped by the time limit: stats.time_limited), 1
+ * (interrupted: the image holds the whole photon blocks done so far) or -1 with a one-line
+ * message in err (STOP_MESSAGE when interrupted before the first photon block was done: the BVH
+ * build, eye pass, grid build and photon tracing poll the interrupt flag). An fp32 render whose image holds
  * an infinity or a NaN (binary32 overflow of the light's flux, or the paper datapath's radius
  * collapsing) is an error (-1), never a silent image. */
 #ifndef PREE_RENDER_H
@@ -24,6 +26,9 @@ typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
 typedef enum { ESTIMATOR_PPM = 0, ESTIMATOR_PM = 1 } estimator_t;
 typedef enum { KNN_CLUSTERED = 0, KNN_NAIVE = 1 } knn_search_t;
 
+#define RENDER_PHOTON_BLOCK 32000u            /* photons traced and applied together */
+#define RENDER_CHECKPOINT_EVERY (32ull * RENDER_PHOTON_BLOCK)
+
 typedef struct {
     int width, height;
     uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
@@ -37,7 +42,13 @@ typedef struct {
     update_scan_t scan;      /* SCAN_BUCKET (default): update_batch.c; SCAN_PHOTON: update_part, the oracle */
     int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
-    volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
+    volatile sig_atomic_t *interrupt;   /* set to stop: the photon block in progress is abandoned */
+    double time_limit;       /* render_run: > 0: stop after the block in progress once this many
+                              * seconds have passed since render_open began */
+    const char *checkpoint;  /* render_run: write the state here (model/ppm/checkpoint.h) every
+                              * checkpoint_every photons and when the photon pass ends or stops */
+    uint64_t checkpoint_every; /* 0: RENDER_CHECKPOINT_EVERY */
+    const char *resume;      /* render_open: continue from this checkpoint */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
                               * update then runs photon-major on one thread */
     /* The photon-map estimator (--estimator pm, model/pm/): the k nearest photons of each hit
@@ -69,6 +80,8 @@ typedef struct {
     uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words;
                               * the photon-map estimator: each hit point's radiance) */
     pm_stats_t pm;           /* the photon-map estimator's figures */
+    unsigned long long photons_resumed; /* photons done in the checkpoint the render resumed from */
+    int time_limited;        /* the time limit stopped the photon pass early */
 } render_stats_t;
 
 typedef struct {
