@@ -11,6 +11,6 @@ static int cand_cmp(const void *a, const void *b)
 
 size_t knn_select(knn_cand_t *c, size_t n, size_t k)
 {
-    qsort(c, n, sizeof *c, cand_cmp);
+    if (n > 1) qsort(c, n, sizeof *c, cand_cmp);   /* c may be NULL when n is 0 (qsort's contract) */
     return n < k ? n : k;
 }
