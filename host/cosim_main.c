@@ -20,6 +20,11 @@
 #include "render.h"
 #include "stats_json.h"
 
+/* 1 in the AXI program (build/pree-cosim-axi-*: host/cosim_axi.c through rtl/pree_axi.v). */
+#ifndef COSIM_DRV_AXI
+#define COSIM_DRV_AXI 0
+#endif
+
 typedef struct {
     cosim_drv_t *drv;
     double sec_rtl, cpu_rtl;     /* wall and CPU time spent clocking the RTL in the update phase */
@@ -56,7 +61,9 @@ static void cosim_usage(FILE *f)
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128)\n"
-        "  --gap P                idle cycles on the photon input with probability P\n"
+        "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
+        "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
+        "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
         "  --quiet                no progress on stderr\n");
 }
 
@@ -129,7 +136,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0, axi = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a = {argc, argv, 1, "cosim"};
@@ -149,6 +156,7 @@ int pree_cmd_cosim(int argc, char **argv)
         } else if (!strcmp(arg, "--no-reference")) reference = 0;
         else if (!strcmp(arg, "--no-reorder")) reorder = 0;
         else if (!strcmp(arg, "--no-schedule")) schedule = 0;
+        else if (!strcmp(arg, "--axi")) axi = 1;
         else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
         else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
         else if (!strcmp(arg, "--out")) {
@@ -160,6 +168,9 @@ int pree_cmd_cosim(int argc, char **argv)
         else scene_path = arg;
     }
     if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
+    if (axi != COSIM_DRV_AXI)
+        return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
+                                 : "this program drives pree_axi: give --axi");
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -303,6 +314,7 @@ int pree_cmd_cosim(int argc, char **argv)
                 opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
         fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
                 (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
+        fprintf(f, "  \"axi\": %s,\n", axi ? "true" : "false");
         fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
                 np, reorder ? "true" : "false", gap, res.hp.n);
         cosim_sched_stats_t ss;
