@@ -22,6 +22,7 @@
 enum { R_VERSION = 0x000, R_CONFIG0 = 0x004, R_STATUS = 0x018, R_CTRL = 0x010, R_CMD = 0x014, R_IRQ_EN = 0x01c, R_IRQ_STATUS = 0x020,
        R_ERR = 0x024, R_NE = 0x030, R_ALPHA = 0x034, R_KAPPA = 0x038, R_N_HIT = 0x03c,
        R_HP_PTR = 0x040, R_HP_COUNT = 0x044, R_PX_BASE = 0x048, R_PX_COUNT = 0x04c,
+       R_PH_IN = 0x050, R_CAND_IN = 0x058,
        R_CNT0 = 0x100 };
 enum { CMD_RAD = 1, CMD_HP_READ = 2, CMD_PX_CLEAR = 3, CMD_PX_READ = 4 };
 enum { IRQ_BATCH = 1, IRQ_CMD = 2 };
@@ -39,7 +40,7 @@ struct cosim_drv {
     cosim_axi_in_t *in;
     cosim_drv_opts_t opt;
     char err[256];
-    uint64_t rng, ops, cand_sent;
+    uint64_t rng, ops, cand_sent, ph_sent;
     photon_entry_t pq[PQ_CAP];
     uint64_t pq_head, pq_tail;
     uint32_t cq[CQ_CAP];
@@ -280,6 +281,7 @@ static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, u
     for (uint32_t k = 0; k < n; k++) d->cq[d->cq_tail++ & (CQ_CAP - 1)] = hps[k];
     d->ops += n;
     d->cand_sent += n;
+    d->ph_sent++;
 }
 
 static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p)
@@ -322,8 +324,14 @@ int cosim_drv_drain(cosim_drv_t *d)
     preu_photon_t none = {0};
     send(d, &none, NULL, 0, 1);
     if (wait_irq(d, IRQ_BATCH)) return -1;
-    if (!(lite_read(d, R_STATUS) & 1)) return fail(d, "batch interrupt before STATUS.idle");
     lite_write(d, R_CTRL, 0);
+    if (!(lite_read(d, R_STATUS) & 1)) return fail(d, "batch interrupt before STATUS.idle");
+    if (lite_read(d, R_PH_IN) != (uint32_t)d->ph_sent || lite_read(d, R_CAND_IN) != (uint32_t)d->cand_sent)
+        return fail(d, "PH_IN or CAND_IN differs from the photons and candidates sent");
+    /* An unknown command is refused and flagged in ERR (bit 0, write 1 to clear). */
+    lite_write(d, R_CMD, 7);
+    if (lite_read(d, R_ERR) != 1) return fail(d, "ERR does not flag an unknown command");
+    lite_write(d, R_ERR, 1);
     return d->hung ? -1 : 0;
 }
 
