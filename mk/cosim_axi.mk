@@ -47,7 +47,7 @@ lint-axi: | $(DEPS_STAMP)
 	@bash tests/checks/axi_lint.sh
 
 synth-axi: | $(DEPS_STAMP)
-	@set -e; for p in 4 8 16; do tb/axi/synth_axi_own.sh $$p $(AXI_DIR)/synth; done
+	@set -e; for p in 4 8 16; do tb/axi/synth_axi.sh --own $$p $(AXI_DIR)/synth; done
 	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh $$p $(AXI_DIR)/synth; done
 
 fit-table:
