@@ -3,7 +3,7 @@
 #   make lint-axi      verilator --lint-only -Wall of pree_axi through rtl/pree.f, NumPreu 4, 8, 16,
 #                      both datapaths (in `make lint`)
 #   make synth-axi     Yosys synth_xilinx of pree_axi: the wrapper's own logic (pree_top a black box)
-#                      for 4, 8, 16 PREUs (about 20 CPU seconds each), the whole design for
+#                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
 #                      SYNTH_AXI_PREUS (default 4; over 7 CPU minutes): rows in $(AXI_DIR)/synth/*.md
 #   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
