@@ -30,9 +30,11 @@ static const command_t commands[] = {
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper";
+    int axi = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--")) break;
-        if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
+        if (!strcmp(argv[i], "--axi")) axi = 1;
+        else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
         else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
         else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
         else if (i + 1 < argc && !strcmp(argv[i], "--datapath")) dp = argv[++i];
@@ -45,7 +47,7 @@ static int run_cosim(int argc, char **argv)
     self[n] = '\0';
     char *slash = strrchr(self, '/');
     if (slash) *slash = '\0';
-    snprintf(path, sizeof path, "%s/pree-cosim-%c%s", self, d, preu);
+    snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s", self, axi ? "axi-" : "", d, preu);
     execv(path, argv);
     fprintf(stderr, "pree cosim: %s: %s (build it with 'make %s')\n", path, strerror(errno),
             strstr(path, "build/") ? strstr(path, "build/") : path);
