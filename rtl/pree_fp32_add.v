@@ -90,31 +90,34 @@ module pree_fp32_add #(
   wire       sign_b = b_i[31] ^ sub_i;          // effective sign of the second operand
   wire [7:0] exp_a  = a_i[30:23];
   wire [7:0] exp_b  = b_i[30:23];
-  wire       nan_a  = (exp_a == 8'hFF) && (a_i[22:0] != 23'd0);
-  wire       nan_b  = (exp_b == 8'hFF) && (b_i[22:0] != 23'd0);
-  wire       inf_a  = (exp_a == 8'hFF) && (a_i[22:0] == 23'd0);
-  wire       inf_b  = (exp_b == 8'hFF) && (b_i[22:0] == 23'd0);
+  wire       expz_a, expz_b, zero_a_unused, zero_b_unused, inf_a, inf_b, nan_a, nan_b;
 
-  // Special result: NaN rule first, then infinities.
-  reg        special_d;
-  reg [31:0] special_y_d;
-  always @* begin
-    special_d   = 1'b1;
-    special_y_d = {sign_a, 8'hFF, 23'd0};
-    if (nan_a)                          special_y_d = a_i | 32'h0040_0000;
-    else if (nan_b)                     special_y_d = b_i | 32'h0040_0000;
-    else if (inf_a && inf_b && (sign_a != sign_b)) special_y_d = 32'hFFC0_0000;
-    else if (inf_a)                     special_y_d = {sign_a, 8'hFF, 23'd0};
-    else if (inf_b)                     special_y_d = {sign_b, 8'hFF, 23'd0};
-    else                                special_d   = 1'b0;
-  end
+  pree_fp32_class u_class_a (
+    .x_i (a_i[30:0]), .exp_zero_o (expz_a), .zero_o (zero_a_unused), .inf_o (inf_a),
+    .nan_o (nan_a)
+  );
+  pree_fp32_class u_class_b (
+    .x_i (b_i[30:0]), .exp_zero_o (expz_b), .zero_o (zero_b_unused), .inf_o (inf_b),
+    .nan_o (nan_b)
+  );
+
+  // Special result (pree_fp32_special): NaN rule first, then inf - inf, then infinities.
+  wire        special_d;
+  wire [31:0] special_y_d;
+
+  pree_fp32_special u_special (
+    .a_i (a_i), .b_i (b_i), .nan_a_i (nan_a), .nan_b_i (nan_b),
+    .invalid_i (inf_a & inf_b & (sign_a != sign_b)), .inf_i (inf_a | inf_b), .zero_i (1'b0),
+    .sign_i (inf_a ? sign_a : sign_b),
+    .special_o (special_d), .y_o (special_y_d)
+  );
 
   // Order by magnitude (L the larger or equal operand, S the smaller) and the alignment
   // shift, exp_l - exp_s clamped to 31: both differences are formed beside the magnitude
   // comparison, and the comparison picks one in A2, so no subtraction follows the compare.
   wire        swap    = (b_i[30:0] > a_i[30:0]);
-  wire [7:0]  exp_a1  = (exp_a == 8'd0) ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
-  wire [7:0]  exp_b1  = (exp_b == 8'd0) ? 8'd1 : exp_b;
+  wire [7:0]  exp_a1  = expz_a ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
+  wire [7:0]  exp_b1  = expz_b ? 8'd1 : exp_b;
   wire [7:0]  diff_ab = exp_a1 - exp_b1;
   wire [7:0]  diff_ba = exp_b1 - exp_a1;
   wire [4:0]  sh_ab   = (diff_ab[7:5] != 3'd0) ? 5'd31 : diff_ab[4:0];
@@ -126,23 +129,24 @@ module pree_fp32_add #(
   wire          s1_valid;
   wire [WS-1:0] s1_special;
   wire          s1_sign_a, s1_sign_b, s1_swap;
+  wire          s1_expz_a, s1_expz_b;             // the classes: exponent field 0
   wire [4:0]    s1_sh_ab, s1_sh_ba;
   wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
 
-  pree_fp32_pipe #(.Width(WS + 3 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
+  pree_fp32_pipe #(.Width(WS + 5 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, sh_ab, sh_ba, a_i[30:0], b_i[30:0]}),
+    .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, expz_a, expz_b, sh_ab, sh_ba,
+             a_i[30:0], b_i[30:0]}),
     .valid_o (s1_valid),
-    .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_sh_ab, s1_sh_ba, s1_a, s1_b})
+    .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_expz_a, s1_expz_b, s1_sh_ab,
+             s1_sh_ba, s1_a, s1_b})
   );
 
   // ---------------------------------------------------------------- A2: order the operands
-  wire [7:0]  s1_exp_a = s1_a[30:23];
-  wire [7:0]  s1_exp_b = s1_b[30:23];
-  wire [23:0] man_a    = {s1_exp_a != 8'd0, s1_a[22:0]};
-  wire [23:0] man_b    = {s1_exp_b != 8'd0, s1_b[22:0]};
-  wire [7:0]  exp_a1_q = (s1_exp_a == 8'd0) ? 8'd1 : s1_exp_a;
-  wire [7:0]  exp_b1_q = (s1_exp_b == 8'd0) ? 8'd1 : s1_exp_b;
+  wire [23:0] man_a    = {~s1_expz_a, s1_a[22:0]};
+  wire [23:0] man_b    = {~s1_expz_b, s1_b[22:0]};
+  wire [7:0]  exp_a1_q = s1_expz_a ? 8'd1 : s1_a[30:23];
+  wire [7:0]  exp_b1_q = s1_expz_b ? 8'd1 : s1_b[30:23];
   wire        sign_l   = s1_swap ? s1_sign_b : s1_sign_a;
   wire        sign_s   = s1_swap ? s1_sign_a : s1_sign_b;
   wire [7:0]  exp_l    = s1_swap ? exp_b1_q  : exp_a1_q;
@@ -275,22 +279,12 @@ module pree_fp32_add #(
   wire [31:0] special_y;
   assign {special, special_y, sign, zero_sign} = s6_keep;
 
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (sign),
-    .exp_i    (s6_exp),
-    .man_i    (s6_man),
-    .sticky_i (s6_sticky),
-    .y_o      (rounded)
-  );
-
-  wire [31:0] y_d = special ? special_y
-                  : s6_zero ? {zero_sign, 31'd0}
-                  :           rounded;
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(7))) u_seam7 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid), .d_i (y_d),
-    .valid_o (valid_o), .q_o (y_o)
+  // An exact zero sum is special too: the signed zero.
+  pree_fp32_final #(.Regs(seam_regs(7))) u_final (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
+    .special_i (special | s6_zero), .special_y_i (special ? special_y : {zero_sign, 31'd0}),
+    .sign_i (sign), .exp_i (s6_exp), .man_i (s6_man), .sticky_i (s6_sticky),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

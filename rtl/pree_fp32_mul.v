@@ -82,10 +82,6 @@ module pree_fp32_mul #(
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
-  // The denormalising shift amount formed for both binades when the normalisation ends with a
-  // register (seam 6).
-  localparam AMT_BOTH = (seam_regs(6) != 0);
-
 `ifndef SYNTHESIS
   initial begin
     if (LATENCY < 1 || LATENCY > MAX_STAGES)
@@ -107,19 +103,16 @@ module pree_fp32_mul #(
 
   wire        sign_y = a_i[31] ^ b_i[31];
 
-  // Special result: NaN rule first, then infinities and zeros.
-  reg        special_d;
-  reg [31:0] special_y_d;
-  always @* begin
-    special_d   = 1'b1;
-    special_y_d = {sign_y, 31'd0};
-    if (nan_a)                                     special_y_d = a_i | 32'h0040_0000;
-    else if (nan_b)                                special_y_d = b_i | 32'h0040_0000;
-    else if ((inf_a && zero_b) || (zero_a && inf_b)) special_y_d = 32'hFFC0_0000;
-    else if (inf_a || inf_b)                       special_y_d = {sign_y, 8'hFF, 23'd0};
-    else if (zero_a || zero_b)                     special_y_d = {sign_y, 31'd0};
-    else                                           special_d   = 1'b0;
-  end
+  // Special result (pree_fp32_special): NaN rule first, then 0 * inf, infinities and zeros.
+  wire        special_d;
+  wire [31:0] special_y_d;
+
+  pree_fp32_special u_special (
+    .a_i (a_i), .b_i (b_i), .nan_a_i (nan_a), .nan_b_i (nan_b),
+    .invalid_i ((inf_a & zero_b) | (zero_a & inf_b)), .inf_i (inf_a | inf_b),
+    .zero_i (zero_a | zero_b), .sign_i (sign_y),
+    .special_o (special_d), .y_o (special_y_d)
+  );
 
   // Carried to the end: the special result and the sign.
   localparam WK = 1 + 32 + 1;
@@ -222,84 +215,13 @@ module pree_fp32_mul #(
     .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_prod})
   );
 
-  // ---------------------------------------------------------------- E: normalise
-  wire        top         = s5_prod[47];
-  wire [26:0] norm_man    = top ? s5_prod[47:21] : s5_prod[46:20];
-  wire        norm_sticky = top ? (s5_prod[20:0] != 21'd0) : (s5_prod[19:0] != 20'd0);
-  wire [9:0]  norm_exp    = s5_exp + {9'd0, top};
-
-  // The denormalising shift amount. With a register after this stage (AMT_BOTH) it is formed
-  // for either binade beside the normalisation and picked by it; otherwise from the
-  // normalised exponent (fewer LUTs, measured).
-  wire       norm_tiny;
-  wire [4:0] norm_sh;
-
-  generate
-    if (AMT_BOTH) begin : g_amt_both
-      wire       tiny_0, tiny_1;
-      wire [4:0] sh_0, sh_1;
-      pree_fp32_denorm_amt u_amt_0 (.exp_i (s5_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
-      pree_fp32_denorm_amt u_amt_1 (.exp_i (s5_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
-      assign norm_tiny = top ? tiny_1 : tiny_0;
-      assign norm_sh   = top ? sh_1 : sh_0;
-    end else begin : g_amt_one
-      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
-    end
-  endgenerate
-
-  wire          s6_valid;
-  wire [WK-1:0] s6_keep;
-  wire [9:0]    s6_exp;
-  wire [26:0]   s6_man;
-  wire          s6_sticky;
-  wire          s6_tiny;
-  wire [4:0]    s6_sh;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(6))) u_seam6 (
+  // ---------------------------------------------------------------- E, F, G: the back end
+  pree_fp32_mul_back #(
+    .RegsNorm (seam_regs(6)), .RegsDen (seam_regs(7)), .RegsOut (seam_regs(8))
+  ) u_back (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
-    .d_i   ({s5_keep, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
-    .valid_o (s6_valid), .q_o ({s6_keep, s6_exp, s6_man, s6_sticky, s6_tiny, s6_sh})
-  );
-
-  // ---------------------------------------------------------------- F: denormalise
-  wire [26:0] den_man;
-  wire        den_sticky;
-
-  pree_fp32_denorm #(.MaskSticky(AMT_BOTH)) u_denorm (
-    .tiny_i (s6_tiny), .sh_i (s6_sh), .man_i (s6_man), .sticky_i (s6_sticky),
-    .man_o (den_man), .sticky_o (den_sticky)
-  );
-
-  wire          s7_valid;
-  wire [WK-1:0] s7_keep;
-  wire [9:0]    s7_exp;
-  wire [26:0]   s7_man;
-  wire          s7_sticky;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(7))) u_seam7 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
-    .d_i   ({s6_keep, s6_exp, den_man, den_sticky}),
-    .valid_o (s7_valid), .q_o ({s7_keep, s7_exp, s7_man, s7_sticky})
-  );
-
-  // ---------------------------------------------------------------- G: round, final mux
-  wire        special, sign;
-  wire [31:0] special_y;
-  assign {special, special_y, sign} = s7_keep;
-
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (sign),
-    .exp_i    (s7_exp),
-    .man_i    (s7_man),
-    .sticky_i (s7_sticky),
-    .y_o      (rounded)
-  );
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(8))) u_seam8 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s7_valid),
-    .d_i   (special ? special_y : rounded),
-    .valid_o (valid_o), .q_o (y_o)
+    .keep_i (s5_keep), .exp_i (s5_exp), .prod_i (s5_prod),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule
