@@ -25,11 +25,12 @@
 //   C  add or subtract: a 28-bit unnormalised sum                                    -> seam 4
 //   D  leading-zero count of the sum, limited to exponent - 1 (so that the exponent never
 //      falls below 1: the result is then an exact subnormal): when seam 5 is registered by a
-//      sentinel bit that B places at bit 27 - exponent, else by a compare; zero test -> seam 5
+//      sentinel bit that B places at bit 27 - exponent, else by a compare; zero test: an
+//      exact zero sum, which packs as a zero, gets the sign of a zero sum            -> seam 5
 //   E  normalise: one right shift on a carry out (the lost bit becomes sticky), else the
 //      left shift                                                                    -> seam 6
-//   F  round to nearest even (pree_fp32_round, Denorm = 0), final mux with the special
-//      result and the signed zero                                                    -> seam 7
+//   F  round to nearest even and final mux with the special result (pree_fp32_final)
+//                                                                                    -> seam 7
 // Stage plan (registered seams per Stages; the last seam is always the output register):
 //   Stages 1: 7 | 2: 4 7 | 3: 3 5 7 | 4: 3 5 6 7 | 5: 2 3 5 6 7 | 6: 2 3 4 5 6 7 | 7: all
 // Stages = 2 is the paper's split (stage 1 = A1 A2 B C, stage 2 = D E F).
@@ -54,22 +55,14 @@ module pree_fp32_add #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 7;
 
-  // Registers at seam s (1 .. 7) under the stage plan above.
+  // Registers at seam s (1 .. 7) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 7 .. 1, left to right).
+  localparam [7*7-1:0] PLANS = {7'b1111111, 7'b1111110, 7'b1110110, 7'b1110100,
+                                7'b1010100, 7'b1001000, 7'b1000000};
   function integer seam_regs;
     input integer s;
-    reg [6:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 7'b1000000;
-        2:       plan = 7'b1001000;
-        3:       plan = 7'b1010100;
-        4:       plan = 7'b1110100;
-        5:       plan = 7'b1110110;
-        6:       plan = 7'b1111110;
-        default: plan = 7'b1111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // D's count limited by a sentinel bit (set in B) when D ends with a register.
@@ -77,13 +70,9 @@ module pree_fp32_add #(
   // B's sticky bit from a mask when B lies between two registers.
   localparam ALIGN_MASK = (seam_regs(2) != 0) && (seam_regs(3) != 0);
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_add: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_add"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A1: classify, compare
   wire       sign_a = a_i[31];
@@ -238,19 +227,23 @@ module pree_fp32_add #(
   wire [7:0] exp_m1 = s4_exp - 8'd1;
   wire [4:0] lshift = (!SENTINEL && ({3'd0, lz} > exp_m1)) ? exp_m1[4:0] : lz;
 
-  wire       sum_zero = (s4_sum == 28'd0);
+  // An exact zero sum normalises to a zero significand, which rounds and packs as a zero of
+  // the result's sign; so its sign (zero_sign) replaces the larger operand's here, and no zero
+  // case reaches the final mux. From here on the carried bits are the special result and the
+  // sign (WS + 1).
+  wire          sum_zero = (s4_sum == 28'd0);
+  wire [WS:0]   keep_e   = {s4_keep[WK-1:2], sum_zero ? s4_keep[0] : s4_keep[1]};
 
   wire          s5_valid;
-  wire [WK-1:0] s5_keep;
+  wire [WS:0]   s5_keep;
   wire [7:0]    s5_exp;
   wire [27:0]   s5_sum;
   wire [4:0]    s5_lshift;
-  wire          s5_zero;
 
-  pree_fp32_pipe #(.Width(WK + 8 + 28 + 5 + 1), .Regs(seam_regs(5))) u_seam5 (
+  pree_fp32_pipe #(.Width(WS + 1 + 8 + 28 + 5), .Regs(seam_regs(5))) u_seam5 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
-    .d_i   ({s4_keep, s4_exp, s4_sum, lshift, sum_zero}),
-    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_sum, s5_lshift, s5_zero})
+    .d_i   ({keep_e, s4_exp, s4_sum, lshift}),
+    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_sum, s5_lshift})
   );
 
   // ---------------------------------------------------------------- E: normalise
@@ -262,28 +255,22 @@ module pree_fp32_add #(
                                   : ({2'b00, s5_exp} - {5'd0, s5_lshift});
 
   wire          s6_valid;
-  wire [WK-1:0] s6_keep;
-  wire          s6_zero;
+  wire [WS:0]   s6_keep;
   wire [9:0]    s6_exp;
   wire [26:0]   s6_man;
   wire          s6_sticky;
 
-  pree_fp32_pipe #(.Width(WK + 1 + 10 + 27 + 1), .Regs(seam_regs(6))) u_seam6 (
+  pree_fp32_pipe #(.Width(WS + 1 + 10 + 27 + 1), .Regs(seam_regs(6))) u_seam6 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
-    .d_i   ({s5_keep, s5_zero, norm_exp, norm_man, norm_sticky}),
-    .valid_o (s6_valid), .q_o ({s6_keep, s6_zero, s6_exp, s6_man, s6_sticky})
+    .d_i   ({s5_keep, norm_exp, norm_man, norm_sticky}),
+    .valid_o (s6_valid), .q_o ({s6_keep, s6_exp, s6_man, s6_sticky})
   );
 
   // ---------------------------------------------------------------- F: round, final mux
-  wire        special, sign, zero_sign;
-  wire [31:0] special_y;
-  assign {special, special_y, sign, zero_sign} = s6_keep;
-
-  // An exact zero sum is special too: the signed zero.
   pree_fp32_final #(.Regs(seam_regs(7))) u_final (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
-    .special_i (special | s6_zero), .special_y_i (special ? special_y : {zero_sign, 31'd0}),
-    .sign_i (sign), .exp_i (s6_exp), .man_i (s6_man), .sticky_i (s6_sticky),
+    .special_i (s6_keep[WS]), .special_y_i (s6_keep[WS-1:1]), .sign_i (s6_keep[0]),
+    .exp_i (s6_exp), .man_i (s6_man), .sticky_i (s6_sticky),
     .valid_o (valid_o), .y_o (y_o)
   );
 

@@ -60,80 +60,38 @@ module pree_fp32_mul #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 8;
 
-  // Registers at seam s (1 .. 8) under the stage plan above.
+  // Registers at seam s (1 .. 8) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 8 .. 1, left to right).
+  localparam [8*8-1:0] PLANS = {8'b11111111, 8'b11110111, 8'b11110110, 8'b11010110,
+                                8'b11010010, 8'b10010010, 8'b10010000, 8'b10000000};
   function integer seam_regs;
     input integer s;
-    reg [7:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 8'b10000000;
-        2:       plan = 8'b10010000;
-        3:       plan = 8'b10010010;
-        4:       plan = 8'b11010010;
-        5:       plan = 8'b11010110;
-        6:       plan = 8'b11110110;
-        7:       plan = 8'b11110111;
-        default: plan = 8'b11111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_mul: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_mul"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
-  // ---------------------------------------------------------------- A1: classify, count
-  wire        zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
-  wire [4:0]  lz_a, lz_b;
-
-  pree_fp32_unpack_lz u_lz_a (
-    .x_i (a_i[30:0]), .lz_o (lz_a), .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
-  );
-  pree_fp32_unpack_lz u_lz_b (
-    .x_i (b_i[30:0]), .lz_o (lz_b), .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
-  );
-
-  wire        sign_y = a_i[31] ^ b_i[31];
-
-  // Special result (pree_fp32_special): NaN rule first, then 0 * inf, infinities and zeros.
-  wire        special_d;
-  wire [31:0] special_y_d;
-
-  pree_fp32_special u_special (
-    .a_i (a_i), .b_i (b_i), .nan_a_i (nan_a), .nan_b_i (nan_b),
-    .invalid_i ((inf_a & zero_b) | (zero_a & inf_b)), .inf_i (inf_a | inf_b),
-    .zero_i (zero_a | zero_b), .sign_i (sign_y),
-    .special_o (special_d), .y_o (special_y_d)
-  );
-
-  // Carried to the end: the special result and the sign.
+  // ---------------------------------------------------------------- A1, A2: unpack
+  // Classify both operands, the special result (carried to the end with the sign: WK bits),
+  // seam 1, normalise the significands (pree_fp32_unpack).
   localparam WK = 1 + 32 + 1;
 
   wire          s1_valid;
   wire [WK-1:0] s1_keep;
-  wire [30:0]   s1_a, s1_b;        // the operands' magnitudes
-  wire [4:0]    s1_lz_a, s1_lz_b;
+  wire [9:0]    exp_a, exp_b;
+  wire [23:0]   man_a, man_b;
 
-  pree_fp32_pipe #(.Width(WK + 62 + 10), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, sign_y, a_i[30:0], b_i[30:0], lz_a, lz_b}),
-    .valid_o (s1_valid), .q_o ({s1_keep, s1_a, s1_b, s1_lz_a, s1_lz_b})
+  pree_fp32_unpack #(.Div(0), .Regs(seam_regs(1))) u_unpack (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .a_i (a_i), .b_i (b_i),
+    .valid_o (s1_valid), .keep_o (s1_keep),
+    .exp_a_o (exp_a), .man_a_o (man_a), .exp_b_o (exp_b), .man_b_o (man_b)
   );
-
-  // ---------------------------------------------------------------- A2: normalise operands
-  wire [9:0]  exp_a, exp_b;
-  wire [23:0] man_a, man_b;
-
-  pree_fp32_unpack_norm u_norm_a (.x_i (s1_a), .lz_i (s1_lz_a), .exp_o (exp_a), .man_o (man_a));
-  pree_fp32_unpack_norm u_norm_b (.x_i (s1_b), .lz_i (s1_lz_b), .exp_o (exp_b), .man_o (man_b));
 
   wire [9:0]  exp_d = exp_a + exp_b - 10'd127;   // biased exponent of product bit 46
 

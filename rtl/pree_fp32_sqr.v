@@ -54,33 +54,22 @@ module pree_fp32_sqr #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 6;
 
-  // Registers at seam s (1 .. 6) under the stage plan above.
+  // Registers at seam s (1 .. 6) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 6 .. 1, left to right).
+  localparam [6*6-1:0] PLANS = {6'b111111, 6'b110111, 6'b110110, 6'b110100,
+                                6'b100100, 6'b100000};
   function integer seam_regs;
     input integer s;
-    reg [5:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 6'b100000;
-        2:       plan = 6'b100100;
-        3:       plan = 6'b110100;
-        4:       plan = 6'b110110;
-        5:       plan = 6'b110111;
-        default: plan = 6'b111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // All three products as `*` when they are registered.
   localparam SPLIT = (seam_regs(2) != 0);
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_sqr: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_sqr"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A: classify
   wire        exp_low, zero_unused, inf_a, nan_a;   // exp_low: zero or subnormal, square +0

@@ -63,29 +63,19 @@ module pree_wacc #(
   localparam [63:0] WIDE_NAN = 64'hFF40_0000_0000_0000;
   localparam [63:0] WIDE_MAX = 64'hFEFF_FFFF_FFFF_FFFF;
 
-  // Registers at seam s (1 .. 5) under the stage plan above.
+  // Registers at seam s (1 .. 5) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 5 .. 1, left to right).
+  localparam [5*5-1:0] PLANS = {5'b11111, 5'b11101, 5'b11100, 5'b10100,
+                                5'b10000};
   function integer seam_regs;
     input integer s;
-    reg [4:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 5'b10000;
-        2:       plan = 5'b10100;
-        3:       plan = 5'b11100;
-        4:       plan = 5'b11101;
-        default: plan = 5'b11111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_wacc: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_wacc"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A: classify, compare
   wire [7:0]  exp_a  = a_i[63:56];
