@@ -5,6 +5,7 @@
  * (stable). `pree cosim ...` runs the one its --preu and --datapath name, from the directory
  * this program lives in, with the same arguments. */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -23,14 +24,17 @@ static const command_t commands[] = {
 };
 
 /* The co-simulation program for the configuration the arguments ask for, next to this one.
- * The last --preu and --datapath win, as in the program's own parsing; a bad value is left
- * for that program to report. */
+ * The last --preu and --datapath (either form: --preu 8, --preu=8) win, as in the program's
+ * own parsing; a bad value is left for that program to report. */
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper";
-    for (int i = 1; i + 1 < argc; i++) {
-        if (!strcmp(argv[i], "--preu")) preu = argv[i + 1];
-        else if (!strcmp(argv[i], "--datapath")) dp = argv[i + 1];
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--")) break;
+        if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
+        else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
+        else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
+        else if (i + 1 < argc && !strcmp(argv[i], "--datapath")) dp = argv[++i];
     }
     if (strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16")) preu = "4";
     const char d = strcmp(dp, "stable") ? 'p' : 's';
@@ -52,13 +56,26 @@ static void usage(FILE *f)
     fprintf(f, "usage: pree <command> [options]\n\ncommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
-    fprintf(f, "\n'pree <command> --help' describes a command's options.\n");
+    fprintf(f, "\n'pree <command> --help' describes a command's options; 'pree --version' the build.\n");
+}
+
+/* Descriptors 0, 1 and 2 open (on /dev/null where closed), so that no output file is given
+ * one of them and then receives the messages meant for stderr. */
+static void std_fds_open(void)
+{
+    for (int fd = 0; fd < 3; fd++)
+        if (fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+            int n = open("/dev/null", fd ? O_WRONLY : O_RDONLY);
+            if (n >= 0 && n != fd) { dup2(n, fd); close(n); }
+        }
 }
 
 int main(int argc, char **argv)
 {
+    std_fds_open();
     if (argc < 2) { usage(stderr); return 2; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { usage(stdout); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("pree %s\n", pree_version()); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name))
             return commands[i].run(argc - 1, argv + 1);
