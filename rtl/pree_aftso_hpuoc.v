@@ -107,43 +107,23 @@ module pree_aftso_hpuoc #(
   wire [ACC_W-1:0]          preu_acc = acc_of_32(NUM_PREU_32);
 
   // Zero-extend or truncate between the widths in use (all truncations are modulo 2^W on
-  // purpose: ref_addr wraps, and a trimmed rem always fits in CntW bits). The temporaries are
-  // named *_unused, Verilator's default pattern for bits dropped on purpose.
-  function [ACC_W-1:0] acc_of_32;
-    input [31:0] v;
-    reg [ACC_W+31:0] ext_unused;
-    begin
-      ext_unused = {{ACC_W{1'b0}}, v};
-      acc_of_32 = ext_unused[ACC_W-1:0];
-    end
+  // purpose: ref_addr wraps, and a trimmed rem always fits in CntW bits). One definition makes
+  // the four casts: PREE_WIDTH_CAST(name, out width, in width) declares the function `name`,
+  // whose temporary is named *_unused, Verilator's default pattern for bits dropped on purpose.
+`define PREE_WIDTH_CAST(NAME, OW, IW) \
+  function [OW-1:0] NAME; \
+    input [IW-1:0] v; \
+    reg [OW+IW-1:0] ext_unused; \
+    begin \
+      ext_unused = {{OW{1'b0}}, v}; \
+      NAME = ext_unused[OW-1:0]; \
+    end \
   endfunction
-
-  function [AddrW-1:0] addr_of_acc;
-    input [ACC_W-1:0] v;
-    reg [AddrW+ACC_W-1:0] ext_unused;
-    begin
-      ext_unused = {{AddrW{1'b0}}, v};
-      addr_of_acc = ext_unused[AddrW-1:0];
-    end
-  endfunction
-
-  function [AddrW-1:0] addr_of_cnt;
-    input [CntW-1:0] v;
-    reg [AddrW+CntW-1:0] ext_unused;
-    begin
-      ext_unused = {{AddrW{1'b0}}, v};
-      addr_of_cnt = ext_unused[AddrW-1:0];
-    end
-  endfunction
-
-  function [CntW-1:0] cnt_of_acc;
-    input [ACC_W-1:0] v;
-    reg [CntW+ACC_W-1:0] ext_unused;
-    begin
-      ext_unused = {{CntW{1'b0}}, v};
-      cnt_of_acc = ext_unused[CntW-1:0];
-    end
-  endfunction
+  `PREE_WIDTH_CAST(acc_of_32,   ACC_W, 32)
+  `PREE_WIDTH_CAST(addr_of_acc, AddrW, ACC_W)
+  `PREE_WIDTH_CAST(addr_of_cnt, AddrW, CntW)
+  `PREE_WIDTH_CAST(cnt_of_acc,  CntW,  ACC_W)
+`undef PREE_WIDTH_CAST
 
   integer i;
   reg [ACC_W-1:0] sum;
