@@ -45,6 +45,8 @@ typedef struct {
     int window;        /* the scheduler's pending photons */
     double gap;        /* probability of an idle cycle on the photon input (0: none) */
     uint64_t seed;     /* for the gaps */
+    int model_only;    /* 1: the scheduler and its cycle model only, the RTL not clocked
+                          (needs schedule; the counters are the model's prediction) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

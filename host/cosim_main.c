@@ -56,6 +56,8 @@ static void cosim_usage(FILE *f)
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128)\n"
+        "  --model-only           the scheduler's cycle model only (no RTL clocked, no image):\n"
+        "                         its predicted update-pass cycles and stalls (--stats)\n"
         "  --gap P                idle cycles on the photon input with probability P\n"
         "  --quiet                no progress on stderr\n");
 }
@@ -124,12 +126,42 @@ static void to_float(const double *rgb, size_t n, float *out)
     for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
 }
 
+static const char *const cause_names[] = {"hazard_in_flight", "same_key_in_lanes", "bank_conflict_b",
+                                          "bank_conflict_a", "starved"};
+
+/* --model-only: the scheduler's cycle model's prediction of the update pass. 0, or 1 when the
+ * file cannot be written. */
+static int report_model(cosim_ctx_t *c, const render_options_t *opt, const char *path, int window, int ppc)
+{
+    cosim_sched_stats_t ss;
+    if (cosim_drv_sched_stats(c->drv, &ss)) return 1;
+    const uint64_t ops = cosim_drv_ops_sent(c->drv), cyc = ss.cnt[CNT_CYC_UPD];
+    const double util = cyc ? (double)ops / ((double)opt->preu * (double)cyc) : 0;
+    if (opt->progress)
+        fprintf(stderr, "pree cosim: cycle model, %d PREUs: %llu ops in %llu cycles (utilization %.4f%%)\n",
+                opt->preu, (unsigned long long)ops, (unsigned long long)cyc, 100 * util);
+    if (!path) return 0;
+    FILE *f = fopen(path, "w");
+    if (!f) { fprintf(stderr, "pree cosim: %s: cannot write\n", path); return 1; }
+    fprintf(f, "{\n  \"model_only\": true,\n  \"width\": %d,\n  \"height\": %d,\n  \"preu\": %d,\n  \"photons_per_cycle\": %d,\n",
+            opt->width, opt->height, opt->preu, ppc);
+    fprintf(f, "  \"schedule\": {\"window\": %d, \"photons\": %llu, \"photons_moved\": %llu,\n", window,
+            (unsigned long long)ss.photons, (unsigned long long)ss.moved);
+    fprintf(f, "    \"model_cycles\": %llu, \"model_operations\": %llu, \"model_preu_utilization\": %.6f,\n",
+            (unsigned long long)cyc, (unsigned long long)ops, util);
+    fprintf(f, "    \"model_short_cycles_by_cause\": {");
+    for (int k = 0; k < 5; k++) fprintf(f, "%s\"%s\": %llu", k ? ", " : "", cause_names[k], (unsigned long long)ss.cnt[CNT_HAZ + k]);
+    fprintf(f, "}}\n}\n");
+    if (fclose(f)) { fprintf(stderr, "pree cosim: %s: write failed\n", path); return 1; }
+    return 0;
+}
+
 int pree_cmd_cosim(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0, model_only = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a = {argc, argv, 1, "cosim"};
@@ -149,6 +181,7 @@ int pree_cmd_cosim(int argc, char **argv)
         } else if (!strcmp(arg, "--no-reference")) reference = 0;
         else if (!strcmp(arg, "--no-reorder")) reorder = 0;
         else if (!strcmp(arg, "--no-schedule")) schedule = 0;
+        else if (!strcmp(arg, "--model-only")) model_only = 1;
         else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
         else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
         else if (!strcmp(arg, "--out")) {
@@ -160,6 +193,7 @@ int pree_cmd_cosim(int argc, char **argv)
         else scene_path = arg;
     }
     if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
+    if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -174,7 +208,8 @@ int pree_cmd_cosim(int argc, char **argv)
     cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
     cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
-                              .schedule = schedule, .window = window, .gap = gap, .seed = 1};
+                              .schedule = schedule, .window = window, .gap = gap, .seed = 1,
+                              .model_only = model_only};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
@@ -205,6 +240,7 @@ int pree_cmd_cosim(int argc, char **argv)
     }
     double t0 = now(), c0 = cpu_now();
     if (cosim_drv_drain(ctx.drv)) { fprintf(stderr, "pree cosim: %s\n", cosim_drv_error(ctx.drv)); goto out; }
+    if (model_only) { status = report_model(&ctx, &opt, stats_path, window, cosim_rtl_ppc(rtl)); goto out; }
     double sec_update_rtl = ctx.sec_rtl + (now() - t0);
     double cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
     uint64_t cnt_upd[COSIM_NCNT], cnt_all[COSIM_NCNT];
@@ -289,7 +325,7 @@ int pree_cmd_cosim(int argc, char **argv)
     const double util_upd = cyc_upd ? (double)ops_upd / ((double)np * (double)cyc_upd) : 0;
     const double util_rad = cyc_rad ? (double)ops_rad / ((double)np * (double)cyc_rad) : 0;
     const double sim_ops_s = cpu_update_rtl > 0 ? (double)ops_upd / cpu_update_rtl : 0;
-    const char *causes[] = {"hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a", "starved"};
+    const char *const *causes = cause_names;
     int ok = hp_diff == 0 && img_diff == 0 && ops_upd == cosim_drv_ops_sent(ctx.drv) && ops_rad == res.hp.n;
     if (ops_upd != cosim_drv_ops_sent(ctx.drv))
         fprintf(stderr, "pree cosim: %llu update operations sent, %llu counted in the RTL\n",
@@ -303,8 +339,8 @@ int pree_cmd_cosim(int argc, char **argv)
                 opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
         fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
                 (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
-        fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
-                np, reorder ? "true" : "false", gap, res.hp.n);
+        fprintf(f, "  \"preu\": %d,\n  \"photons_per_cycle\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
+                np, cosim_rtl_ppc(rtl), reorder ? "true" : "false", gap, res.hp.n);
         cosim_sched_stats_t ss;
         if (cosim_drv_sched_stats(ctx.drv, &ss) == 0) {
             fprintf(f, "  \"schedule\": {\"window\": %d, \"photons\": %llu, \"photons_moved\": %llu,\n", window,
