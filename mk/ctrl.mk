@@ -12,8 +12,8 @@
 CTRL_DIR      := $(BUILD)/ctrl
 CTRL_PREUS    := 4 8 16
 CTRL_EARLY    := 0 1
-CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel
-CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/aftso_rule.h
+CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel/pree
+CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/pree/aftso_rule.h
 AFTSO_RTL     := rtl/pree_aftso_hpuoc.v
 ADISO_RTL     := rtl/pree_adiso_rec.v
 # Verilator: -O3 and the default output split favour simulation speed (OPT_FAST in the manual);
@@ -55,7 +55,7 @@ $(CTRL_DIR)/%.o: tb/ctrl/%.c $(CTRL_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CTRL_CFLAGS) -c $< -o $@
 
-$(CTRL_DIR)/aftso_rule.o: model/aftso_rule.c model/aftso_rule.h
+$(CTRL_DIR)/aftso_rule.o: model/pree/aftso_rule.c model/pree/aftso_rule.h
 	@mkdir -p $(@D)
 	$(CC) $(CTRL_CFLAGS) -c $< -o $@
 CTRL_AFTSO_OBJ := $(CTRL_DIR)/aftso_model.o $(CTRL_DIR)/aftso_rule.o
@@ -72,7 +72,7 @@ $(CTRL_DIR)/adiso_seq: $(CTRL_DIR)/adiso_seq.o $(CTRL_DIR)/adiso_model.o
 define CTRL_AFTSO_RULE
 $(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_AFTSO_OBJ) $(CTRL_HDR)
 	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) -GPhotonsPerCycle=$(5) \
-	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model)" \
+	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model/pree)" \
 	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
 	  $(abspath $(CTRL_AFTSO_OBJ)) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef
