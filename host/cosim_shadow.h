@@ -1,6 +1,6 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
- * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/aftso_rule.h), stage A (index-table reads in lane order, one
+ * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
  * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win (11 or 13)
  * cycles, same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the

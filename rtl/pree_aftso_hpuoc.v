@@ -9,7 +9,7 @@
 //
 // Buffer: BufDepth entries (4 in the paper, for any NumPreu) holding photon data, id, p_addr
 // and rem (hit points not yet dispatched, >= 1). Valid entries are always 0 .. count-1, in
-// arrival (photon) order. The rule is model/aftso_rule.c's (the same in C).
+// arrival (photon) order. The rule is model/pree/aftso_rule.c's (the same in C).
 //
 // Dispatch rule, once per cycle in which stall_i is low:
 //   accuHP_i   = rem_0 + ... + rem_i                      (valid entries only)

@@ -1,5 +1,5 @@
 /* aftso_model.c: cycle-level model of the AFTSO-HpUOC dispatcher, the same rule as the RTL: the
- * rule of model/aftso_rule.c (accumulate, dispatch, back-pressure, intake of PhotonsPerCycle
+ * rule of model/pree/aftso_rule.c (accumulate, dispatch, back-pressure, intake of PhotonsPerCycle
  * photons) with each photon's payload (data, id) carried to its lanes. */
 #include "aftso_model.h"
 

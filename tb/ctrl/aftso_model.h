@@ -1,5 +1,5 @@
 /* aftso_model.h: cycle-level C model of the AFTSO-HpUOC dispatcher (rtl/pree_aftso_hpuoc.v).
- * The dispatch rule itself is model/aftso_rule.h (shared with the co-simulation host); this
+ * The dispatch rule itself is model/pree/aftso_rule.h (shared with the co-simulation host); this
  * file adds the photons' payload (data words, id) and the RTL's port shapes.
  *
  * API:
