@@ -100,10 +100,10 @@ int cosim_report_write(const char *path, const cosim_report_t *r, char *err, siz
     json_set_str(o, "datapath", r->datapath ? "stable" : "paper");
     json_set_fields(o, r, run_fields, N(run_fields));
     json_object_set_new(o, "schedule", schedule(r));
-    json_set_fields(o, r, out_fields, N(out_fields));
+    if (!r->model_only) json_set_fields(o, r, out_fields, N(out_fields));   /* nothing compared */
     if (r->have_metrics) json_set_fields(o, r, metric_fields, N(metric_fields));
     json_object_set_new(o, "update", update_pass(r));
-    json_object_set_new(o, "radiance", radiance_pass(r));
+    if (!r->model_only) json_object_set_new(o, "radiance", radiance_pass(r));
     json_object_set_new(o, "seconds", json_fields(r, second_fields, N(second_fields)));
     json_set_fields(o, r, speed_fields, N(speed_fields));
     return json_file_write(path, o, err, errlen);
