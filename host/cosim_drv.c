@@ -65,11 +65,11 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->cand = malloc(MAX_CAND * sizeof *d->cand);
     if (!d->cand) { free(d); return NULL; }
     d->rtl = rtl;
-    d->in = cosim_rtl_in(rtl);
+    d->in = rtl ? cosim_rtl_in(rtl) : NULL;
     d->opt = *opt;
     d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
-    d->ready = cosim_rtl_ph_ready(rtl);
-    d->ppc = cosim_rtl_ppc(rtl);
+    d->ready = rtl ? cosim_rtl_ph_ready(rtl) : 0;
+    d->ppc = rtl ? cosim_rtl_ppc(rtl) : opt->ppc;
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
                                  .win = cosim_update_window(opt->datapath),

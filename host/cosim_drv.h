@@ -3,7 +3,10 @@
  * runs the radiance pass and reads the memories back.
  *
  * API
- *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory)
+ *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory);
+ *                                 rtl NULL with opt->model_only: only photon placement and the
+ *                                 scheduler run (cosim_drv_photon, cosim_drv_drain,
+ *                                 cosim_drv_sched_stats, cosim_drv_ops_sent)
  *   cosim_drv_free(d)
  *   cosim_drv_load_hp(d, ...)     write n hit points (words + pixel) through the host port
  *   cosim_drv_photon(d, ph, hps, n)  queue one photon hit with its candidate hit points, in
@@ -45,8 +48,9 @@ typedef struct {
     int window;        /* the scheduler's pending photons */
     double gap;        /* probability of an idle cycle on the photon input (0: none) */
     uint64_t seed;     /* for the gaps */
-    int model_only;    /* 1: the scheduler and its cycle model only, the RTL not clocked
-                          (needs schedule; the counters are the model's prediction) */
+    int model_only;    /* 1: the scheduler and its cycle model only, no RTL (rtl = NULL;
+                          needs schedule; the counters are the model's prediction) */
+    int ppc;           /* with model_only: the top's PhotonsPerCycle (else the RTL's) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

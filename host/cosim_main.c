@@ -182,14 +182,23 @@ int pree_cmd_cosim(int argc, char **argv)
     if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
     const int dp = opt.datapath == DATAPATH_STABLE;
-    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
-    if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
     /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
-    cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
-    cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
-    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
+    const uint32_t alpha = preu_f32(render_alpha(&opt));
+    int hp_bank_w = 0, ppc = 0;
+    cosim_rtl_t *rtl = NULL;
+    if (model_only) {          /* no RTL: the configuration the build would have */
+        if (cosim_rtl_config(opt.preu, &hp_bank_w, &ppc)) { scene_free(&scene); return cli_error(&a, "no pree_top configuration with %d PREUs", opt.preu); }
+    } else {
+        rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
+        if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
+        cosim_rtl_in(rtl)->alpha = alpha;
+        cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
+        hp_bank_w = cosim_rtl_hp_bank_w(rtl);
+        ppc = cosim_rtl_ppc(rtl);
+    }
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = reorder,
                               .schedule = schedule, .window = window, .gap = gap, .seed = 1,
-                              .model_only = model_only};
+                              .model_only = model_only, .ppc = ppc};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
@@ -204,7 +213,7 @@ int pree_cmd_cosim(int argc, char **argv)
      * (the candidates that pass the host's tests) go to the RTL after the model applied them. */
     render_session_t *rs = ctx.drv ? render_open(&scene, &opt, &res, err, sizeof err) : NULL;
     if (!ctx.drv) snprintf(err, sizeof err, "out of memory");
-    int rc = rs ? load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err) : -1;
+    int rc = !rs ? -1 : model_only ? 0 : load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err);
     int streamed = 0;
     while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
         if (stream_block(&ctx, render_block_ops(rs), render_hp_address(rs), &abuf, &acap)) { streamed = -1; break; }
@@ -227,7 +236,6 @@ int pree_cmd_cosim(int argc, char **argv)
     pree_metrics_t metrics = {0};
     int have_m = 0;
     double sec_rad_rtl = 0;
-    cosim_drv_counters(ctx.drv, cnt_upd);
     if (model_only) {          /* the cycle model's counters stand for the RTL's */
         cosim_sched_stats_t ss;
         cosim_drv_sched_stats(ctx.drv, &ss);
@@ -236,6 +244,7 @@ int pree_cmd_cosim(int argc, char **argv)
         reference = 0;
         goto figures;
     }
+    cosim_drv_counters(ctx.drv, cnt_upd);
 
     /* Hit-point memory against the fp32 model's final state. */
     for (size_t i = 0; i < res.hp.n; i++) {
@@ -306,10 +315,10 @@ int pree_cmd_cosim(int argc, char **argv)
     /* Figures. */
 figures:;
     cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
-                          .preu = opt.preu, .ppc = cosim_rtl_ppc(rtl), .model_only = model_only,
+                          .preu = opt.preu, .ppc = ppc, .model_only = model_only,
                           .reorder = reorder, .window = window,
                           .photons_emitted = res.stats.photons_emitted,
-                          .alpha = (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha), .gap = gap,
+                          .alpha = (double)fp32_from_bits(alpha), .gap = gap,
                           .hit_points = res.hp.n, .photons_sent = ctx.photons_sent, .photons_empty = ctx.photons_empty,
                           .hp_diff = hp_diff, .hp_diff_points = hp_diff_points, .img_diff = img_diff,
                           .ops_sent = cosim_drv_ops_sent(ctx.drv), .have_metrics = have_m, .m = metrics,

@@ -274,4 +274,14 @@ void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
+int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)
+{
+    switch (preu) {
+    case 4: *hp_bank_w = COSIM_HPB_4; *ppc = COSIM_PPC_4; return 0;
+    case 8: *hp_bank_w = COSIM_HPB_8; *ppc = COSIM_PPC_8; return 0;
+    case 16: *hp_bank_w = COSIM_HPB_16; *ppc = COSIM_PPC_16; return 0;
+    default: return -1;
+    }
+}
+
 }  // extern "C"
