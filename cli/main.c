@@ -5,6 +5,7 @@
  * (stable). `pree cosim ...` runs the one its --preu and --datapath name, from the directory
  * this program lives in, with the same arguments. */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,11 +30,12 @@ static const command_t commands[] = {
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper";
-    int model_only = 0;
+    int model_only = 0, axi = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--")) break;
         if (!strcmp(argv[i], "--model-only")) model_only = 1;
-        if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
+        if (!strcmp(argv[i], "--axi")) axi = 1;
+        else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
         else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
         else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
         else if (i + 1 < argc && !strcmp(argv[i], "--datapath")) dp = argv[++i];
@@ -46,7 +48,7 @@ static int run_cosim(int argc, char **argv)
     self[n] = '\0';
     char *slash = strrchr(self, '/');
     if (slash) *slash = '\0';
-    snprintf(path, sizeof path, "%s/pree-cosim-%c%s", self, d, preu);
+    snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s", self, axi ? "axi-" : "", d, preu);
     execv(path, argv);
     for (const char *const *o = (const char *const[]){"p4", "p8", "p16", "s4", NULL}; model_only && *o; o++) {
         char alt[PATH_MAX + 32];
@@ -63,13 +65,26 @@ static void usage(FILE *f)
     fprintf(f, "usage: pree <command> [options]\n\ncommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
-    fprintf(f, "\n'pree <command> --help' describes a command's options.\n");
+    fprintf(f, "\n'pree <command> --help' describes a command's options; 'pree --version' the build.\n");
+}
+
+/* Descriptors 0, 1 and 2 open (on /dev/null where closed), so that no output file is given
+ * one of them and then receives the messages meant for stderr. */
+static void std_fds_open(void)
+{
+    for (int fd = 0; fd < 3; fd++)
+        if (fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+            int n = open("/dev/null", fd ? O_WRONLY : O_RDONLY);
+            if (n >= 0 && n != fd) { dup2(n, fd); close(n); }
+        }
 }
 
 int main(int argc, char **argv)
 {
+    std_fds_open();
     if (argc < 2) { usage(stderr); return 2; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { usage(stdout); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("pree %s\n", pree_version()); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name))
             return commands[i].run(argc - 1, argv + 1);

@@ -20,6 +20,11 @@
 #include "radiance.h"
 #include "render.h"
 
+/* 1 in the AXI program (build/pree-cosim-axi-*: host/cosim_axi.c through rtl/pree_axi.v). */
+#ifndef COSIM_DRV_AXI
+#define COSIM_DRV_AXI 0
+#endif
+
 typedef struct {
     cosim_drv_t *drv;
     double sec_rtl, cpu_rtl;     /* wall and CPU time spent clocking the RTL in the update phase */
@@ -58,7 +63,9 @@ static void cosim_usage(FILE *f)
         "  --window W             photons the scheduler holds pending (default 128)\n"
         "  --model-only           the scheduler's cycle model alone (the RTL not clocked, no\n"
         "                         comparison): its predicted update pass in the --stats report\n"
-        "  --gap P                idle cycles on the photon input with probability P\n"
+        "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
+        "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
+        "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
         "  --quiet                no progress on stderr\n");
 }
 
@@ -127,7 +134,7 @@ static void to_float(const double *rgb, size_t n, float *out)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY };
+       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -140,6 +147,7 @@ static const struct option cosim_longopts[] = {
     {"out", required_argument, NULL, OPT_OUT},
     {"stats", required_argument, NULL, OPT_STATS},
     {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
+    {"axi", no_argument, NULL, OPT_AXI},
     {NULL, 0, NULL, 0}
 };
 
@@ -148,7 +156,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -170,10 +178,14 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
         case OPT_STATS: stats_path = a.val; break;
         case OPT_MODEL_ONLY: model_only = 1; break;
+        case OPT_AXI: axi = 1; break;
         }
     }
     if (!(scene_path = cli_scene(&a))) return 2;
     if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
+    if (axi != COSIM_DRV_AXI)
+        return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
+                                 : "this program drives pree_axi: give --axi");
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -315,7 +327,7 @@ int pree_cmd_cosim(int argc, char **argv)
     /* Figures. */
 figures:;
     cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
-                          .preu = opt.preu, .ppc = ppc, .model_only = model_only,
+                          .preu = opt.preu, .ppc = ppc, .model_only = model_only, .axi = axi,
                           .reorder = reorder, .window = window,
                           .photons_emitted = res.stats.photons_emitted,
                           .alpha = (double)fp32_from_bits(alpha), .gap = gap,

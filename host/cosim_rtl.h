@@ -16,6 +16,7 @@
  *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
  *                                  preu PREUs, whether or not that model is linked (-1: no such
  *                                  configuration); what `pree cosim --model-only` needs
+ *   cosim_rtl_set_reset(r, on)     hold rst_ni low (on: asynchronous, at once) or release it
  * Inputs hold their values until changed; none of these can fail after cosim_rtl_new. */
 #ifndef PREE_COSIM_RTL_H
 #define PREE_COSIM_RTL_H
@@ -72,6 +73,7 @@ void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
+void cosim_rtl_set_reset(cosim_rtl_t *r, int on);
 
 #ifdef __cplusplus
 }

@@ -23,7 +23,8 @@
 #include <dlfcn.h>
 #include <pthread.h>
 
-typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const void *, char *, size_t);
+typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const void *, const char *const *,
+                             char *, size_t);
 typedef int (*oiio_read_fn)(const char *, pree_image_t *, char *, size_t);
 static oiio_write_fn oiio_write;
 static oiio_read_fn oiio_read;
@@ -216,7 +217,7 @@ static int write_ppm_fd(int fd, const char *path, int w, int h, const unsigned c
 
 /* Write 8-bit (is_float = 0) or float (1) RGB pixels to path in format ext, atomically. */
 static int write_atomic(const char *path, const char *ext, int w, int h, int is_float,
-                        const void *pixels, char *err, size_t errlen)
+                        const void *pixels, const char *const *meta, char *err, size_t errlen)
 {
     char tmp[4096];
     int fd = make_temp(path, tmp, sizeof tmp, err, errlen);
@@ -226,7 +227,7 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
         rc = write_ppm_fd(fd, path, w, h, pixels, err, errlen);
     } else {
         close(fd);   /* OpenImageIO opens the file by name and truncates it */
-        rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, err, errlen);
+        rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, meta, err, errlen);
         if (rc && err && errlen) {   /* name the destination, not the temporary */
             size_t tl = strlen(tmp);
             if (!strncmp(err, tmp, tl)) {
@@ -246,6 +247,12 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
 
 int pree_image_write(const char *path, int w, int h, const double *rgb, char *err, size_t errlen)
 {
+    return pree_image_write_meta(path, w, h, rgb, NULL, err, errlen);
+}
+
+int pree_image_write_meta(const char *path, int w, int h, const double *rgb, const char *const *meta,
+                          char *err, size_t errlen)
+{
     const char *ext = extension(path);
     int is_exr = !strcasecmp(ext, "exr");
     if (!is_exr && strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
@@ -261,7 +268,7 @@ int pree_image_write(const char *path, int w, int h, const double *rgb, char *er
         unsigned char *u = pix;
         for (size_t i = 0; i < n; i++) u[i] = (unsigned char)pree_tonemap8(rgb[i]);
     }
-    int rc = write_atomic(path, ext, w, h, is_exr, pix, err, errlen);
+    int rc = write_atomic(path, ext, w, h, is_exr, pix, is_exr ? meta : NULL, err, errlen);
     free(pix);
     return rc;
 }
@@ -273,7 +280,7 @@ int pree_image_write_u8(const char *path, int w, int h, const unsigned char *rgb
     if (strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
         return set_err(err, errlen, "%s: unknown 8-bit image extension '%s' (use .png or .ppm)", path, ext);
     if (check_size(w, h, path, err, errlen)) return -1;
-    return write_atomic(path, ext, w, h, 0, rgb, err, errlen);
+    return write_atomic(path, ext, w, h, 0, rgb, NULL, err, errlen);
 }
 
 /* A PNM file being parsed: the whole file in memory and a cursor. */

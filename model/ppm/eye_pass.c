@@ -25,7 +25,7 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     switch (m->kind) {
     case MAT_DIFFUSE:
         /* Store the measurement point; the eye path ends here. */
-        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel)) c->failed = 1;
+        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel, (uint32_t)h.object)) c->failed = 1;
         return;
     case MAT_MIRROR:
         eye_trace(c, h.x, optics_reflect(d, h.n), depth, v3_mul(m->colour, throughput), pixel);
@@ -44,7 +44,7 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
 }
 
 int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t *out,
-             eye_stats_t *stats, char *err, size_t errlen)
+             eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen)
 {
     const camera_t *cam = &scene->camera;
     vec3 dir = v3_norm(cam->dir);
@@ -55,12 +55,13 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
     hitpoints_t *rows = calloc((size_t)h, sizeof *rows);
     if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
     eye_stats_t total = {0, 0};
-    int failed = 0;
-#pragma omp parallel reduction(+ : failed)
+    int failed = 0, stopped = 0;
+#pragma omp parallel reduction(+ : failed, stopped)
     {
         eye_ctx_t c = {scene, tr, NULL, {0, 0}, 0};
 #pragma omp for schedule(dynamic, 4)
         for (int y = 0; y < h; y++) {
+            if (stopped || stop_requested(stop)) { stopped = 1; continue; }
             c.out = &rows[y];
             for (int x = 0; x < w; x++) {
                 vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
@@ -74,11 +75,14 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
         }
         failed += c.failed;
     }
-    for (int y = 0; y < h && !failed; y++)
+    for (int y = 0; y < h && !failed && !stopped; y++)
         if (hitpoints_append(out, &rows[y])) failed = 1;
     for (int y = 0; y < h; y++) hitpoints_free(&rows[y]);
     free(rows);
-    if (failed) { snprintf(err, errlen, "out of memory in the eye pass"); return -1; }
+    if (failed || stopped) {
+        snprintf(err, errlen, "%s", failed ? "out of memory in the eye pass" : STOP_MESSAGE);
+        return -1;
+    }
     *stats = total;
     return 0;
 }

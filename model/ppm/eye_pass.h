@@ -3,12 +3,14 @@
  * diffuse surface, where a hit point is stored, even one of weight zero.
  *
  * The result is in the reference program's creation order (pixels row by row from the top,
- * then path order) for any thread count. Returns 0, or -1 with err filled (out of memory). */
+ * then path order) for any thread count. Returns 0, or -1 with err filled (out of memory, or
+ * STOP_MESSAGE when stop was set: rows are polled, so a stop is seen within a few rows). */
 #ifndef PREE_EYE_PASS_H
 #define PREE_EYE_PASS_H
 
 #include "hitpoints.h"
 #include "scene.h"
+#include "stop.h"
 #include "tracer.h"
 
 typedef struct {
@@ -17,6 +19,6 @@ typedef struct {
 } eye_stats_t;
 
 int eye_pass(const scene_t *scene, const tracer_t *tr, int width, int height,
-             hitpoints_t *out, eye_stats_t *stats, char *err, size_t errlen);
+             hitpoints_t *out, eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen);
 
 #endif

@@ -23,10 +23,10 @@ static int reserve(hitpoints_t *h, size_t need)
     return 0;
 }
 
-int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel)
+int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel, uint32_t object)
 {
     if (reserve(h, h->n + 1)) return -1;
-    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0, 0};
+    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0, object};
     h->r2[h->n] = 0.0;
     h->hot[h->n] = hot;
     h->weight[h->n] = weight;
