@@ -6,15 +6,17 @@
 // C++ and header-only because Verilated models are C++ classes of the bench's choosing.
 //
 //   VHarness<Vtop> h(argc, argv);   plusargs for the model; +trace=FILE opens an FST trace
-//   VHarness<Vtop> h(0, 0, path);   a trace into path (NULL: none)
+//   VHarness<Vtop> h(0, 0, path, hp);  a trace into path (NULL: none), hp time units per edge
 //   h.trace_error()                 NULL, or "FILE: why the requested trace is not written"
 //   h->port = v; h.eval();          settle new inputs without an edge (read combinational outputs)
 //   h.tick();                       one cycle; h.cycles() counts them (reset cycles included)
-//   h.reset(n);                     rst_ni low for n cycles, then high and settled
+//   h.reset(n);                     rst_ni low for n cycles, then high and settled; these
+//                                   cycles are neither dumped nor timed, so the trace starts at
+//                                   time 0 with the first cycle after reset
 // The clock rests high between ticks. Every module here uses the rising edge only (and
 // asynchronous active-low resets), so inputs changed between ticks are sampled at the next
 // rising edge, whichever edge the bench's previous clocking rested on. The trace's time advances
-// one unit per edge (the context's time, which $time in the RTL reads).
+// half_period units per edge (default 1; the context's time, which $time in the RTL reads).
 #ifndef PREE_VHARNESS_H
 #define PREE_VHARNESS_H
 
@@ -30,8 +32,8 @@
 template <class V>
 class VHarness {
  public:
-    explicit VHarness(int argc = 0, char **argv = nullptr, const char *trace = nullptr)
-        : ctx_(new VerilatedContext)
+    explicit VHarness(int argc = 0, char **argv = nullptr, const char *trace = nullptr, uint64_t half_period = 1)
+        : ctx_(new VerilatedContext), half_period_(half_period)
     {
         if (argc > 0) ctx_->commandArgs(argc, argv);
         if (!trace && argc > 0) {
@@ -74,7 +76,9 @@ class VHarness {
     void reset(int n)
     {
         top_->rst_ni = 0;
+        in_reset_ = true;
         for (int i = 0; i < n; i++) tick();
+        in_reset_ = false;
         top_->rst_ni = 1;
         top_->eval();
     }
@@ -82,7 +86,9 @@ class VHarness {
  private:
     std::unique_ptr<VerilatedContext> ctx_;
     std::unique_ptr<V> top_;
+    uint64_t half_period_;
     uint64_t cycles_ = 0;
+    bool in_reset_ = false;
     std::string trace_error_;
 #if VM_TRACE_FST
     std::unique_ptr<VerilatedFstC> tfp_;
@@ -99,12 +105,16 @@ class VHarness {
     }
     void dump()
     {
+        if (in_reset_) return;
         if (tfp_) tfp_->dump(ctx_->time());
-        ctx_->timeInc(1);
+        ctx_->timeInc(half_period_);
     }
 #else
     void open_trace(const char *path) { trace_error_ = std::string(path) + ": this model is built without --trace-fst"; }
-    void dump() { ctx_->timeInc(1); }
+    void dump()
+    {
+        if (!in_reset_) ctx_->timeInc(half_period_);
+    }
 #endif
 };
 
