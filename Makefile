@@ -20,17 +20,20 @@ ifeq ($(WERROR),1)
 WARN    += -Werror
 endif
 OPT     ?= -O2
+# The engine's folders (model/*/: docs in the README's layout table); every target includes them all.
+MODEL_DIRS := $(sort $(dir $(wildcard model/*/*.h)))
+MODEL_INC  := $(patsubst %/,-I%,$(MODEL_DIRS))
 SANFLAGS :=
 ifdef SANITIZER
 SANFLAGS := -fsanitize=$(SANITIZER) -fno-omit-frame-pointer
 OPT      := -O1
 endif
-CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
-CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
+CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) $(MODEL_INC)
+CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) $(MODEL_INC)
 LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 
-.PHONY: all deps build run test test-prereqs check bench clean help lint synth sim
+.PHONY: all deps build run test test-prereqs check bench clean help lint synth sim report
 all: build
 
 help:
@@ -38,6 +41,7 @@ help:
 	@echo "make test    the full regression (ends with 'N passed, N failed')"
 	@echo "make check   the quick regression for iteration"
 	@echo "make bench   speed, memory and run-time-against-error figures"
+	@echo "make report  one HTML page of the last run, bench, co-simulations, synthesis and test: out/report/"
 
 # Install every Debian package the project needs (quiet when all are present).
 DEPS_STAMP := $(BUILD)/.deps-ok
@@ -66,9 +70,16 @@ build: $(DEPS_STAMP) $(BUILD)/pree
 JOBS ?= $(shell nproc)
 PARALLEL := -j$(JOBS)
 
+# The clock for the time to the first image starts after the packages are in, before the build.
 run: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree
-	@scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
+	@export PREE_RUN_START=$$(date +%s.%N); \
+	  $(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree && \
+	  scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
+
+# One self-contained page from what make run, make bench, make sim(-full), make fpga-timing and
+# make test wrote (scripts/report/build.py); tests/checks/report_browser.sh opens it in Chromium.
+report:
+	@python3 scripts/report/build.py $(CURDIR) $(OUT) $(BUILD)
 
 test-prereqs: $(DEPS_STAMP) $(TEST_PREREQS)
 

@@ -74,6 +74,7 @@ struct cosim_rtl {
     virtual void counters(uint64_t *cnt) = 0;
     virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
+    virtual void set_reset(int on) = 0;
 };
 
 namespace {
@@ -81,10 +82,13 @@ namespace {
 template <class V, int NP, int HPB, int DP>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
+    // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
+    // cycle, so a waveform viewer shows real times; cycle n's rising edge is at (8n + 4) ns.
+    static constexpr uint64_t HALF_PERIOD_PS = 4000;
     VHarness<V> top;      // the model, its clock and its trace (fst: a file or NULL)
     cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
 
-    explicit Rtl(const char *fst) : top(0, nullptr, fst)
+    explicit Rtl(const char *fst) : top(0, nullptr, fst, HALF_PERIOD_PS)
     {
         std::memset(&in, 0, sizeof in);
         std::memset(&applied, 0xff, sizeof applied);
@@ -147,6 +151,11 @@ struct Rtl : cosim_rtl {
         top.tick();
     }
     int hp_bank_w() override { return HPB; }
+    void set_reset(int on) override
+    {
+        top->rst_ni = on ? 0 : 1;
+        top->eval();
+    }
     int ph_ready() override { return top->ph_ready_o; }
     int idle() override { return top->idle_o; }
     uint32_t photons_done() override { return top->photons_done_o; }
@@ -207,5 +216,6 @@ void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
+void cosim_rtl_set_reset(cosim_rtl_t *r, int on) { r->set_reset(on); }
 
 }  // extern "C"

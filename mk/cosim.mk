@@ -7,7 +7,9 @@
 #                      counts in SIM_FULL_PREUS (default 4 8; about 0.5 and 1 CPU minutes; 16 takes
 #                      about 25 on a slower machine) and, with the stable datapath, in
 #                      SIM_FULL_STABLE_PREUS (default 4); figures in $(COSIM_DIR)/full_{p,s}*.json
-#   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
+#   make wave TEST=t   an FST of one test (picoseconds, 8 ns a cycle) and a GTKWave save file that
+#                      opens on the first photon with markers on the first hazard stall and bank
+#                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
@@ -48,7 +50,7 @@ COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
 HOST_DIR     := $(BUILD)/host
-HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
+HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
 COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_d,$(m))$(call cosim_n,$(m)))
@@ -85,7 +87,7 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench.
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP -Imodel -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(2)$(1).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a
 	@mkdir -p $$(@D)
@@ -107,7 +109,7 @@ $(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
-$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE)
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 
@@ -147,7 +149,7 @@ wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 	  $(BUILD)/pree cosim scenes/cornell3 --width 32 --height 24 --photons 2000 --quiet --no-reference \
 	    --trace $(COSIM_DIR)/wave_cosim.fst; \
 	else $(COSIM_BENCH) --scenario $(TEST) --photons 40 --hp 120 --trace $(COSIM_DIR)/wave_$(TEST).fst; fi
-	@sed "s|@FST@|$(abspath $(COSIM_DIR))/wave_$(TEST).fst|" tb/cosim/pree_top.gtkw > $(COSIM_DIR)/wave_$(TEST).gtkw
+	@python3 scripts/wave-view.py $(abspath $(COSIM_DIR))/wave_$(TEST).fst tb/cosim/pree_top.gtkw $(COSIM_DIR)/wave_$(TEST).gtkw
 	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
 
 lint-top: | $(DEPS_STAMP)

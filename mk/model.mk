@@ -1,21 +1,25 @@
-# The C reference engine: libpree.a from model/*.c and model/*.cpp, the `pree` program's
+# The C reference engine: libpree.a from model/*/*.c (and the OpenImageIO module from
+# model/image/image_io.cpp), the `pree` program's
 # command line (cli/*.c), and the cmocka unit tests in tests/unit (one binary per test_*.c).
 
-MODEL_C   := $(wildcard model/*.c)
-MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o)
+MODEL_C   := $(wildcard model/*/*.c)
+# C++ only where a library demands it: nanoflann (model/pm/knn_naive.cpp); OpenImageIO's is the
+# shared module below.
+MODEL_CXX := $(filter-out model/image/image_io.cpp,$(wildcard model/*/*.cpp))
+MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o) $(MODEL_CXX:%.cpp=$(BUILD)/%.o)
 CLI_OBJ   := $(patsubst %.c,$(BUILD)/%.o,$(wildcard cli/*.c))
 
-# OpenImageIO (model/image_io.cpp) is a shared module that model/image.c loads on the first PNG
+# OpenImageIO (model/image/image_io.cpp) is a shared module that model/image/image.c loads on the first PNG
 # or EXR read/write: loading libOpenImageIO costs ~0.3 s of CPU per process, which runs that only
 # touch PPM files then skip.
 OIIO_MODULE := $(BUILD)/libpree_oiio.so
-$(BUILD)/model/image.o: CFLAGS += -DPREE_OIIO_MODULE=\"$(abspath $(OIIO_MODULE))\"
-$(BUILD)/model/image.o: mk/model.mk
-$(OIIO_MODULE): model/image_io.cpp model/image_io.h model/image.h $(DEPS_STAMP)
+$(BUILD)/model/image/image.o: CFLAGS += -DPREE_OIIO_MODULE=\"$(abspath $(OIIO_MODULE))\"
+$(BUILD)/model/image/image.o: mk/model.mk
+$(OIIO_MODULE): model/image/image_io.cpp model/image/image_io.h model/image/image.h $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -fPIC -shared $< -o $@ -lOpenImageIO -lOpenImageIO_Util
 LIBPREE   := $(BUILD)/libpree.a
-LDLIBS    += -lassimp -lz
+LDLIBS    += -lassimp -lz -ljansson
 
 UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)
@@ -40,4 +44,14 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
 	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
 
--include $(wildcard $(BUILD)/model/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)
+# The version `pree --version` and the EXR metadata give: git describe, baked in at build time.
+# build/version.h is rewritten (at parse time) only when the description changes, so an unchanged
+# tree rebuilds nothing.
+PREE_VERSION := $(shell git describe --always --dirty --tags 2>/dev/null || echo unknown)
+VERSION_H    := $(BUILD)/version.h
+VERSION_LINE := \#define PREE_VERSION "$(PREE_VERSION)"
+$(shell mkdir -p $(BUILD) && { echo '$(VERSION_LINE)' | cmp -s - $(VERSION_H) || echo '$(VERSION_LINE)' >$(VERSION_H); })
+$(BUILD)/cli/cli_version.o: $(VERSION_H)
+$(BUILD)/cli/cli_version.o: CFLAGS += -I$(BUILD)
+
+-include $(wildcard $(BUILD)/model/*/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)

@@ -35,7 +35,7 @@
 // paper / 13 stable (issue, C, the PREU's update stages, write at the end of the last);
 // radiance 3 (pixel read 9 cycles after issue, write 12 cycles after issue). Consequence: per hit point, updates happen in
 // photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
-// first), which model/adiso_order.c reproduces.
+// first), which model/pree/adiso_order.c reproduces.
 //
 // Memories (all pree_ram_sdp, one write and one read port each):
 //   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular

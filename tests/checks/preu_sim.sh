@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # preu_sim.sh: the PREU RTL (rtl/pree_preu.v) against the C model, both modes and both datapaths
-# (paper: model/preu_fp32.c; stable: model/preu_stable.c): the Verilator bench (200,000
+# (paper: model/pree/preu_fp32.c; stable: model/pree/preu_stable.c): the Verilator bench (200,000
 # operations each, scoreboard) and the Verilog bench over 4,000 vectors each under Icarus and
 # Verilator --binary (all must pass, each datapath with one cycle count in both simulators),
 # and a run that switches modes with operations in flight, which the RTL's PREE_ASSERT check

@@ -1,0 +1,437 @@
+/* grid.c: the reference hash grid, the default exact-cell grid and the brute-force list,
+ * each stored per owning part as compressed bucket lists. */
+#include <limits.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "grid.h"
+
+#define CELL_BITS 21
+#define CELL_LIMIT ((int64_t)1 << CELL_BITS)
+#define EMPTY_KEY UINT64_MAX
+
+double grid_initial_radius(const hitpoints_t *h, int width, int height)
+{
+    vec3 lo = v3(1e20, 1e20, 1e20), hi = v3(-1e20, -1e20, -1e20);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px, lo.x), fmin(p->py, lo.y), fmin(p->pz, lo.z));
+        hi = v3(fmax(p->px, hi.x), fmax(p->py, hi.y), fmax(p->pz, hi.z));
+    }
+    vec3 size = v3_sub(hi, lo);
+    return ((size.x + size.y + size.z) / 3.0) / ((width + height) / 2.0) * 2.0;
+}
+
+double grid_safe_radius(double r0, double max_abs_coord)
+{
+    /* Binary32 rounding moves each coordinate of a hit point and a photon by at most
+     * |coord| * 2^-24, so their distance by at most 2*sqrt(3)*2^-24*|coord| < 2.1e-7*|coord|;
+     * the distance arithmetic adds a few ulps (relative 1e-6). Both margins are taken
+     * five-fold. */
+    return r0 * (1.0 + 5e-6) + 1e-6 * max_abs_coord;
+}
+
+/* x86-64 cvttsd2si: truncation toward zero; out of range or NaN gives INT_MIN. */
+static inline int32_t trunc_i32(double v)
+{
+    if (!(v > -2147483649.0 && v < 2147483648.0)) return INT32_MIN;
+    return (int32_t)v;
+}
+
+static inline uint32_t abs_u32(int32_t v) { return v < 0 ? 0u - (uint32_t)v : (uint32_t)v; }
+
+/* The reference program's bucket of cell (ix, iy, iz): products wrap in 32 bits. */
+static inline size_t smallppm_bucket(uint32_t ix, uint32_t iy, uint32_t iz, size_t nb)
+{
+    uint32_t hsh = (ix * 73856093u) ^ (iy * 19349663u) ^ (iz * 83492791u);
+    return hsh % nb;
+}
+
+static inline uint64_t cell_key(int64_t ix, int64_t iy, int64_t iz)
+{
+    return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
+}
+
+/* Linear index of a cell in the dense map (GRID_CELLS with few enough cells). */
+static inline size_t dense_index(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return ((size_t)iz * (size_t)(g->cell_max[1] + 1) + (size_t)iy) * (size_t)(g->cell_max[0] + 1) + (size_t)ix;
+}
+
+/* splitmix64's finaliser: every key bit reaches every slot bit. */
+static inline size_t key_slot(uint64_t key, size_t mask)
+{
+    key ^= key >> 30;
+    key *= 0xBF58476D1CE4E5B9ull;
+    key ^= key >> 27;
+    key *= 0x94D049BB133111EBull;
+    key ^= key >> 31;
+    return (size_t)key & mask;
+}
+
+static size_t find_slot(const uint64_t *keys, size_t mask, uint64_t key)
+{
+    size_t s = key_slot(key, mask);
+    while (keys[s] != key && keys[s] != EMPTY_KEY) s = (s + 1) & mask;
+    return s;
+}
+
+static int alloc_parts(grid_t *g, int num_parts, size_t buckets, char *err, size_t errlen)
+{
+    g->num_parts = num_parts;
+    g->num_buckets = buckets;
+    g->parts = calloc((size_t)num_parts, sizeof *g->parts);
+    if (!g->parts) goto oom;
+    for (int p = 0; p < num_parts; p++) {
+        g->parts[p].start = calloc(buckets + 1, sizeof(uint32_t));
+        if (!g->parts[p].start) goto oom;
+    }
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory for the hit-point grid");
+    return -1;
+}
+
+/* Turn per-bucket counts (in start[b+1]) into offsets and allocate the entries. */
+static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t errlen)
+{
+    for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
+    part->num_entries = part->start[buckets];
+    const size_t n = part->num_entries + GRID_ENTRY_PAD;
+    double *base = calloc(n, 6 * sizeof(double) + sizeof(uint32_t));   /* the padding reads as zeros */
+    if (!base) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
+    part->px = base; part->py = base + n; part->pz = base + 2 * n;
+    part->nx = base + 3 * n; part->ny = base + 4 * n; part->nz = base + 5 * n;
+    part->hp = (uint32_t *)(base + 6 * n);
+    return 0;
+}
+
+/* Cell range of hit point i on one axis in the reference grid. */
+typedef struct { uint32_t lo[3], hi[3]; } cell_range_t;
+
+static cell_range_t smallppm_range(const grid_t *g, const hp_hot_t *p)
+{
+    cell_range_t r;
+    const double c[3] = {p->px, p->py, p->pz}, m[3] = {g->bmin.x, g->bmin.y, g->bmin.z};
+    for (int a = 0; a < 3; a++) {
+        r.lo[a] = abs_u32(trunc_i32(((c[a] - g->r0) - m[a]) * g->inv_cell));
+        r.hi[a] = abs_u32(trunc_i32(((c[a] + g->r0) - m[a]) * g->inv_cell));
+    }
+    return r;
+}
+
+static int build_smallppm(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+{
+    vec3 lo = v3(1e20, 1e20, 1e20);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px - g->r0, lo.x), fmin(p->py - g->r0, lo.y), fmin(p->pz - g->r0, lo.z));
+    }
+    g->bmin = lo;
+    g->inv_cell = 1.0 / (g->r0 * 2.0);
+    size_t nb = h->n ? h->n : 1;
+    if (alloc_parts(g, g->num_parts, nb, err, errlen)) return -1;
+    /* Count, then fill. The reference prepends while walking hit points newest first, cells
+     * z-outermost; filling each bucket from its end in that walk gives the same list order. */
+    for (int pass = 0; pass < 2; pass++) {
+        for (size_t k = h->n; k-- > 0;) {
+            grid_part_t *part = &g->parts[grid_owner(h, k, width, g->num_parts)];
+            cell_range_t r = smallppm_range(g, &h->hot[k]);
+            for (uint32_t iz = r.lo[2]; iz <= r.hi[2]; iz++)
+                for (uint32_t iy = r.lo[1]; iy <= r.hi[1]; iy++)
+                    for (uint32_t ix = r.lo[0]; ix <= r.hi[0]; ix++) {
+                        size_t b = smallppm_bucket(ix, iy, iz, nb);
+                        if (pass == 0) part->start[b + 1]++;
+                        else part->hp[--part->start[b + 1]] = (uint32_t)k;
+                    }
+        }
+        if (pass == 0) {
+            for (int p = 0; p < g->num_parts; p++) {
+                if (finish_counts(&g->parts[p], nb, err, errlen)) return -1;
+                /* Fill pointers start at each bucket's end: shift so start[b+1] = end of b. */
+            }
+        }
+    }
+    /* After filling from the ends, start[b+1] was decremented to bucket b's begin; restore. */
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+        for (size_t b = 0; b < nb; b++) part->start[b] = part->start[b + 1];
+        part->start[nb] = (uint32_t)part->num_entries;
+    }
+    return 0;
+}
+
+static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
+{
+    const double v[3] = {(x.x - g->bmin.x) * g->inv_cell, (x.y - g->bmin.y) * g->inv_cell,
+                         (x.z - g->bmin.z) * g->inv_cell};
+    for (int a = 0; a < 3; a++) {
+        if (!(v[a] >= 0.0) || v[a] >= (double)(g->cell_max[a] + 1)) return 0;
+        c[a] = (int64_t)v[a];
+    }
+    return 1;
+}
+
+/* The range of cells that hit point p's safe-radius box touches. */
+static void cell_box(const grid_t *g, const hp_hot_t *p, double rs, int64_t a[3], int64_t b[3])
+{
+    cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+    cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+}
+
+/* Whether GRID_CELLS lists hit point i: all of them, or those of non-zero weight. */
+static int listed(const hitpoints_t *h, size_t i, int include_zero)
+{
+    const vec3 w = h->weight[i];
+    return include_zero || w.x != 0 || w.y != 0 || w.z != 0;
+}
+
+/* Visit every cell of hit point p's safe-radius box. */
+typedef void (*cell_visit_t)(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz);
+
+static void each_cell(const grid_t *g, const hp_hot_t *p, cell_visit_t visit, void *ctx)
+{
+    int64_t a[3], b[3];
+    cell_box(g, p, g->r_safe, a, b);
+    for (int64_t iz = a[2]; iz <= b[2]; iz++)
+        for (int64_t iy = a[1]; iy <= b[1]; iy++)
+            for (int64_t ix = a[0]; ix <= b[0]; ix++) visit(ctx, g, ix, iy, iz);
+}
+
+typedef struct {
+    grid_part_t *part;
+    int pass;
+    uint32_t hp;
+    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t);
+} fill_ctx_t;
+
+static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    fill_ctx_t *f = ctx;
+    uint32_t s = f->bucket_of(g, ix, iy, iz);
+    if (f->pass == 0) f->part->start[s + 1]++;
+    else f->part->hp[f->part->start[s]++] = f->hp;
+}
+
+/* Count (pass 0) or fill (pass 1) part p's entries: every listed hit point it owns, in index
+ * order, in each bucket its safe-radius box touches. bucket_of maps a cell to its bucket. */
+static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, int pass,
+                       uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t))
+{
+    fill_ctx_t f = {&g->parts[p], pass, 0, bucket_of};
+    for (size_t i = 0; i < h->n; i++) {
+        if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
+        f.hp = (uint32_t)i;
+        each_cell(g, &h->hot[i], fill_cell, &f);
+    }
+}
+
+static uint32_t dense_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return g->dense[dense_index(g, ix, iy, iz)];
+}
+
+static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, cell_key(ix, iy, iz));
+}
+
+/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
+ * the grid is small enough, else in an open-addressing table of packed keys (size a power of
+ * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
+/* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
+static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    uint32_t *next = ctx, *d = &g->dense[dense_index(g, ix, iy, iz)];
+    if (*d == GRID_NO_BUCKET) *d = (*next)++;
+}
+
+typedef struct { uint64_t *keys; size_t mask, distinct; } hash_ctx_t;
+
+static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    (void)g;   /* the cell visitor's signature; the hashed numbering needs only the cell */
+    hash_ctx_t *c = ctx;
+    uint64_t key = cell_key(ix, iy, iz);
+    size_t sl = find_slot(c->keys, c->mask, key);
+    if (c->keys[sl] == EMPTY_KEY) { c->keys[sl] = key; c->distinct++; }
+}
+
+/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
+ * the grid is small enough, else in an open-addressing table of packed keys (size a power of
+ * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
+static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char *err, size_t errlen)
+{
+    const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
+    if (cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED")) {
+        g->dense = malloc(cells * sizeof *g->dense);
+        if (!g->dense) goto oom;
+        memset(g->dense, 0xFF, cells * sizeof *g->dense);
+        uint32_t next = 0;
+        for (size_t i = 0; i < h->n; i++)
+            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_dense, &next);
+        g->num_buckets = next ? next : 1;
+        return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
+    }
+    /* Count the distinct cells in a table sized for every (hit point, cell) pair, then build the
+     * real one at twice the distinct count, so that look-ups probe a compact table. */
+    size_t bound = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        if (!listed(h, i, include_zero)) continue;
+        int64_t a[3], b[3];
+        cell_box(g, &h->hot[i], g->r_safe, a, b);
+        bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
+    }
+    for (int round = 0; round < 2; round++) {
+        size_t size = 1024;
+        while (size < 2 * bound) size *= 2;
+        hash_ctx_t c = {malloc(size * sizeof(uint64_t)), size - 1, 0};
+        if (!c.keys) goto oom;
+        memset(c.keys, 0xFF, size * sizeof(uint64_t));
+        for (size_t i = 0; i < h->n; i++)
+            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+        if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
+        if (round == 0) { free(c.keys); bound = c.distinct; continue; }
+        g->num_buckets = size;
+        if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(c.keys); return -1; }
+        for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = c.keys;
+    }
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory for the hit-point grid");
+    return -1;
+}
+
+static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
+{
+    vec3 lo = v3(INFINITY, INFINITY, INFINITY), hi = v3(-INFINITY, -INFINITY, -INFINITY);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        lo = v3(fmin(p->px, lo.x), fmin(p->py, lo.y), fmin(p->pz, lo.z));
+        hi = v3(fmax(p->px, hi.x), fmax(p->py, hi.y), fmax(p->pz, hi.z));
+    }
+    double rs = g->r_safe;
+    g->bmin = v3(lo.x - rs, lo.y - rs, lo.z - rs);
+    g->inv_cell = 1.0 / (GRID_CELL_FACTOR * g->r0);
+    const double ext[3] = {hi.x - lo.x, hi.y - lo.y, hi.z - lo.z};
+    for (int a = 0; a < 3; a++) {
+        double cells = h->n ? floor((ext[a] + 2 * rs) * g->inv_cell) : 0;
+        if (cells >= (double)(CELL_LIMIT - 1)) {
+            snprintf(err, errlen, "the scene spans more than %lld cells of the photon radius on one axis",
+                     (long long)(CELL_LIMIT - 1));
+            return -1;
+        }
+        g->cell_max[a] = (int64_t)cells + 1;   /* one spare cell absorbs rounding */
+    }
+    g->zero_weight_skipped = 0;
+    for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
+    if (number_cells(g, h, include_zero, err, errlen)) return -1;
+    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
+    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t) = g->dense ? dense_bucket : hashed_bucket;
+    /* Parts are counted and filled in parallel: each walks the hit points it owns. */
+    int failed = 0;
+#pragma omp parallel for schedule(static, 1) num_threads(g->num_parts) reduction(| : failed)
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+        cells_pass(g, h, width, include_zero, p, 0, bucket_of);
+        if (finish_counts(part, g->num_buckets, err, errlen)) { failed = 1; continue; }
+        cells_pass(g, h, width, include_zero, p, 1, bucket_of);
+        /* Filling advanced start[s] to the end of bucket s: shift back. */
+        for (size_t sl = g->num_buckets; sl > 0; sl--) part->start[sl] = part->start[sl - 1];
+        part->start[0] = 0;
+    }
+    return failed ? -1 : 0;
+}
+
+static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)
+{
+    if (alloc_parts(g, g->num_parts, 1, err, errlen)) return -1;
+    for (size_t i = 0; i < h->n; i++) g->parts[grid_owner(h, i, width, g->num_parts)].start[1]++;
+    for (int p = 0; p < g->num_parts; p++) {
+        if (finish_counts(&g->parts[p], 1, err, errlen)) return -1;
+        g->parts[p].num_entries = 0;
+    }
+    for (size_t i = 0; i < h->n; i++) {
+        grid_part_t *part = &g->parts[grid_owner(h, i, width, g->num_parts)];
+        part->hp[part->num_entries++] = (uint32_t)i;
+    }
+    return 0;
+}
+
+/* Fill every entry's copy of its hit point's geometry. */
+static void fill_entries(grid_t *g, const hitpoints_t *h)
+{
+    for (int p = 0; p < g->num_parts; p++) {
+        grid_part_t *part = &g->parts[p];
+#pragma omp parallel for schedule(static)
+        for (size_t k = 0; k < part->num_entries; k++) {
+            const hp_hot_t *hp = &h->hot[part->hp[k]];
+            part->px[k] = hp->px; part->py[k] = hp->py; part->pz[k] = hp->pz;
+            part->nx[k] = hp->nx; part->ny[k] = hp->ny; part->nz[k] = hp->nz;
+        }
+    }
+}
+
+int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
+               int num_parts, int include_zero_weight, const stop_flag_t *stop, char *err, size_t errlen)
+{
+    memset(g, 0, sizeof *g);
+    g->stop = stop;
+    g->kind = kind;
+    g->num_parts = num_parts;
+    g->r0 = r0;
+    double max_abs = 0;
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        max_abs = fmax(max_abs, fmax(fabs(p->px), fmax(fabs(p->py), fabs(p->pz))));
+    }
+    g->r_safe = grid_safe_radius(r0, max_abs + 4 * r0);
+    int rc;
+    switch (kind) {
+    case GRID_SMALLPPM: rc = build_smallppm(g, h, width, err, errlen); break;
+    case GRID_CELLS: rc = build_cells(g, h, width, include_zero_weight, err, errlen); break;
+    default: rc = build_brute(g, h, width, err, errlen); break;
+    }
+    if (rc == 0 && stop_requested(stop)) { snprintf(err, errlen, STOP_MESSAGE); rc = -1; }
+    if (rc == 0) fill_entries(g, h);
+    if (rc) grid_free(g);
+    return rc;
+}
+
+void grid_free(grid_t *g)
+{
+    if (g->parts) {
+        if (g->kind == GRID_CELLS && g->num_parts > 0) free(g->parts[0].keys);
+        free(g->dense);
+        for (int p = 0; p < g->num_parts; p++) {
+            free(g->parts[p].start);
+            free(g->parts[p].px);
+        }
+    }
+    free(g->parts);
+    memset(g, 0, sizeof *g);
+}
+
+uint32_t grid_bucket(const grid_t *g, vec3 x)
+{
+    switch (g->kind) {
+    case GRID_SMALLPPM: {
+        uint32_t ix = abs_u32(trunc_i32((x.x - g->bmin.x) * g->inv_cell));
+        uint32_t iy = abs_u32(trunc_i32((x.y - g->bmin.y) * g->inv_cell));
+        uint32_t iz = abs_u32(trunc_i32((x.z - g->bmin.z) * g->inv_cell));
+        return (uint32_t)smallppm_bucket(ix, iy, iz, g->num_buckets);
+    }
+    case GRID_CELLS: {
+        int64_t c[3];
+        if (!cell_coords(g, x, c)) return GRID_NO_BUCKET;
+        if (g->dense) return g->dense[dense_index(g, c[0], c[1], c[2])];
+        uint64_t key = cell_key(c[0], c[1], c[2]);
+        const uint64_t *keys = g->parts[0].keys;
+        size_t s = find_slot(keys, g->num_buckets - 1, key);
+        return keys[s] == key ? (uint32_t)s : GRID_NO_BUCKET;
+    }
+    default:
+        return 0;
+    }
+}

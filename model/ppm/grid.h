@@ -1,0 +1,104 @@
+/* grid.h: spatial look-up of hit points for photons, split into parts that threads own.
+ *
+ * Three kinds:
+ *   GRID_SMALLPPM  the reference program's hash grid, exactly: cells of side 2*r0 hashed into
+ *                  as many buckets as there are hit points; buckets of different cells may
+ *                  coincide and a hit point may stand in one bucket twice. Nothing is skipped.
+ *   GRID_CELLS     the default: exact cells of side 2*r0 (no shared buckets, a hit point at most
+ *                  once per cell), hit points of weight zero left out, and a hit point listed
+ *                  in every cell its safe radius touches (see grid_safe_radius).
+ *   GRID_BRUTE     every hit point is a candidate for every photon: the test oracle.
+ * Part p holds only the hit points that part owns (grid_owner), in the same relative order,
+ * so threads update disjoint hit points and each hit point sees photons in index order. */
+#ifndef PREE_GRID_H
+#define PREE_GRID_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include "hitpoints.h"
+#include "stop.h"
+
+typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
+
+/* GRID_CELLS cell side in units of r0. Measured on cornell3 320x240 (one thread): side r0 gives
+ * 3.8 M entries and 30.7 M candidates, 2 r0 gives 1.1 M entries (2.5x less memory) and 54.5 M
+ * candidates, scanned in sequence and mostly rejected by the radius prefilter, and was fastest. */
+#define GRID_CELL_FACTOR 2.0
+#define GRID_NO_BUCKET ((uint32_t)0xFFFFFFFFu)
+/* GRID_CELLS numbers its cells in a dense array (4 bytes per cell of the hit points' bounding box)
+ * up to this many cells, else in a hash table of the cells in use. */
+#define GRID_DENSE_MAX ((uint64_t)1 << 23)
+/* Entries allocated beyond the last, so that four-wide loads at a bucket's end stay in bounds. */
+#define GRID_ENTRY_PAD 4
+
+/* A part's entries (candidates) as arrays: entry k is a copy of hit point hp[k]'s geometry, so
+ * that scanning a bucket reads memory in sequence (and in SIMD lanes); the changing radius stays
+ * in the hit points' compact r2 array. One allocation, based at px. */
+typedef struct {
+    uint32_t *start;       /* bucket b's entries are [start[b] .. start[b+1]) */
+    double *px, *py, *pz;  /* position */
+    double *nx, *ny, *nz;  /* outward normal */
+    uint32_t *hp;          /* hit-point index */
+    uint64_t *keys;        /* GRID_CELLS: packed cell key per bucket (open addressing) */
+    size_t num_entries;
+} grid_part_t;
+
+/* One bucket's candidates in one part: count entries from each pointer. */
+typedef struct {
+    const double *px, *py, *pz, *nx, *ny, *nz;
+    const uint32_t *hp;
+    size_t count;
+} grid_cands_t;
+
+typedef struct {
+    grid_kind_t kind;
+    int num_parts;
+    grid_part_t *parts;
+    size_t num_buckets;      /* smallppm: number of hit points; cells: distinct cells (dense) or table size */
+    uint32_t *dense;         /* GRID_CELLS with at most GRID_DENSE_MAX cells: cell -> bucket or GRID_NO_BUCKET */
+    vec3 bmin;               /* cell origin */
+    double inv_cell;         /* 1 / cell side */
+    int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */
+    double r0;               /* initial radius */
+    double r_safe;           /* radius within which the fp32 datapath could ever accept */
+    size_t zero_weight_skipped;
+    const stop_flag_t *stop; /* build: polled between the passes over the hit points */
+} grid_t;
+
+/* The reference program's initial radius: mean bbox side over mean image side, times 2. */
+double grid_initial_radius(const hitpoints_t *h, int width, int height);
+
+/* r0 enlarged by a margin that covers binary32 rounding of positions (magnitude up to
+ * max_abs_coord) and of the distance arithmetic, so that a candidate farther than it from
+ * a photon can never be accepted in either precision. */
+double grid_safe_radius(double r0, double max_abs_coord);
+
+/* Which part owns hit point i (bands of 8 image rows, dealt round-robin). */
+static inline int grid_owner(const hitpoints_t *h, size_t i, int width, int num_parts)
+{
+    return (int)((h->pixel[i] / width / 8) % num_parts);
+}
+
+/* Build the grid. include_zero_weight: list hit points of weight zero too (GRID_CELLS
+ * leaves them out otherwise; the other kinds always list them). 0, or -1 with err (STOP_MESSAGE
+ * when stop was set between passes). */
+int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
+               int num_parts, int include_zero_weight, const stop_flag_t *stop, char *err, size_t errlen);
+
+void grid_free(grid_t *g);
+
+/* The bucket of a photon at x, the same for every part, or GRID_NO_BUCKET when no hit point
+ * can be near x (GRID_CELLS only: an empty cell). */
+uint32_t grid_bucket(const grid_t *g, vec3 x);
+
+/* Part p's candidates in bucket b (not GRID_NO_BUCKET). */
+static inline grid_cands_t grid_bucket_cands(const grid_t *g, int p, uint32_t b)
+{
+    const grid_part_t *part = &g->parts[p];
+    const size_t k = part->start[b];
+    grid_cands_t c = {part->px + k, part->py + k, part->pz + k, part->nx + k, part->ny + k, part->nz + k,
+                      part->hp + k, part->start[b + 1] - k};
+    return c;
+}
+
+#endif

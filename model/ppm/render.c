@@ -1,0 +1,395 @@
+/* render.c: the render driver: phases in order, threads, timing, progress and interrupt.
+ *
+ * The photon pass runs in blocks: photons of a block are traced in parallel into ordered
+ * chunk buffers, then each thread updates the hit points it owns from all of the block's
+ * hits in photon order. So every hit point sees its photons in index order, and the result
+ * does not depend on the number of threads. */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <unistd.h>
+#include "hp_order.h"
+#include "mem_check.h"
+#include "radiance.h"
+#include "checkpoint.h"
+#include "render_check.h"
+#include "render_session.h"
+
+#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
+
+long render_peak_rss_kb(void)
+{
+    struct rusage ru;
+    return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
+}
+
+/* Hit-point state before the first photon: radius r0, no photons, no flux; the update rule's
+ * alpha and, in fp32 mode, the datapath's state layout. */
+static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
+{
+    h->alpha = render_alpha(opt);
+    h->alpha32 = preu_f32(h->alpha);
+    h->kappa32 = preu_kappa(h->alpha32);
+    for (size_t i = 0; i < h->n; i++) {
+        h->r2[i] = r0 * r0;
+        h->hot[i].count = 0;
+        h->flux[i] = v3(0, 0, 0);
+    }
+    if (opt->precision != PRECISION_FP32) return 0;
+    const int stable = opt->datapath == DATAPATH_STABLE;
+    const size_t n = h->n ? h->n : 1;
+    if (stable) h->stable = malloc(n * sizeof *h->stable);
+    else h->fp32 = malloc(n * sizeof *h->fp32);
+    h->r2_f32 = malloc(n * sizeof *h->r2_f32);
+    if (!(stable ? (void *)h->stable : (void *)h->fp32) || !h->r2_f32) return -1;
+    const uint32_t r2 = preu_f32(r0 * r0);
+    for (size_t i = 0; i < h->n; i++) {
+        const hp_hot_t *p = &h->hot[i];
+        const uint32_t pos[3] = {preu_f32(p->px), preu_f32(p->py), preu_f32(p->pz)};
+        const uint32_t f[3] = {preu_f32(h->weight[i].x), preu_f32(h->weight[i].y), preu_f32(h->weight[i].z)};
+        if (stable) {
+            preu_shp_t *s = &h->stable[i];
+            memcpy(s->pos, pos, sizeof pos);
+            memcpy(s->f, f, sizeof f);
+            preu_stable_init(s, r0 * r0);
+            h->r2_f32[i] = preu_stable_screen_r2(s->w);
+        } else {
+            preu_hp_t *s = &h->fp32[i];
+            memcpy(s->pos, pos, sizeof pos);
+            memcpy(s->f, f, sizeof f);
+            s->tau[0] = s->tau[1] = s->tau[2] = 0;
+            s->r2 = r2;
+            s->n = 0;
+            h->r2_f32[i] = r2;
+        }
+    }
+    return 0;
+}
+
+/* Trace the photons of sequence indices [first, first + count) into the ordered chunk buffers;
+ * drop hits that reach no hit point's cell when skipping. Returns 0, -1 (out of memory) or 1
+ * (stop was set: the block is abandoned, the counters untouched). */
+static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
+                       uint64_t first, uint64_t count, const stop_flag_t *stop, block_buffers_t *bb)
+{
+    int failed = 0, stopped = 0;
+    unsigned long long no_cell = 0;
+    const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : failed, stopped, no_cell)
+    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
+        /* Work on a copy: neighbouring chunks share cache lines, and their counters change with
+         * every segment and hit. */
+        photon_hits_t local = bb->chunk[c];
+        photon_hits_t *out = &local;
+        out->n = 0;
+        uint64_t lo = first + c * per, hi = lo + per;
+        if (hi > first + count) hi = first + count;
+        for (uint64_t i = lo; i < hi && !failed && !stopped; i++) {
+            if (stop_requested(stop)) { stopped = 1; break; }
+            size_t before = out->n;
+            if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
+            /* Find each hit's bucket once, here in parallel; with skips, drop the hits
+             * that reach no hit point's cell. */
+            size_t keep = before;
+            for (size_t k = before; k < out->n; k++) {
+                photon_hit_t *ph = &out->hits[k];
+                ph->bucket = grid_bucket(g, ph->x);
+                if (skip && ph->bucket == GRID_NO_BUCKET) { no_cell++; continue; }
+                out->hits[keep++] = *ph;
+            }
+            out->n = keep;
+        }
+        bb->chunk[c] = local;
+    }
+    if (failed) return -1;
+    if (stopped) {
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) bb->chunk[c].n = bb->chunk[c].segments = 0;
+        return 1;
+    }
+    bb->no_cell += no_cell;
+    return 0;
+}
+
+/* Progress on stderr; a failed write (EPIPE from a closed pipe, SIGPIPE ignored) only stops
+ * the printing, never the render. */
+static void progress(render_options_t *opt, uint64_t done, uint64_t total, double t0, int *last_decile)
+{
+    if (!opt->progress) return;
+    const int tty = isatty(2);
+    const int decile = (int)(10 * done / total);
+    if (!tty && decile == *last_decile) return;
+    *last_decile = decile;
+    double el = omp_get_wtime() - t0;
+    fprintf(stderr, "%spree: photons %llu/%llu (%3.0f%%) %.1fs%s", tty ? "\r" : "", (unsigned long long)done,
+            (unsigned long long)total, 100.0 * (double)done / (double)total, el, tty && done < total ? "" : "\n");
+    if (fflush(stderr) != 0 || ferror(stderr)) opt->progress = 0;
+}
+
+static void session_free(render_session_t *s)
+{
+    if (s->bb) {
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&s->bb->chunk[c]);
+        free(s->bb);
+    }
+    grid_free(&s->grid);
+    free(s->perm);
+    free(s->owner);
+    update_batch_free(&s->batch);
+    if (s->scratch)
+        for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
+    free(s->scratch);
+    free(s->ust);
+    update_ops_free(&s->ops);
+    tracer_destroy(s->tr);
+    free(s);
+}
+
+render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
+                              char *err, size_t errlen)
+{
+    memset(res, 0, sizeof *res);
+    render_session_t *s = calloc(1, sizeof *s);
+    if (!s) { snprintf(err, errlen, "out of memory"); return NULL; }
+    s->scene = scene;
+    s->opt = *opt;
+    s->res = res;
+    render_stats_t *st = &res->stats;
+    s->t_start = omp_get_wtime();
+    const char *phase = "set-up";
+    if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
+        snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
+        goto fail;
+    }
+    if (opt->record_ops && opt->precision != PRECISION_FP32) {
+        snprintf(err, errlen, "recording the PREE operations needs --precision fp32");
+        goto fail;
+    }
+    if (opt->threads > 0) omp_set_num_threads(opt->threads);
+    s->T = opt->record_ops ? 1 : omp_get_max_threads();
+    render_stats_scene(st, scene);
+    st->threads = s->T;
+    s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
+    s->npix = (size_t)opt->width * (size_t)opt->height;
+    /* Memory: before anything large, with one hit point a pixel; again with the true count. */
+    if (mem_check(mem_estimate_start(st->scene_triangles, s->npix), opt->max_memory, MEM_START_WHAT, err, errlen))
+        goto fail;
+    s->bb = calloc(1, sizeof *s->bb);
+    res->rgb = calloc(s->npix * 3, sizeof *res->rgb);
+    if (!s->bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto fail; }
+    res->width = opt->width;
+    res->height = opt->height;
+
+    /* Acceleration structure and eye pass. */
+    phase = "BVH build";
+    render_test_interrupt("bvh");
+    double t = omp_get_wtime();
+    s->tr = tracer_create(scene, opt->interrupt, err, errlen);
+    if (!s->tr) goto fail;
+    st->sec_bvh = omp_get_wtime() - t;
+    phase = "eye pass";
+    render_test_interrupt("eye");
+    t = omp_get_wtime();
+    eye_stats_t es;
+    if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) goto fail;
+    if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(scene, opt, &res->hp);
+    st->sec_eye = omp_get_wtime() - t;
+    st->hit_points = res->hp.n;
+    if (mem_check((uint64_t)res->hp.n * MEM_HIT_POINT_BYTES, opt->max_memory, "the hit points' state and grid",
+                  err, errlen))
+        goto fail;
+    st->eye_rays = es.rays;
+    st->glass_splits = es.glass_splits;
+    for (size_t i = 0; i < res->hp.n; i++) {
+        vec3 w = res->hp.weight[i];
+        st->hit_points_zero_weight += (w.x == 0 && w.y == 0 && w.z == 0);
+    }
+
+    /* Initial radius, hit-point state, and the grid. */
+    phase = "grid build";
+    render_test_interrupt("grid");
+    t = omp_get_wtime();
+    st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
+        snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
+                 "bounding box) is 0: use a larger image", res->hp.n);
+        goto fail;
+    }
+    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
+    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c). */
+    s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
+    if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
+    /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
+     * grid of every hit point and routes what it keeps to the owning part. */
+    s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
+    s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
+    if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
+    for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
+    if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
+                                !s->skip, opt->interrupt, err, errlen))
+        goto fail;
+    st->r_safe = s->grid.r_safe;
+    for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
+    st->sec_grid = omp_get_wtime() - t;
+
+    s->emitted_target = render_emitted(opt->photons);
+    s->ust = calloc((size_t)s->T, sizeof *s->ust);
+    s->scratch = calloc((size_t)s->T, sizeof *s->scratch);
+    if (!s->ust || !s->scratch) { snprintf(err, errlen, "out of memory"); goto fail; }
+    if (opt->resume && render_session_resume(s, err, errlen)) goto fail;
+    s->t_photons = omp_get_wtime();
+    return s;
+fail:
+    if (stop_requested(opt->interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the %s", phase);
+    session_free(s);
+    return NULL;
+}
+
+/* The update of one traced block: photon-major per owned part, or screened bucket-major and
+ * applied per part. 0 or -1 (out of memory). */
+static int update_block(render_session_t *s)
+{
+    hitpoints_t *h = &s->res->hp;
+    const precision_t prec = s->opt.precision;
+    const int T = s->T;
+    block_buffers_t *bb = s->bb;
+    if (s->photon_major) {
+        update_ops_t *ops = s->opt.record_ops ? &s->ops : NULL;
+#pragma omp parallel num_threads(T)
+        {
+            const int p = omp_get_thread_num();
+            for (unsigned c = 0; c < TRACE_CHUNKS; c++)
+                update_part(h, &s->grid, p, prec, s->skip, bb->chunk[c].hits, bb->chunk[c].n, &s->ust[p], ops);
+        }
+        return ops && ops->failed ? -1 : 0;
+    }
+    int failed = update_batch_prepare(&s->batch, bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
+    s->batch.owner = T > 1 ? s->owner : NULL;
+    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], T);
+    if (failed) return -1;
+    /* Screening: any thread, bucket groups; applying: each thread its own part. */
+#pragma omp parallel num_threads(T) reduction(| : failed)
+    {
+        const int p = omp_get_thread_num();
+#pragma omp for schedule(dynamic, 1)
+        for (size_t gi = 0; gi < s->batch.n_groups; gi += SCREEN_GROUPS)
+            failed |= update_batch_screen(h, &s->grid, prec, s->skip, &s->batch, gi, gi + SCREEN_GROUPS,
+                                          &s->ust[p], &s->scratch[p]);
+#pragma omp for schedule(static, 1)
+        for (int q = 0; q < T; q++)
+            failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[p]);
+    }
+    return failed ? -1 : 0;
+}
+
+static int step_block(render_session_t *s, char *err, size_t errlen)
+{
+    render_stats_t *st = &s->res->stats;
+    if (s->interrupted || s->done_photons >= s->emitted_target || !s->res->hp.n) return 0;
+    uint64_t count = s->emitted_target - s->done_photons;
+    if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
+    update_ops_clear(&s->ops);
+    char block_name[32];   /* fault injection: "block1" is this run's first block */
+    snprintf(block_name, sizeof block_name, "block%llu",
+             (unsigned long long)((s->done_photons - s->res->stats.photons_resumed) / PHOTON_BLOCK + 1));
+    render_test_interrupt(block_name);
+    double t = omp_get_wtime();
+    const int traced = trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + s->done_photons, count,
+                                   s->opt.interrupt, s->bb);
+    if (traced < 0) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
+    if (traced > 0) {   /* interrupted: the image keeps the whole blocks done */
+        s->interrupted = 1;
+        if (s->opt.progress) fputc('\n', stderr);
+        return 0;
+    }
+    st->sec_trace += omp_get_wtime() - t;
+    if (s->opt.precision == PRECISION_FP32 && render_fp32_check_hits(s->bb->chunk, TRACE_CHUNKS, err, errlen)) return -1;
+    t = omp_get_wtime();
+    if (update_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
+    st->sec_update += omp_get_wtime() - t;
+    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
+        st->photon_hits += s->bb->chunk[c].n;
+        st->photon_segments += s->bb->chunk[c].segments;
+        s->bb->chunk[c].segments = 0;
+    }
+    s->done_photons += count;
+    progress(&s->opt, s->done_photons, s->emitted_target, s->t_photons, &s->last_decile);
+    if (s->opt.interrupt && *s->opt.interrupt && s->done_photons < s->emitted_target) {
+        /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
+        s->interrupted = 1;
+        if (s->opt.progress) fputc('\n', stderr);
+    }
+    return 1;
+}
+
+int render_step(render_session_t *s, char *err, size_t errlen)
+{
+    int r = step_block(s, err, errlen);
+    if (r < 0) s->failed = 1;
+    return r;
+}
+
+const update_ops_t *render_block_ops(const render_session_t *s) { return &s->ops; }
+
+const uint32_t *render_hp_address(const render_session_t *s) { return s->perm; }
+
+int render_close(render_session_t *s, char *err, size_t errlen)
+{
+    render_result_t *res = s->res;
+    render_stats_t *st = &res->stats;
+    int rc = -1;
+    if (s->failed) goto done;
+    if (s->interrupted && !s->done_photons) { snprintf(err, errlen, STOP_MESSAGE " during the first photon block"); goto done; }
+    st->upd = render_session_update_totals(s);
+    st->photon_hits_no_cell = s->bb->no_cell;
+    st->photon_hits += s->bb->no_cell;
+    st->photons_emitted = res->hp.n ? s->done_photons : s->emitted_target;
+    if (hp_order_restore(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
+
+    /* Radiance evaluation. */
+    double t = omp_get_wtime();
+    if (radiance_evaluate_preu(&res->hp, s->opt.precision, st->photons_emitted, s->skip, s->opt.preu ? s->opt.preu : 4,
+                               res->rgb, s->npix, &st->radiance_skipped)) {
+        snprintf(err, errlen, "out of memory in radiance evaluation");
+        goto done;
+    }
+    st->sec_radiance = omp_get_wtime() - t;
+    if (s->opt.precision == PRECISION_FP32 && render_fp32_result_check(res, err, errlen)) goto done;
+    render_hash_results(res, s->opt.precision);
+    rc = s->interrupted ? 1 : 0;
+done:
+    st->sec_total = omp_get_wtime() - s->t_start;
+    session_free(s);
+    st->peak_rss_kb = render_peak_rss_kb();
+    return rc;
+}
+
+void render_stats_scene(render_stats_t *st, const scene_t *scene)
+{
+    st->scene_spheres = (unsigned long long)scene->num_spheres;
+    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
+    st->scene_lights = (unsigned long long)scene->num_lights;
+    st->scene_mirror = scene->has_mirror;
+    st->scene_glass = scene->has_glass;
+}
+
+void render_result_free(render_result_t *res)
+{
+    free(res->rgb);
+    hitpoints_free(&res->hp);
+    memset(res, 0, sizeof *res);
+}
+
+update_stats_t render_session_update_totals(const render_session_t *s)
+{
+    update_stats_t u = {0, 0, 0, 0};
+    for (int p = 0; p < s->T; p++) {
+        u.candidates += s->ust[p].candidates;
+        u.skipped_radius += s->ust[p].skipped_radius;
+        u.normal_passed += s->ust[p].normal_passed;
+        u.accepted += s->ust[p].accepted;
+    }
+    return u;
+}
