@@ -74,12 +74,13 @@ struct cosim_rtl {
     virtual void counters(uint64_t *cnt) = 0;
     virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
+    virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int DP>
+template <class V, int NP, int HPB, int PPC, int DP>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
@@ -107,17 +108,19 @@ struct Rtl : cosim_rtl {
         t.kappa_i = in.kappa;
         t.n_hit_i = in.n_hit;
         t.ph_valid_i = in.ph_valid;
-        if (std::memcmp(applied.ph_pos, in.ph_pos, sizeof in.ph_pos) ||
-            std::memcmp(applied.ph_phi, in.ph_phi, sizeof in.ph_phi)) {
-            for (int c = 0; c < 3; c++) {
-                put32(t.ph_data_i, 32 * c, in.ph_pos[c]);
-                put32(t.ph_data_i, 96 + 32 * c, in.ph_phi[c]);
+        for (int k = 0; k < PPC; k++) {
+            if (std::memcmp(applied.ph_pos[k], in.ph_pos[k], sizeof in.ph_pos[k]) ||
+                std::memcmp(applied.ph_phi[k], in.ph_phi[k], sizeof in.ph_phi[k])) {
+                for (int c = 0; c < 3; c++) {
+                    put32(t.ph_data_i, 192 * k + 32 * c, in.ph_pos[k][c]);
+                    put32(t.ph_data_i, 192 * k + 96 + 32 * c, in.ph_phi[k][c]);
+                }
+                std::memcpy(applied.ph_pos[k], in.ph_pos[k], sizeof in.ph_pos[k]);
+                std::memcpy(applied.ph_phi[k], in.ph_phi[k], sizeof in.ph_phi[k]);
             }
-            std::memcpy(applied.ph_pos, in.ph_pos, sizeof in.ph_pos);
-            std::memcpy(applied.ph_phi, in.ph_phi, sizeof in.ph_phi);
+            put(t.ph_paddr_i, k * COSIM_IDXAW, COSIM_IDXAW, in.ph_paddr[k]);
+            put(t.ph_n_i, k * COSIM_CNTW, COSIM_CNTW, in.ph_n[k]);
         }
-        t.ph_paddr_i = in.ph_paddr;
-        t.ph_n_i = in.ph_n;
         uint32_t we = 0;
         for (int j = 0; j < NP; j++) {
             if (!in.idx_we[j]) continue;
@@ -151,6 +154,7 @@ struct Rtl : cosim_rtl {
         top.tick();
     }
     int hp_bank_w() override { return HPB; }
+    int ppc() override { return PPC; }
     void set_reset(int on) override
     {
         top->rst_ni = on ? 0 : 1;
@@ -189,7 +193,7 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, s
 {
     cosim_rtl_t *r = nullptr;
 #define X(V, NP, DP) \
-    if (!r && preu == (NP) && (datapath != 0) == (DP)) r = new Rtl<V, NP, COSIM_HPB_##NP, DP>(fst);
+    if (!r && preu == (NP) && (datapath != 0) == (DP)) r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP>(fst);
     COSIM_MODELS
 #undef X
     if (!r) {
@@ -216,6 +220,17 @@ void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
+int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
+
+int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)
+{
+    switch (preu) {
+    case 4: *hp_bank_w = COSIM_HPB_4; *ppc = COSIM_PPC_4; return 0;
+    case 8: *hp_bank_w = COSIM_HPB_8; *ppc = COSIM_PPC_8; return 0;
+    case 16: *hp_bank_w = COSIM_HPB_16; *ppc = COSIM_PPC_16; return 0;
+    default: return -1;
+    }
+}
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on) { r->set_reset(on); }
 
 }  // extern "C"
