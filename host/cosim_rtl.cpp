@@ -1,31 +1,17 @@
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
-// Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models of both
-// datapaths.
+// Verilator's models are C++ classes; one template, clocked by the bench harness
+// (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header
+// (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath) each:
+// the one list of configurations.
 #include "cosim_rtl.h"
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
-#include "verilated.h"
-#include "verilated_fst_c.h"
-#ifdef COSIM_HAVE_P4
-#include "Vpree_top_p4.h"
-#endif
-#ifdef COSIM_HAVE_P8
-#include "Vpree_top_p8.h"
-#endif
-#ifdef COSIM_HAVE_P16
-#include "Vpree_top_p16.h"
-#endif
-#ifdef COSIM_HAVE_S4
-#include "Vpree_top_s4.h"
-#endif
-#ifdef COSIM_HAVE_S8
-#include "Vpree_top_s8.h"
-#endif
-#ifdef COSIM_HAVE_S16
-#include "Vpree_top_s16.h"
+#include "vharness.h"
+
+#ifndef COSIM_MODELS
+#error "COSIM_MODELS (the build's pree_top models) comes from mk/cosim.mk"
 #endif
 
 namespace {
@@ -86,7 +72,7 @@ struct cosim_rtl {
     virtual void hp_rdata(preu_hpw_t *hp, uint32_t *pixel) = 0;
     virtual void px_rdata(uint32_t L[3]) = 0;
     virtual void counters(uint64_t *cnt) = 0;
-    virtual int open_trace(const char *path) = 0;
+    virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
     virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
@@ -97,46 +83,23 @@ namespace {
 template <class V, int NP, int HPB, int PPC, int DP>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
-    std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
-    std::unique_ptr<V> top;
-    std::unique_ptr<VerilatedFstC> tfp;
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
     // cycle, so a waveform viewer shows real times; cycle n's rising edge is at (8n + 4) ns.
     static constexpr uint64_t HALF_PERIOD_PS = 4000;
-    uint64_t time = 0;
+    VHarness<V> top;      // the model, its clock and its trace (fst: a file or NULL)
     cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
 
-    Rtl()
+    explicit Rtl(const char *fst) : top(0, nullptr, fst, HALF_PERIOD_PS)
     {
-        // Tracing is compiled in; traceEverOn lets open_trace attach a trace later.
-        ctx->traceEverOn(true);
-        top.reset(new V{ctx.get()});
         std::memset(&in, 0, sizeof in);
         std::memset(&applied, 0xff, sizeof applied);
-        top->clk_i = 0;
-        top->rst_ni = 0;
         apply();
-        top->eval();
-        for (int i = 0; i < 2; i++) { top->clk_i = 1; top->eval(); top->clk_i = 0; top->eval(); }
-        top->rst_ni = 1;
-        top->eval();
+        top.reset(2);
     }
-    ~Rtl() override
-    {
-        if (tfp) tfp->close();
-        top->final();
-    }
-    int open_trace(const char *path) override
-    {
-        tfp.reset(new VerilatedFstC);
-        top->trace(tfp.get(), 99);
-        tfp->open(path);
-        if (!tfp->isOpen()) { tfp.reset(); return -1; }
-        return 0;
-    }
+    const char *trace_error() override { return top.trace_error(); }
     void apply()
     {
-        V &t = *top;
+        V &t = top.dut();
         t.mode_i = in.mode;
         t.cnt_en_i = in.cnt_en;
         t.rad_start_i = in.rad_start;
@@ -184,20 +147,11 @@ struct Rtl : cosim_rtl {
         if (in.px_we)
             for (int c = 0; c < 3; c++) put32(t.px_wdata_i, 32 * c, in.px_wdata[c]);
     }
-    // One cycle, traced or not, through Verilator's public interface only: clock low with the
-    // new inputs (evaluated, dumped), then the rising edge (evaluated, dumped). The clock stays
-    // high until the next tick, which is harmless (nothing in pree_top uses the falling edge).
+    // One cycle with the new inputs, traced or not (the harness evaluates once per edge).
     void tick() override
     {
         apply();
-        top->clk_i = 0;
-        top->eval();
-        if (tfp) tfp->dump(time);
-        time += HALF_PERIOD_PS;
-        top->clk_i = 1;
-        top->eval();
-        if (tfp) tfp->dump(time);
-        time += HALF_PERIOD_PS;
+        top.tick();
     }
     int hp_bank_w() override { return HPB; }
     int ppc() override { return PPC; }
@@ -238,33 +192,18 @@ extern "C" {
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen)
 {
     cosim_rtl_t *r = nullptr;
-    switch (preu * 2 + (datapath != 0)) {
-#ifdef COSIM_HAVE_P4
-    case 8: r = new Rtl<Vpree_top_p4, 4, COSIM_HPB_4, COSIM_PPC_4, 0>; break;
-#endif
-#ifdef COSIM_HAVE_P8
-    case 16: r = new Rtl<Vpree_top_p8, 8, COSIM_HPB_8, COSIM_PPC_8, 0>; break;
-#endif
-#ifdef COSIM_HAVE_P16
-    case 32: r = new Rtl<Vpree_top_p16, 16, COSIM_HPB_16, COSIM_PPC_16, 0>; break;
-#endif
-#ifdef COSIM_HAVE_S4
-    case 9: r = new Rtl<Vpree_top_s4, 4, COSIM_HPB_4, COSIM_PPC_4, 1>; break;
-#endif
-#ifdef COSIM_HAVE_S8
-    case 17: r = new Rtl<Vpree_top_s8, 8, COSIM_HPB_8, COSIM_PPC_8, 1>; break;
-#endif
-#ifdef COSIM_HAVE_S16
-    case 33: r = new Rtl<Vpree_top_s16, 16, COSIM_HPB_16, COSIM_PPC_16, 1>; break;
-#endif
-    default:
+#define X(V, NP, DP) \
+    if (!r && preu == (NP) && (datapath != 0) == (DP)) r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP>(fst);
+    COSIM_MODELS
+#undef X
+    if (!r) {
         std::snprintf(err, errlen, "no pree_top model with %d PREUs and the %s datapath in this build%s", preu,
                       datapath ? "stable" : "paper",
                       datapath ? " (make COSIM_STABLE_PREUS=\"4 8 16\" builds them all)" : "");
         return nullptr;
     }
-    if (fst && r->open_trace(fst)) {
-        std::snprintf(err, errlen, "%s: cannot open the FST trace", fst);
+    if (r->trace_error()) {
+        std::snprintf(err, errlen, "%s", r->trace_error());
         delete r;
         return nullptr;
     }
