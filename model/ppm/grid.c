@@ -7,7 +7,6 @@
 #include <string.h>
 #include "grid.h"
 
-#define CELL_BITS 21
 #define CELL_LIMIT ((int64_t)1 << CELL_BITS)
 #define EMPTY_KEY UINT64_MAX
 
@@ -48,16 +47,6 @@ static inline size_t smallppm_bucket(uint32_t ix, uint32_t iy, uint32_t iz, size
     return hsh % nb;
 }
 
-static inline uint64_t cell_key(int64_t ix, int64_t iy, int64_t iz)
-{
-    return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
-}
-
-/* Linear index of a cell in the dense map (GRID_CELLS with few enough cells). */
-static inline size_t dense_index(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
-{
-    return ((size_t)iz * (size_t)(g->cell_max[1] + 1) + (size_t)iy) * (size_t)(g->cell_max[0] + 1) + (size_t)ix;
-}
 
 /* splitmix64's finaliser: every key bit reaches every slot bit. */
 static inline size_t key_slot(uint64_t key, size_t mask)
@@ -162,7 +151,7 @@ static int build_smallppm(grid_t *g, const hitpoints_t *h, int width, char *err,
     return 0;
 }
 
-static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
+int grid_cell_coords(const grid_t *g, vec3 x, int64_t c[3])
 {
     const double v[3] = {(x.x - g->bmin.x) * g->inv_cell, (x.y - g->bmin.y) * g->inv_cell,
                          (x.z - g->bmin.z) * g->inv_cell};
@@ -176,8 +165,8 @@ static int cell_coords(const grid_t *g, vec3 x, int64_t c[3])
 /* The range of cells that hit point p's safe-radius box touches. */
 static void cell_box(const grid_t *g, const hp_hot_t *p, double rs, int64_t a[3], int64_t b[3])
 {
-    cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
-    cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
+    grid_cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a);
+    grid_cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b);
 }
 
 /* Whether GRID_CELLS lists hit point i: all of them, or those of non-zero weight. */
@@ -229,12 +218,12 @@ static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_z
 
 static uint32_t dense_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
-    return g->dense[dense_index(g, ix, iy, iz)];
+    return g->dense[grid_dense_index(g, ix, iy, iz)];
 }
 
 static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
-    return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, cell_key(ix, iy, iz));
+    return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, grid_cell_key(ix, iy, iz));
 }
 
 /* Number the distinct cells that listed hit points touch: in a dense array of every cell when
@@ -243,7 +232,7 @@ static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t i
 /* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
 static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
-    uint32_t *next = ctx, *d = &g->dense[dense_index(g, ix, iy, iz)];
+    uint32_t *next = ctx, *d = &g->dense[grid_dense_index(g, ix, iy, iz)];
     if (*d == GRID_NO_BUCKET) *d = (*next)++;
 }
 
@@ -253,7 +242,7 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
 {
     (void)g;   /* the cell visitor's signature; the hashed numbering needs only the cell */
     hash_ctx_t *c = ctx;
-    uint64_t key = cell_key(ix, iy, iz);
+    uint64_t key = grid_cell_key(ix, iy, iz);
     size_t sl = find_slot(c->keys, c->mask, key);
     if (c->keys[sl] == EMPTY_KEY) { c->keys[sl] = key; c->distinct++; }
 }
@@ -386,7 +375,8 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
         const hp_hot_t *p = &h->hot[i];
         max_abs = fmax(max_abs, fmax(fabs(p->px), fmax(fabs(p->py), fabs(p->pz))));
     }
-    g->r_safe = grid_safe_radius(r0, max_abs + 4 * r0);
+    g->max_abs_coord = max_abs + 4 * r0;
+    g->r_safe = grid_safe_radius(r0, g->max_abs_coord);
     int rc;
     switch (kind) {
     case GRID_SMALLPPM: rc = build_smallppm(g, h, width, err, errlen); break;
@@ -424,9 +414,9 @@ uint32_t grid_bucket(const grid_t *g, vec3 x)
     }
     case GRID_CELLS: {
         int64_t c[3];
-        if (!cell_coords(g, x, c)) return GRID_NO_BUCKET;
-        if (g->dense) return g->dense[dense_index(g, c[0], c[1], c[2])];
-        uint64_t key = cell_key(c[0], c[1], c[2]);
+        if (!grid_cell_coords(g, x, c)) return GRID_NO_BUCKET;
+        if (g->dense) return g->dense[grid_dense_index(g, c[0], c[1], c[2])];
+        uint64_t key = grid_cell_key(c[0], c[1], c[2]);
         const uint64_t *keys = g->parts[0].keys;
         size_t s = find_slot(keys, g->num_buckets - 1, key);
         return keys[s] == key ? (uint32_t)s : GRID_NO_BUCKET;

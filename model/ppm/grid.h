@@ -30,6 +30,8 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 #define GRID_DENSE_MAX ((uint64_t)1 << 23)
 /* Entries allocated beyond the last, so that four-wide loads at a bucket's end stay in bounds. */
 #define GRID_ENTRY_PAD 4
+/* GRID_CELLS cell coordinates take CELL_BITS bits each in a packed key. */
+#define CELL_BITS 21
 
 /* A part's entries (candidates) as arrays: entry k is a copy of hit point hp[k]'s geometry, so
  * that scanning a bucket reads memory in sequence (and in SIMD lanes); the changing radius stays
@@ -61,6 +63,7 @@ typedef struct {
     int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */
     double r0;               /* initial radius */
     double r_safe;           /* radius within which the fp32 datapath could ever accept */
+    double max_abs_coord;    /* the coordinate magnitude r_safe's rounding margin covers */
     size_t zero_weight_skipped;
     const stop_flag_t *stop; /* build: polled between the passes over the hit points */
 } grid_t;
@@ -99,6 +102,21 @@ static inline grid_cands_t grid_bucket_cands(const grid_t *g, int p, uint32_t b)
     grid_cands_t c = {part->px + k, part->py + k, part->pz + k, part->nx + k, part->ny + k, part->nz + k,
                       part->hp + k, part->start[b + 1] - k};
     return c;
+}
+
+
+/* GRID_CELLS: the cell that x lies in, in c; 0 when x is outside the grid. */
+int grid_cell_coords(const grid_t *g, vec3 x, int64_t c[3]);
+
+static inline uint64_t grid_cell_key(int64_t ix, int64_t iy, int64_t iz)
+{
+    return (uint64_t)ix | ((uint64_t)iy << CELL_BITS) | ((uint64_t)iz << (2 * CELL_BITS));
+}
+
+/* Linear index of a cell in the dense map (GRID_CELLS with few enough cells). */
+static inline size_t grid_dense_index(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    return ((size_t)iz * (size_t)(g->cell_max[1] + 1) + (size_t)iy) * (size_t)(g->cell_max[0] + 1) + (size_t)ix;
 }
 
 #endif

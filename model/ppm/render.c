@@ -12,7 +12,9 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "hp_order.h"
+#include "grid_refilter.h"
 #include "mem_check.h"
+#include "photon_pass.h"
 #include "radiance.h"
 #include "checkpoint.h"
 #include "render_check.h"
@@ -232,6 +234,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
         goto fail;
     st->r_safe = s->grid.r_safe;
     for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
+    st->grid_entries_final = st->grid_entries;
     st->sec_grid = omp_get_wtime() - t;
 
     s->emitted_target = render_emitted(opt->photons);
@@ -284,6 +287,23 @@ static int update_block(render_session_t *s)
     return failed ? -1 : 0;
 }
 
+/* Radii only shrink: after blocks 1, 2, 4, 8, ... drop the grid entries that the current radii
+ * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor when recording the
+ * co-simulation's operations (the host does not read the PREE's radii). 0 or -1 (memory). */
+static int refilter_block(render_session_t *s)
+{
+    s->blocks++;
+    if (!s->skip || s->opt.record_ops || (s->blocks & (s->blocks - 1))) return 0;
+    render_stats_t *st = &s->res->stats;
+    const double t = omp_get_wtime();
+    const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, s->T);
+    if (dropped < 0) return -1;
+    st->grid_refilters++;
+    st->grid_entries_final -= (size_t)dropped;
+    st->sec_refilter += omp_get_wtime() - t;
+    return 0;
+}
+
 static int step_block(render_session_t *s, char *err, size_t errlen)
 {
     render_stats_t *st = &s->res->stats;
@@ -309,6 +329,7 @@ static int step_block(render_session_t *s, char *err, size_t errlen)
     t = omp_get_wtime();
     if (update_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
     st->sec_update += omp_get_wtime() - t;
+    if (refilter_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
     for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
         st->photon_hits += s->bb->chunk[c].n;
         st->photon_segments += s->bb->chunk[c].segments;
@@ -363,6 +384,7 @@ done:
     st->sec_total = omp_get_wtime() - s->t_start;
     session_free(s);
     st->peak_rss_kb = render_peak_rss_kb();
+    if (st->hit_points) st->peak_bytes_per_hit_point = 1024.0 * (double)st->peak_rss_kb / (double)st->hit_points;
     return rc;
 }
 

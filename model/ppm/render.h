@@ -71,7 +71,10 @@ typedef struct {
     unsigned long long hit_points_saturated; /* stable datapath: w or T stopped at WIDE_MAX */
     double r0, r_safe;
     size_t grid_entries;
-    double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_radiance, sec_total;
+    size_t grid_entries_final;        /* after the last re-filter against the current radii */
+    unsigned long long grid_refilters;
+    double peak_bytes_per_hit_point;  /* peak resident memory over hit points */
+    double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_refilter, sec_radiance, sec_total;
     long peak_rss_kb;
     int threads;
     /* What the scene holds (the engine builds only what it needs). */

@@ -33,6 +33,7 @@ struct render_session {
     update_stats_t *ust;
     update_ops_t ops;
     uint64_t emitted_target, done_photons, last_checkpoint;
+    uint64_t blocks;         /* blocks updated: the grid is re-filtered after blocks 1, 2, 4, 8, ... */
     uint64_t fingerprint;    /* checkpoint_fingerprint, with a checkpoint or a resume */
     int failed;              /* a step failed: close only releases */
 };

@@ -9,11 +9,13 @@
 static const json_field_t counts[] = {
     S(hit_points_saturated, JF_U64), S(hit_points, JF_U64), S(hit_points_zero_weight, JF_U64),
     S(eye_rays, JF_U64), S(glass_splits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
-    SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(photons_emitted, JF_U64),
+    SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(grid_entries_final, JF_U64),
+    S(grid_refilters, JF_U64), S(photons_emitted, JF_U64),
     S(photon_segments, JF_U64), S(photon_hits, JF_U64), SK(photon_hits_no_cell, JF_U64, "skip_photon_hits_no_cell"),
     SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
     SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
     SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
+    S(peak_bytes_per_hit_point, JF_REAL),
     S(image_hash, JF_HEX64), S(state_hash, JF_HEX64), S(time_limited, JF_BOOL), S(photons_resumed, JF_U64),
 };
 static const json_field_t contents[] = {
@@ -22,7 +24,7 @@ static const json_field_t contents[] = {
 };
 static const json_field_t seconds[] = {
     SK(sec_bvh, JF_REAL, "bvh"), SK(sec_eye, JF_REAL, "eye"), SK(sec_grid, JF_REAL, "grid"),
-    SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_radiance, JF_REAL, "radiance"),
+    SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_refilter, JF_REAL, "refilter"), SK(sec_radiance, JF_REAL, "radiance"),
     SK(sec_total, JF_REAL, "total"),
 };
 

@@ -1,0 +1,82 @@
+/* grid_refilter.c: drop the GRID_CELLS entries that the current radii rule out.
+ * Radii only shrink, so a hit point whose safe box, taken on its CURRENT radius, no longer
+ * touches a cell can never accept a photon of that cell again. The safe radius is the build's
+ * (grid_safe_radius: every binary32 rounding of positions and of the distance arithmetic) on
+ * the current radius bound instead of r0, so no candidate the datapath could accept is lost;
+ * dropping the others changes no image or state bit, only the candidates scanned. Buckets keep
+ * their numbers (the cell map is untouched) and their entries keep their order. */
+#include <math.h>
+#include <stdlib.h>
+#include "fp32_ops.h"
+#include "grid_refilter.h"
+
+/* The cell of every bucket, as a packed key (UINT64_MAX: no cell). NULL when out of memory. */
+static uint64_t *bucket_cells(const grid_t *g)
+{
+    uint64_t *key = malloc(g->num_buckets * sizeof *key);
+    if (!key) return NULL;
+    for (size_t b = 0; b < g->num_buckets; b++) key[b] = UINT64_MAX;
+    if (!g->dense) {
+        const uint64_t *k = g->parts[0].keys;
+        for (size_t b = 0; b < g->num_buckets; b++) key[b] = k[b];
+        return key;
+    }
+    for (int64_t iz = 0; iz <= g->cell_max[2]; iz++)
+        for (int64_t iy = 0; iy <= g->cell_max[1]; iy++)
+            for (int64_t ix = 0; ix <= g->cell_max[0]; ix++) {
+                const uint32_t b = g->dense[grid_dense_index(g, ix, iy, iz)];
+                if (b != GRID_NO_BUCKET) key[b] = grid_cell_key(ix, iy, iz);
+            }
+    return key;
+}
+
+/* Whether hit point i may still accept a photon in the cell of key k. */
+static int still_reaches(const grid_t *g, const hitpoints_t *h, precision_t prec, uint32_t i, uint64_t k)
+{
+    const double r2 = prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
+    if (!(r2 >= 0) || k == UINT64_MAX) return 1;   /* nothing to prove: keep */
+    const double rs = grid_safe_radius(sqrt(r2), g->max_abs_coord);
+    if (rs >= g->r_safe) return 1;
+    const hp_hot_t *p = &h->hot[i];
+    int64_t a[3], b[3];
+    if (!grid_cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a) ||
+        !grid_cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b)) return 1;
+    const uint64_t mask = ((uint64_t)1 << CELL_BITS) - 1;
+    const int64_t c[3] = {(int64_t)(k & mask), (int64_t)((k >> CELL_BITS) & mask), (int64_t)(k >> (2 * CELL_BITS))};
+    for (int ax = 0; ax < 3; ax++)
+        if (c[ax] < a[ax] || c[ax] > b[ax]) return 0;
+    return 1;
+}
+
+/* Compact part p's buckets in place. Returns the entries dropped. */
+static size_t refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, int p, const uint64_t *key)
+{
+    grid_part_t *part = &g->parts[p];
+    size_t w = 0;
+    for (size_t b = 0; b < g->num_buckets; b++) {
+        const size_t lo = part->start[b], hi = part->start[b + 1];
+        part->start[b] = (uint32_t)w;
+        for (size_t k = lo; k < hi; k++) {
+            if (!still_reaches(g, h, prec, part->hp[k], key[b])) continue;
+            part->px[w] = part->px[k]; part->py[w] = part->py[k]; part->pz[w] = part->pz[k];
+            part->nx[w] = part->nx[k]; part->ny[w] = part->ny[k]; part->nz[w] = part->nz[k];
+            part->hp[w++] = part->hp[k];
+        }
+    }
+    part->start[g->num_buckets] = (uint32_t)w;
+    const size_t dropped = part->num_entries - w;
+    part->num_entries = w;
+    return dropped;
+}
+
+long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int nthreads)
+{
+    if (g->kind != GRID_CELLS || !g->parts) return 0;
+    uint64_t *key = bucket_cells(g);
+    if (!key) return -1;
+    size_t dropped = 0;
+#pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1) reduction(+ : dropped)
+    for (int p = 0; p < g->num_parts; p++) dropped += refilter_part(g, h, prec, p, key);
+    free(key);
+    return (long long)dropped;
+}
