@@ -2,8 +2,9 @@
  *
  * `pree cosim` is a program of its own (host/, built with the Verilated RTL only when asked):
  * one per RTL configuration, build/pree-cosim-p4 .. -p16 (paper datapath) and -s4 .. -s16
- * (stable). `pree cosim ...` runs the one its --preu and --datapath name, from the directory
- * this program lives in, with the same arguments. */
+ * (stable), with an f after the count for PipeFast = 1 (-p4f). `pree cosim ...` runs the one its
+ * --preu, --datapath and --pipe-fast name, from the directory this program lives in, with the
+ * same arguments. */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -27,9 +28,11 @@ static const command_t commands[] = {
  * for that program to report. */
 static int run_cosim(int argc, char **argv)
 {
-    const char *preu = "4", *dp = "paper";
-    for (int i = 1; i + 1 < argc; i++) {
-        if (!strcmp(argv[i], "--preu")) preu = argv[i + 1];
+    const char *preu = "4", *dp = "paper", *fast = "";
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
+        else if (i + 1 == argc) break;
+        else if (!strcmp(argv[i], "--preu")) preu = argv[i + 1];
         else if (!strcmp(argv[i], "--datapath")) dp = argv[i + 1];
     }
     if (strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16")) preu = "4";
@@ -40,7 +43,7 @@ static int run_cosim(int argc, char **argv)
     self[n] = '\0';
     char *slash = strrchr(self, '/');
     if (slash) *slash = '\0';
-    snprintf(path, sizeof path, "%s/pree-cosim-%c%s", self, d, preu);
+    snprintf(path, sizeof path, "%s/pree-cosim-%c%s%s", self, d, preu, fast);
     execv(path, argv);
     fprintf(stderr, "pree cosim: %s: %s (build it with 'make %s')\n", path, strerror(errno),
             strstr(path, "build/") ? strstr(path, "build/") : path);

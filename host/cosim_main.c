@@ -48,6 +48,7 @@ static void cosim_usage(FILE *f)
         "                         (--threads: the double reference render only)\n"
         "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
+        "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
         "  --out IMAGE            the RTL image (.png, .ppm or .exr)\n"
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
@@ -129,7 +130,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0, pipefast = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a = {argc, argv, 1, "cosim"};
@@ -147,6 +148,7 @@ int pree_cmd_cosim(int argc, char **argv)
             gap = strtod(s, &end);
             if (*end || !(gap >= 0 && gap < 1)) return cli_error(&a, "--gap: '%s' is not in [0, 1)", s);
         } else if (!strcmp(arg, "--no-reference")) reference = 0;
+        else if (!strcmp(arg, "--pipe-fast")) pipefast = 1;
         else if (!strcmp(arg, "--no-reorder")) reorder = 0;
         else if (!strcmp(arg, "--no-schedule")) schedule = 0;
         else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
@@ -168,7 +170,7 @@ int pree_cmd_cosim(int argc, char **argv)
     if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
     const int dp = opt.datapath == DATAPATH_STABLE;
-    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
+    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
     if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
     /* The update rule's run-time constants, as the render derives them (model/render.c). */
     cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
@@ -303,6 +305,7 @@ int pree_cmd_cosim(int argc, char **argv)
                 opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
         fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
                 (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
+        fprintf(f, "  \"pipe_fast\": %d,\n  \"update_window\": %d,\n", pipefast, cosim_rtl_update_window(rtl));
         fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
                 np, reorder ? "true" : "false", gap, res.hp.n);
         cosim_sched_stats_t ss;

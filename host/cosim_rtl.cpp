@@ -1,6 +1,7 @@
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
 // Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models of both
-// datapaths.
+// datapaths and both pipeline configurations (PipeFast 0, 1: the f models). Each model's update
+// hazard window is its pree_top's public WIN_UPD.
 #include "cosim_rtl.h"
 
 #include <cstdio>
@@ -11,21 +12,51 @@
 #include "verilated_fst_c.h"
 #ifdef COSIM_HAVE_P4
 #include "Vpree_top_p4.h"
+#include "Vpree_top_p4_pree_top.h"
 #endif
 #ifdef COSIM_HAVE_P8
 #include "Vpree_top_p8.h"
+#include "Vpree_top_p8_pree_top.h"
 #endif
 #ifdef COSIM_HAVE_P16
 #include "Vpree_top_p16.h"
+#include "Vpree_top_p16_pree_top.h"
 #endif
 #ifdef COSIM_HAVE_S4
 #include "Vpree_top_s4.h"
+#include "Vpree_top_s4_pree_top.h"
 #endif
 #ifdef COSIM_HAVE_S8
 #include "Vpree_top_s8.h"
+#include "Vpree_top_s8_pree_top.h"
 #endif
 #ifdef COSIM_HAVE_S16
 #include "Vpree_top_s16.h"
+#include "Vpree_top_s16_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_P4F
+#include "Vpree_top_p4f.h"
+#include "Vpree_top_p4f_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_P8F
+#include "Vpree_top_p8f.h"
+#include "Vpree_top_p8f_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_P16F
+#include "Vpree_top_p16f.h"
+#include "Vpree_top_p16f_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_S4F
+#include "Vpree_top_s4f.h"
+#include "Vpree_top_s4f_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_S8F
+#include "Vpree_top_s8f.h"
+#include "Vpree_top_s8f_pree_top.h"
+#endif
+#ifdef COSIM_HAVE_S16F
+#include "Vpree_top_s16f.h"
+#include "Vpree_top_s16f_pree_top.h"
 #endif
 
 namespace {
@@ -88,11 +119,12 @@ struct cosim_rtl {
     virtual void counters(uint64_t *cnt) = 0;
     virtual int open_trace(const char *path) = 0;
     virtual int hp_bank_w() = 0;
+    virtual int update_window() = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int DP>
+template <class V, int NP, int HPB, int DP, int WIN>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
@@ -193,6 +225,7 @@ struct Rtl : cosim_rtl {
         time++;
     }
     int hp_bank_w() override { return HPB; }
+    int update_window() override { return WIN; }
     int ph_ready() override { return top->ph_ready_o; }
     int idle() override { return top->idle_o; }
     uint32_t photons_done() override { return top->photons_done_o; }
@@ -222,32 +255,54 @@ struct Rtl : cosim_rtl {
 
 extern "C" {
 
-cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen)
+// One case per model built into this program: PREU count, pipeline configuration, datapath.
+#define COSIM_CASE(tag, np, pf, dp) \
+    case np * 4 + pf * 2 + dp: r = new Rtl<Vpree_top_##tag, np, COSIM_HPB_##np, dp, Vpree_top_##tag##_pree_top::WIN_UPD>; break;
+
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
     cosim_rtl_t *r = nullptr;
-    switch (preu * 2 + (datapath != 0)) {
+    switch (preu * 4 + (pipefast != 0) * 2 + (datapath != 0)) {
 #ifdef COSIM_HAVE_P4
-    case 8: r = new Rtl<Vpree_top_p4, 4, COSIM_HPB_4, 0>; break;
+    COSIM_CASE(p4, 4, 0, 0)
 #endif
 #ifdef COSIM_HAVE_P8
-    case 16: r = new Rtl<Vpree_top_p8, 8, COSIM_HPB_8, 0>; break;
+    COSIM_CASE(p8, 8, 0, 0)
 #endif
 #ifdef COSIM_HAVE_P16
-    case 32: r = new Rtl<Vpree_top_p16, 16, COSIM_HPB_16, 0>; break;
+    COSIM_CASE(p16, 16, 0, 0)
 #endif
 #ifdef COSIM_HAVE_S4
-    case 9: r = new Rtl<Vpree_top_s4, 4, COSIM_HPB_4, 1>; break;
+    COSIM_CASE(s4, 4, 0, 1)
 #endif
 #ifdef COSIM_HAVE_S8
-    case 17: r = new Rtl<Vpree_top_s8, 8, COSIM_HPB_8, 1>; break;
+    COSIM_CASE(s8, 8, 0, 1)
 #endif
 #ifdef COSIM_HAVE_S16
-    case 33: r = new Rtl<Vpree_top_s16, 16, COSIM_HPB_16, 1>; break;
+    COSIM_CASE(s16, 16, 0, 1)
+#endif
+#ifdef COSIM_HAVE_P4F
+    COSIM_CASE(p4f, 4, 1, 0)
+#endif
+#ifdef COSIM_HAVE_P8F
+    COSIM_CASE(p8f, 8, 1, 0)
+#endif
+#ifdef COSIM_HAVE_P16F
+    COSIM_CASE(p16f, 16, 1, 0)
+#endif
+#ifdef COSIM_HAVE_S4F
+    COSIM_CASE(s4f, 4, 1, 1)
+#endif
+#ifdef COSIM_HAVE_S8F
+    COSIM_CASE(s8f, 8, 1, 1)
+#endif
+#ifdef COSIM_HAVE_S16F
+    COSIM_CASE(s16f, 16, 1, 1)
 #endif
     default:
-        std::snprintf(err, errlen, "no pree_top model with %d PREUs and the %s datapath in this build%s", preu,
-                      datapath ? "stable" : "paper",
-                      datapath ? " (make COSIM_STABLE_PREUS=\"4 8 16\" builds them all)" : "");
+        std::snprintf(err, errlen, "no pree_top model with %d PREUs, the %s datapath and PipeFast %d in this build%s",
+                      preu, datapath ? "stable" : "paper", pipefast != 0,
+                      datapath || pipefast ? " (make COSIM_STABLE_PREUS=\"4 8 16\" COSIM_FAST_PREUS=\"4 8 16\" builds them all)" : "");
         return nullptr;
     }
     if (fst && r->open_trace(fst)) {
@@ -268,5 +323,6 @@ void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
+int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
 
 }  // extern "C"

@@ -1,15 +1,15 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4-entry buffer,
  * EarlyReady, the rule of tb/ctrl/aftso_model.c), stage A (index-table reads in lane order, one
- * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win (11 or 13)
- * cycles, same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
+ * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
+ * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
  *   cosim_shadow_new(preu, hp_bank_w, win)  a model in reset state (NULL when out of memory);
- *                                  win: the update hazard window (cosim_update_window)
+ *                                  win: the update hazard window (cosim_rtl_update_window)
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
@@ -57,8 +57,6 @@ typedef struct {
 } cosim_shadow_t;
 
 cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win);
-/* The update hazard window of pree_top for a datapath (0 paper, 1 stable). */
-static inline int cosim_update_window(int datapath) { return datapath ? 13 : 11; }
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n);

@@ -24,7 +24,7 @@
 // appears with valid_o and its tag exactly UPD_LATENCY cycles later in update mode, RAD_LATENCY
 // in radiance mode. Update mode: accept_o says whether the photon is inside the radius; only
 // then the caller writes state_o back to the hit point. Radiance mode: lreq_o/lreq_tag_o in
-// stage RAD_LATENCY - AddStages - 1 ask for the pixel's running sum, which the caller drives on
+// stage LREQ_STAGE = RAD_LATENCY - (add's stages) - 1 ask for the pixel's running sum, which the caller drives on
 // l_i in the next cycle; l_o = l_i + (the hit point's radiance) comes out with valid_o.
 // Run-time constants: alpha_i (paper: N + alpha) and kappa_i (stable: fl(fl(1 - alpha) /
 // alpha), model/preu_stable.c preu_kappa); change them only while busy_o = 0.
@@ -39,12 +39,12 @@ module pree_preu #(
   parameter TagW       = 32,
   parameter Datapath   = 0,                          // 0: paper, 1: stable
   parameter PipeFast   = 0,                          // 0: the paper's units, 1: the deep plans
-  parameter AddStages  = (PipeFast != 0) ? 7 : 2,    // the units' own defaults (their headers)
-  parameter MulStages  = (PipeFast != 0) ? 7 : 2,
-  parameter SqrStages  = (PipeFast != 0) ? 6 : 2,
-  parameter DivStages  = (PipeFast != 0) ? 31 : 4,
-  parameter U2fStages  = (PipeFast != 0) ? 5 : 2,
-  parameter WaccStages = (PipeFast != 0) ? 5 : 2,
+  parameter AddStages  = 0,  // each unit kind's Stages; 0: the unit's default for PipeFast
+  parameter MulStages  = 0,
+  parameter SqrStages  = 0,
+  parameter DivStages  = 0,
+  parameter U2fStages  = 0,
+  parameter WaccStages = 0,
   parameter StateW     = (Datapath != 0) ? 320 : 160 // do not override: set by Datapath
 ) (
   input  wire              clk_i,
@@ -77,9 +77,11 @@ module pree_preu #(
   localparam [31:0] ONE    = 32'h3F80_0000;  // 1.0f
   localparam [31:0] INV_PI = 32'h3EA2_F983;  // (float)(1.0 / 3.14159265358979)
   localparam [31:0] PI     = 32'h4049_0FDB;  // (float)3.14159265358979
-  localparam A = AddStages, M = MulStages, Q = SqrStages, D = DivStages;
+  localparam A = preu_stages(0, PipeFast, AddStages), M = preu_stages(1, PipeFast, MulStages),
+             Q = preu_stages(2, PipeFast, SqrStages), D = preu_stages(3, PipeFast, DivStages),
+             U = preu_stages(4, PipeFast, U2fStages), W = preu_stages(5, PipeFast, WaccStages);
   // The latencies and the pixel-sum request stage, public to the Verilator benches.
-  localparam UPD_LATENCY /*verilator public*/ = preu_upd_latency(Datapath, A, M, Q, D, U2fStages, WaccStages);
+  localparam UPD_LATENCY /*verilator public*/ = preu_upd_latency(Datapath, A, M, Q, D, U, W);
   localparam RAD_LATENCY /*verilator public*/ = preu_rad_latency(A, M, D);
   localparam LREQ_STAGE  /*verilator public*/ = RAD_LATENCY - A - 1;
   localparam LAST = preu_max(UPD_LATENCY, RAD_LATENCY);
@@ -88,11 +90,11 @@ module pree_preu #(
   localparam S_ADD3 = A + Q;                // q ready
   localparam S_ADD4 = 2 * A + Q;
   localparam S_D2   = 3 * A + Q;            // d2 ready
-  localparam S_DIV  = STABLE ? U2fStages : A;
+  localparam S_DIV  = STABLE ? U : A;
   localparam S_MUL9 = S_DIV + D;            // g / e ready
   localparam S_HI   = STABLE ? S_D2 : preu_taun_feed(A, M, D);
   localparam CMP_S  = preu_cmp_stage(Datapath, A, M, Q);
-  localparam S_WACC = UPD_LATENCY - WaccStages;
+  localparam S_WACC = UPD_LATENCY - W;
   localparam R_DIV  = 2 * M;
   localparam R_HI   = 2 * M + D;
   localparam R_ADD  = LREQ_STAGE + 1;      // l_i arrives
@@ -349,7 +351,7 @@ module pree_preu #(
       localparam BW = S_WACC * CW;                      // the accumulators' stage
 
       // I2F: kf = binary32(k + 1) (update, stage 0)
-      pree_u64_to_f32 #(.Stages(U2fStages)) u_i2f (
+      pree_u64_to_f32 #(.Stages(U)) u_i2f (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & upd), .a_i(kn),
         .valid_o(i2f_v), .y_o(kf_y));
 
@@ -366,12 +368,12 @@ module pree_preu #(
       // WACC0..2: T'_c = T_c + t_c; WACC3: w' = w + p (update)
       genvar g;
       for (g = 0; g < 3; g = g + 1) begin : g_wacc
-        pree_wacc #(.Stages(WaccStages)) u_wacc (
+        pree_wacc #(.Stages(W)) u_wacc (
           .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_WACC] & upd),
           .a_i(st_v[BW + F_T + 64*g +: 64]), .t_i(st_v[BW + F_TT + 32*g +: 32]),
           .valid_o(wacc_v[g]), .y_o(Tn_y[64*g +: 64]));
       end
-      pree_wacc #(.Stages(WaccStages)) u_wacc3 (
+      pree_wacc #(.Stages(W)) u_wacc3 (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_WACC] & upd),
         .a_i(st_v[BW + F_W +: 64]), .t_i(st_v[BW + F_P +: 32]), .valid_o(wacc3_v), .y_o(wn_y));
 
@@ -398,7 +400,7 @@ module pree_preu #(
 
 `ifdef PREE_ASSERT
       always @(posedge clk_i) begin
-        if (i2f_v != (vs[U2fStages] & upd) || wacc_v != {3{vs[UPD_LATENCY] & upd}} ||
+        if (i2f_v != (vs[U] & upd) || wacc_v != {3{vs[UPD_LATENCY] & upd}} ||
             wacc3_v != (vs[UPD_LATENCY] & upd))
           $fatal(1, "pree_preu: a stable-datapath unit's valid_o is out of step with the stage plan");
       end
