@@ -20,13 +20,16 @@ ifeq ($(WERROR),1)
 WARN    += -Werror
 endif
 OPT     ?= -O2
+# The engine's folders (model/*/: docs in the README's layout table); every target includes them all.
+MODEL_DIRS := $(sort $(dir $(wildcard model/*/*.h)))
+MODEL_INC  := $(patsubst %/,-I%,$(MODEL_DIRS))
 SANFLAGS :=
 ifdef SANITIZER
 SANFLAGS := -fsanitize=$(SANITIZER) -fno-omit-frame-pointer
 OPT      := -O1
 endif
-CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
-CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) -Imodel
+CFLAGS   := -std=c11 -D_GNU_SOURCE $(OPT) -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -fopenmp -MMD -MP $(SANFLAGS) $(MODEL_INC)
+CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS) $(MODEL_INC)
 LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 

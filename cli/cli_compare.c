@@ -1,8 +1,10 @@
 /* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--json]`: print SSIM, SNR, PSNR,
  * RMSE and the maximum absolute difference of B against the reference A. */
 #include "cli.h"
+#include "cli_options.h"
 #include "compare.h"
 #include "image.h"
+#include "json_file.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -29,24 +31,11 @@ static void usage(FILE *f)
         "2 usage error. See docs/compare.md for the exact definitions.\n");
 }
 
-/* A figure as text: "inf"/"-inf" for infinities, else 10 significant digits for people and
- * 17 (enough to round-trip a double) in JSON. */
-static void fmt_num(char *buf, size_t len, double v, int json)
+/* A figure as text for people: "inf"/"-inf" for infinities, else 10 significant digits. */
+static void fmt_num(char *buf, size_t len, double v)
 {
-    if (isinf(v)) snprintf(buf, len, json ? "\"%s\"" : "%s", v > 0 ? "inf" : "-inf");
-    else snprintf(buf, len, json ? "%.17g" : "%.10g", v);
-}
-
-static void json_string(const char *s)
-{
-    putchar('"');
-    for (; *s; s++) {
-        unsigned char ch = (unsigned char)*s;
-        if (ch == '"' || ch == '\\') printf("\\%c", ch);
-        else if (ch < 0x20) printf("\\u%04x", ch);
-        else putchar(ch);
-    }
-    putchar('"');
+    if (isinf(v)) snprintf(buf, len, "%s", v > 0 ? "inf" : "-inf");
+    else snprintf(buf, len, "%.10g", v);
 }
 
 /* Write the --diff image: a heat map for .png/.ppm, linear |a - b| for .exr. */
@@ -73,35 +62,35 @@ static int write_diff(const char *path, const pree_image_t *a, const pree_image_
     return rc;
 }
 
+enum { OPT_DIFF = CLI_OWN, OPT_JSON };
+
+static const struct option compare_longopts[] = {
+    {"help", no_argument, NULL, CLI_HELP},
+    {"diff", required_argument, NULL, OPT_DIFF},
+    {"json", no_argument, NULL, OPT_JSON},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_compare(int argc, char **argv)
 {
-    const char *files[2] = {NULL, NULL}, *diff = NULL;
-    int nfiles = 0, json = 0;
-    for (int i = 1; i < argc; i++) {
-        const char *arg = argv[i];
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { usage(stdout); return 0; }
-        if (!strcmp(arg, "--json")) { json = 1; continue; }
-        if (!strcmp(arg, "--diff") || !strncmp(arg, "--diff=", 7)) {
-            if (arg[6] == '=') diff = arg + 7;
-            else if (i + 1 < argc) diff = argv[++i];
-            else { fprintf(stderr, "pree compare: --diff: needs an output file name\n"); return 2; }
-            if (!*diff) { fprintf(stderr, "pree compare: --diff: empty output file name\n"); return 2; }
-            continue;
+    const char *diff = NULL;
+    int json = 0;
+    cli_args_t o;
+    cli_begin(&o, argc, argv, "compare", compare_longopts, NULL, 0);
+    for (int id; (id = cli_next(&o)) != 0;) {
+        if (id < 0) return 2;
+        if (id == CLI_HELP) { usage(stdout); return 0; }
+        if (id == OPT_JSON) json = 1;
+        if (id == OPT_DIFF) {
+            diff = o.val;
+            if (!*diff) return cli_error(&o, "--diff: empty output file name");
         }
-        if (arg[0] == '-' && arg[1] != '\0') {
-            fprintf(stderr, "pree compare: unknown option '%s' (try 'pree compare --help')\n", arg);
-            return 2;
-        }
-        if (nfiles == 2) {
-            fprintf(stderr, "pree compare: too many images: '%s' (give exactly two)\n", arg);
-            return 2;
-        }
-        files[nfiles++] = arg;
     }
-    if (nfiles != 2) {
-        fprintf(stderr, "pree compare: needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])\n");
-        return 2;
-    }
+    int nfiles;
+    char **files = cli_operands(&o, &nfiles);
+    if (nfiles > 2) return cli_error(&o, "too many images: '%s' (give exactly two)", files[2]);
+    if (nfiles != 2)
+        return cli_error(&o, "needs two images (usage: pree compare IMAGE_A IMAGE_B [--diff OUT] [--json])");
 
     char err[1024], errs[2][1024];
     pree_image_t img[2] = {{0}, {0}};
@@ -130,20 +119,19 @@ int pree_cmd_compare(int argc, char **argv)
     const double vals[] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs};
     char num[64];
     if (json) {
-        printf("{\"image_a\": ");
-        json_string(files[0]);
-        printf(", \"image_b\": ");
-        json_string(files[1]);
-        printf(", \"width\": %d, \"height\": %d", a.width, a.height);
-        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
-            fmt_num(num, sizeof num, vals[k], 1);
-            printf(", \"%s\": %s", keys[k], num);
-        }
-        printf("}\n");
+        json_t *fig = json_object();
+        json_set_str(fig, "image_a", files[0]);
+        json_set_str(fig, "image_b", files[1]);
+        json_set_u64(fig, "width", (uint64_t)a.width);
+        json_set_u64(fig, "height", (uint64_t)a.height);
+        for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++)   /* JSON has no infinity */
+            json_object_set_new(fig, keys[k], isinf(vals[k]) ? json_string(vals[k] > 0 ? "inf" : "-inf")
+                                                           : json_real(vals[k]));
+        if (json_file_print(stdout, fig)) { fprintf(stderr, "pree compare: cannot write the figures\n"); goto done; }
     } else {
         printf("width %d\nheight %d\n", a.width, a.height);
         for (size_t k = 0; k < sizeof keys / sizeof keys[0]; k++) {
-            fmt_num(num, sizeof num, vals[k], 0);
+            fmt_num(num, sizeof num, vals[k]);
             printf("%s %s\n", keys[k], num);
         }
     }

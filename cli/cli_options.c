@@ -1,4 +1,4 @@
-/* cli_options.c: strict command-line value parsing. */
+/* cli_options.c: option scanning (getopt_long) and strict value parsing. */
 #include <errno.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -6,6 +6,70 @@
 #include <string.h>
 #include <strings.h>
 #include "cli_options.h"
+
+void cli_begin(cli_args_t *a, int argc, char **argv, const char *cmd, const struct option *longopts,
+               render_options_t *render, int min_size)
+{
+    *a = (cli_args_t){.argc = argc, .argv = argv, .cmd = cmd, .longopts = longopts, .render = render,
+                      .min_size = min_size};
+    optind = 0;   /* glibc: full re-initialisation of the scan */
+    opterr = 0;   /* the messages are ours */
+}
+
+/* One getopt_long step: the option's id, 0 at the end, -1 on a scanning error (printed). */
+static int cli_scan(cli_args_t *a)
+{
+    int idx = -1;
+    /* GNU order: operands may come between options. ":" makes a missing value ':' rather
+     * than '?'. -h is the only short option. */
+    int c = getopt_long(a->argc, a->argv, ":h", a->longopts, &idx);
+    if (c == -1) return 0;
+    const char *arg = a->argv[optind - 1];
+    a->val = optarg;
+    if (idx >= 0) snprintf(a->name, sizeof a->name, "--%s", a->longopts[idx].name);
+    else snprintf(a->name, sizeof a->name, "%s", arg);
+    if (c == ':') {
+        snprintf(a->name, sizeof a->name, "%s", arg);
+        cli_error(a, "%s needs a value", a->name);
+        return -1;
+    }
+    if (c == '?') {
+        const char *eq = strchr(arg, '=');
+        if (optopt != 0 && eq && !strncmp(arg, "--", 2))   /* glibc: optopt is the flag's id */
+            cli_error(a, "option '%.*s' takes no value (see 'pree %s --help')", (int)(eq - arg), arg, a->cmd);
+        else
+            cli_error(a, "unknown option '%s' (see 'pree %s --help')", arg, a->cmd);
+        return -1;
+    }
+    return c;
+}
+
+int cli_next(cli_args_t *a)
+{
+    for (;;) {
+        int id = cli_scan(a);
+        if (id <= 0 || !a->render || id == CLI_HELP) return id;
+        int r = cli_render_option(a, id, a->render, a->min_size);
+        if (r == 1) return id;
+        if (r != 0) return -1;
+    }
+}
+
+char **cli_operands(const cli_args_t *a, int *n)
+{
+    *n = a->argc - optind;
+    return a->argv + optind;
+}
+
+const char *cli_scene(cli_args_t *a)
+{
+    int n;
+    char **ops = cli_operands(a, &n);
+    if (n == 1) return ops[0];
+    if (n == 0) cli_error(a, "no scene given (usage: pree %s SCENE [options])", a->cmd);
+    else cli_error(a, "more than one scene given ('%s' and '%s')", ops[0], ops[1]);
+    return NULL;
+}
 
 int cli_error(cli_args_t *a, const char *fmt, ...)
 {
@@ -18,90 +82,88 @@ int cli_error(cli_args_t *a, const char *fmt, ...)
     return 2;
 }
 
-const char *cli_value(cli_args_t *a, const char *opt)
+int cli_int(cli_args_t *a, long long lo, long long hi, long long *out)
 {
-    if (a->i >= a->argc) { cli_error(a, "%s needs a value", opt); return NULL; }
-    return a->argv[a->i++];
-}
-
-int cli_int(cli_args_t *a, const char *opt, long long lo, long long hi, long long *out)
-{
-    const char *s = cli_value(a, opt);
-    if (!s) return 2;
+    const char *s = a->val;
     char *end;
     errno = 0;
     long long v = strtoll(s, &end, 10);
-    if (end == s || *end != '\0' || errno == ERANGE)
-        return cli_error(a, "%s: '%s' is not an integer", opt, s);
-    if (v < lo || v > hi) return cli_error(a, "%s: %lld is out of range [%lld, %lld]", opt, v, lo, hi);
+    if (end == s || *end != '\0')
+        return cli_error(a, "%s: '%s' is not an integer", a->name, s);
+    if (errno == ERANGE || v < lo || v > hi)
+        return cli_error(a, "%s: %s is out of range [%lld, %lld]", a->name, s, lo, hi);
     *out = v;
     return 0;
 }
 
-int cli_real(cli_args_t *a, const char *opt, double lo, int lo_open, double hi, double *out)
+int cli_real(cli_args_t *a, double lo, int lo_open, double hi, double *out)
 {
-    const char *s = cli_value(a, opt);
-    if (!s) return 2;
+    const char *s = a->val;
     char *end;
     errno = 0;
     double v = strtod(s, &end);
     if (end == s || *end != '\0' || errno == ERANGE || v != v)
-        return cli_error(a, "%s: '%s' is not a number", opt, s);
+        return cli_error(a, "%s: '%s' is not a number", a->name, s);
     if ((lo_open ? !(v > lo) : !(v >= lo)) || !(v <= hi))
-        return cli_error(a, "%s: %s is out of range %s%g, %g]", opt, s, lo_open ? "(" : "[", lo, hi);
+        return cli_error(a, "%s: %s is out of range %s%g, %g]", a->name, s, lo_open ? "(" : "[", lo, hi);
     *out = v;
     return 0;
 }
 
-/* The value of a keyword option: the index of it in names[0..n), or -1 (error printed). */
-static int cli_keyword(cli_args_t *a, const char *opt, const char *const *names, int n, const char *list)
+int cli_keyword(cli_args_t *a, const char *const *names, int n)
 {
-    const char *s = cli_value(a, opt);
-    if (!s) return -1;
     for (int k = 0; k < n; k++)
-        if (!strcmp(s, names[k])) return k;
-    cli_error(a, "%s: '%s' is not %s", opt, s, list);
+        if (!strcmp(a->val, names[k])) return k;
+    char list[256] = "";
+    for (int k = 0; k < n; k++) {
+        size_t len = strlen(list);
+        snprintf(list + len, sizeof list - len, "%s%s", k == 0 ? "" : k == n - 1 ? " or " : ", ", names[k]);
+    }
+    cli_error(a, "%s: '%s' is not %s", a->name, a->val, list);
     return -1;
 }
 
-int cli_render_option(cli_args_t *a, const char *arg, render_options_t *opt, int min_size)
+int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size)
 {
     long long v;
-    if (!strcmp(arg, "--alpha")) return cli_real(a, arg, 0, 1, 1, &opt->alpha);
-    if (!strcmp(arg, "--datapath")) {
+    int k;
+    switch (id) {
+    case CLI_ALPHA: return cli_real(a, 0, 1, 1, &opt->alpha);
+    case CLI_DATAPATH: {
         static const char *const names[] = {"paper", "stable"};
-        int k = cli_keyword(a, arg, names, 2, "paper or stable");
-        if (k < 0) return 2;
+        if ((k = cli_keyword(a, names, 2)) < 0) return 2;
         opt->datapath = k ? DATAPATH_STABLE : DATAPATH_PAPER;
         return 0;
     }
-    if (!strcmp(arg, "--grid")) {
+    case CLI_GRID: {
         static const char *const names[] = {"cells", "smallppm", "brute"};
         static const grid_kind_t kinds[] = {GRID_CELLS, GRID_SMALLPPM, GRID_BRUTE};
-        int k = cli_keyword(a, arg, names, 3, "cells, smallppm or brute");
-        if (k < 0) return 2;
+        if ((k = cli_keyword(a, names, 3)) < 0) return 2;
         opt->grid = kinds[k];
         return 0;
     }
-    if (!strcmp(arg, "--width") || !strcmp(arg, "--height")) {
-        if (cli_int(a, arg, min_size, 16384, &v)) return 2;
-        *(arg[2] == 'w' ? &opt->width : &opt->height) = (int)v;
+    case CLI_WIDTH:
+    case CLI_HEIGHT:
+        if (cli_int(a, min_size, 16384, &v)) return 2;
+        *(id == CLI_WIDTH ? &opt->width : &opt->height) = (int)v;
         return 0;
-    }
-    if (!strcmp(arg, "--photons")) {
-        if (cli_int(a, arg, 1, 10000000000LL, &v)) return 2;
+    case CLI_PHOTONS:
+        if (cli_int(a, 1, 10000000000LL, &v)) return 2;
         opt->photons = (uint64_t)v;
         return 0;
-    }
-    if (!strcmp(arg, "--preu")) {
-        if (cli_int(a, arg, 4, 16, &v)) return 2;
+    case CLI_PREU:
+        if (cli_int(a, 4, 16, &v)) return 2;
         if (v != 4 && v != 8 && v != 16) return cli_error(a, "--preu: %lld is not 4, 8 or 16", v);
         opt->preu = (int)v;
         return 0;
+    case CLI_THREADS:
+        if (cli_int(a, 1, 1024, &v)) return 2;
+        opt->threads = (int)v;
+        return 0;
+    case CLI_NO_SKIP: opt->no_skip = 1; return 0;
+    case CLI_QUIET: opt->progress = 0; return 0;
+    default: return 1;
     }
-    if (!strcmp(arg, "--no-skip")) { opt->no_skip = 1; return 0; }
-    if (!strcmp(arg, "--quiet")) { opt->progress = 0; return 0; }
-    return 1;
 }
 
 int cli_image_ext(cli_args_t *a, const char *path)

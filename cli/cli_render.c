@@ -44,49 +44,59 @@ static void render_usage(FILE *f)
         "  --quiet                no progress on stderr\n");
 }
 
+enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS };
+
+static const struct option render_longopts[] = {
+    CLI_RENDER_LONGOPTS,
+    {"photon-offset", required_argument, NULL, OPT_PHOTON_OFFSET},
+    {"precision", required_argument, NULL, OPT_PRECISION},
+    {"scan", required_argument, NULL, OPT_SCAN},
+    {"out", required_argument, NULL, OPT_OUT},
+    {"stats", required_argument, NULL, OPT_STATS},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_render(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    const char *scene_path = NULL, *stats_path = NULL;
+    const char *scene_path, *stats_path = NULL;
     const char *outs[MAX_OUTPUTS];
     int nout = 0;
     char err[1024];
-    cli_args_t a = {argc, argv, 1, "render"};
-    while (a.i < argc) {
-        const char *arg = argv[a.i++];
+    cli_args_t a;
+    cli_begin(&a, argc, argv, "render", render_longopts, &opt, 1);
+    for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
-        int r = cli_render_option(&a, arg, &opt, 1);
-        if (r != 1) { if (r) return r; continue; }
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { render_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--photon-offset")) {
-            if (cli_int(&a, arg, 0, 10000000000LL, &v)) return 2;
+        int k;
+        if (id < 0) return 2;
+        switch (id) {
+        case CLI_HELP: render_usage(stdout); return 0;
+        case OPT_PHOTON_OFFSET:
+            if (cli_int(&a, 0, 10000000000LL, &v)) return 2;
             opt.photon_offset = (uint64_t)v;
-        } else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; opt.threads = (int)v; }
-        else if (!strcmp(arg, "--precision")) {
-            const char *s = cli_value(&a, arg);
-            if (!s) return 2;
-            if (!strcmp(s, "double")) opt.precision = PRECISION_DOUBLE;
-            else if (!strcmp(s, "fp32")) opt.precision = PRECISION_FP32;
-            else return cli_error(&a, "--precision: '%s' is not double or fp32", s);
-        } else if (!strcmp(arg, "--scan")) {
-            const char *s = cli_value(&a, arg);
-            if (!s) return 2;
-            if (!strcmp(s, "bucket")) opt.scan = SCAN_BUCKET;
-            else if (!strcmp(s, "photon")) opt.scan = SCAN_PHOTON;
-            else return cli_error(&a, "--scan: '%s' is not bucket or photon", s);
-        } else if (!strcmp(arg, "--out")) {
-            const char *s = cli_value(&a, arg);
-            if (!s) return 2;
+            break;
+        case OPT_PRECISION: {
+            static const char *const names[] = {"double", "fp32"};
+            if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
+            opt.precision = k ? PRECISION_FP32 : PRECISION_DOUBLE;
+            break;
+        }
+        case OPT_SCAN: {
+            static const char *const names[] = {"bucket", "photon"};
+            if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
+            opt.scan = k ? SCAN_PHOTON : SCAN_BUCKET;
+            break;
+        }
+        case OPT_OUT:
             if (nout == MAX_OUTPUTS) return cli_error(&a, "--out: at most %d outputs", MAX_OUTPUTS);
-            if (cli_image_ext(&a, s)) return 2;
-            outs[nout++] = s;
-        } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
-        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree render --help')", arg);
-        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
-        else scene_path = arg;
+            if (cli_image_ext(&a, a.val)) return 2;
+            outs[nout++] = a.val;
+            break;
+        case OPT_STATS: stats_path = a.val; break;
+        }
     }
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree render SCENE [options])");
+    if (!(scene_path = cli_scene(&a))) return 2;
     if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)

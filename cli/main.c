@@ -24,16 +24,18 @@ static const command_t commands[] = {
 };
 
 /* The co-simulation program for the configuration the arguments ask for, next to this one.
- * The last --preu and --datapath win, as in the program's own parsing; a bad value is left
- * for that program to report. */
+ * The last --preu and --datapath (either form: --preu 8, --preu=8) win, as in the program's
+ * own parsing; a bad value is left for that program to report. */
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper", *fast = "";
     for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--")) break;
         if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
-        else if (i + 1 == argc) break;
-        else if (!strcmp(argv[i], "--preu")) preu = argv[i + 1];
-        else if (!strcmp(argv[i], "--datapath")) dp = argv[i + 1];
+        else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
+        else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
+        else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
+        else if (i + 1 < argc && !strcmp(argv[i], "--datapath")) dp = argv[++i];
     }
     if (strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16")) preu = "4";
     const char d = strcmp(dp, "stable") ? 'p' : 's';

@@ -15,10 +15,10 @@
 #include "cli_options.h"
 #include "compare.h"
 #include "cosim_drv.h"
+#include "cosim_report.h"
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
-#include "stats_json.h"
 
 typedef struct {
     cosim_drv_t *drv;
@@ -45,7 +45,7 @@ static void cosim_usage(FILE *f)
     fprintf(f,
         "usage: pree cosim SCENE [options]\n"
         "  --width W --height H --photons N --grid G --no-skip --threads T   as for 'pree render'\n"
-        "                         (--threads: the double reference render only)\n"
+        "                         (--threads: the eye pass and the double reference render)\n"
         "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
@@ -125,43 +125,53 @@ static void to_float(const double *rgb, size_t n, float *out)
     for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
 }
 
+enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
+       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_PIPE_FAST };
+
+static const struct option cosim_longopts[] = {
+    CLI_RENDER_LONGOPTS,
+    {"gap", required_argument, NULL, OPT_GAP},
+    {"no-reference", no_argument, NULL, OPT_NO_REFERENCE},
+    {"no-reorder", no_argument, NULL, OPT_NO_REORDER},
+    {"no-schedule", no_argument, NULL, OPT_NO_SCHEDULE},
+    {"window", required_argument, NULL, OPT_WINDOW},
+    {"trace", required_argument, NULL, OPT_TRACE},
+    {"out", required_argument, NULL, OPT_OUT},
+    {"stats", required_argument, NULL, OPT_STATS},
+    {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
+    {NULL, 0, NULL, 0}
+};
+
 int pree_cmd_cosim(int argc, char **argv)
 {
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
-    const char *scene_path = NULL, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, threads = 0, pipefast = 0;
+    const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, pipefast = 0;
     double gap = 0;
     char err[1024];
-    cli_args_t a = {argc, argv, 1, "cosim"};
-    while (a.i < argc) {
-        const char *arg = argv[a.i++];
+    cli_args_t a;
+    cli_begin(&a, argc, argv, "cosim", cosim_longopts, &opt, 11);
+    for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
-        int r = cli_render_option(&a, arg, &opt, 11);
-        if (r != 1) { if (r) return r; continue; }
-        if (!strcmp(arg, "--help") || !strcmp(arg, "-h")) { cosim_usage(stdout); return 0; }
-        else if (!strcmp(arg, "--threads")) { if (cli_int(&a, arg, 1, 1024, &v)) return 2; threads = (int)v; }
-        else if (!strcmp(arg, "--gap")) {
-            const char *s = cli_value(&a, arg);
-            char *end;
-            if (!s) return 2;
-            gap = strtod(s, &end);
-            if (*end || !(gap >= 0 && gap < 1)) return cli_error(&a, "--gap: '%s' is not in [0, 1)", s);
-        } else if (!strcmp(arg, "--no-reference")) reference = 0;
-        else if (!strcmp(arg, "--pipe-fast")) pipefast = 1;
-        else if (!strcmp(arg, "--no-reorder")) reorder = 0;
-        else if (!strcmp(arg, "--no-schedule")) schedule = 0;
-        else if (!strcmp(arg, "--window")) { if (cli_int(&a, arg, 1, 4096, &v)) return 2; window = (int)v; }
-        else if (!strcmp(arg, "--trace")) { if (!(trace_path = cli_value(&a, arg))) return 2; }
-        else if (!strcmp(arg, "--out")) {
-            if (!(out_path = cli_value(&a, arg))) return 2;
-            if (cli_image_ext(&a, out_path)) return 2;
-        } else if (!strcmp(arg, "--stats")) { if (!(stats_path = cli_value(&a, arg))) return 2; }
-        else if (arg[0] == '-' && arg[1]) return cli_error(&a, "unknown option '%s' (see 'pree cosim --help')", arg);
-        else if (scene_path) return cli_error(&a, "more than one scene given ('%s' and '%s')", scene_path, arg);
-        else scene_path = arg;
+        if (id < 0) return 2;
+        switch (id) {
+        case CLI_HELP: cosim_usage(stdout); return 0;
+        case OPT_GAP:
+            if (cli_real(&a, 0, 0, 1, &gap)) return 2;
+            if (gap == 1) return cli_error(&a, "--gap: '%s' is not in [0, 1)", a.val);
+            break;
+        case OPT_NO_REFERENCE: reference = 0; break;
+        case OPT_NO_REORDER: reorder = 0; break;
+        case OPT_NO_SCHEDULE: schedule = 0; break;
+        case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; window = (int)v; break;
+        case OPT_TRACE: trace_path = a.val; break;
+        case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
+        case OPT_STATS: stats_path = a.val; break;
+        case OPT_PIPE_FAST: pipefast = 1; break;
+        }
     }
-    if (!scene_path) return cli_error(&a, "no scene given (usage: pree cosim SCENE [options])");
+    if (!(scene_path = cli_scene(&a))) return 2;
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -172,7 +182,7 @@ int pree_cmd_cosim(int argc, char **argv)
     const int dp = opt.datapath == DATAPATH_STABLE;
     cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
     if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
-    /* The update rule's run-time constants, as the render derives them (model/render.c). */
+    /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
     cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
     cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
@@ -264,7 +274,7 @@ int pree_cmd_cosim(int argc, char **argv)
     int have_m = 0;
     if (reference) {
         render_options_t ropt = {.width = opt.width, .height = opt.height, .photons = opt.photons,
-                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = threads,
+                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = opt.threads,
                                  .no_skip = opt.no_skip, .preu = opt.preu};
         if (render_run(&scene, &ropt, &ref, err, sizeof err)) { fprintf(stderr, "pree cosim: reference: %s\n", err); goto out; }
         pree_image_t ia = {0}, ib = {0};
@@ -283,73 +293,33 @@ int pree_cmd_cosim(int argc, char **argv)
     }
 
     /* Figures. */
-    const int np = opt.preu;
-    uint64_t ops_upd = 0, ops_all = 0;
-    for (int l = 0; l < np; l++) { ops_upd += cnt_upd[CNT_OPS0 + l]; ops_all += cnt_all[CNT_OPS0 + l]; }
-    const uint64_t cyc_upd = cnt_upd[CNT_CYC_UPD], cyc_rad = cnt_all[CNT_CYC_RAD];
-    const uint64_t ops_rad = ops_all - ops_upd;
-    const double util_upd = cyc_upd ? (double)ops_upd / ((double)np * (double)cyc_upd) : 0;
-    const double util_rad = cyc_rad ? (double)ops_rad / ((double)np * (double)cyc_rad) : 0;
-    const double sim_ops_s = cpu_update_rtl > 0 ? (double)ops_upd / cpu_update_rtl : 0;
-    const char *causes[] = {"hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a", "starved"};
-    int ok = hp_diff == 0 && img_diff == 0 && ops_upd == cosim_drv_ops_sent(ctx.drv) && ops_rad == res.hp.n;
-    if (ops_upd != cosim_drv_ops_sent(ctx.drv))
+    cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
+                          .preu = opt.preu, .reorder = reorder, .window = window, .pipe_fast = pipefast,
+                          .update_window = cosim_rtl_update_window(rtl),
+                          .photons_emitted = res.stats.photons_emitted,
+                          .alpha = (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha), .gap = gap,
+                          .hit_points = res.hp.n, .photons_sent = ctx.photons_sent, .photons_empty = ctx.photons_empty,
+                          .hp_diff = hp_diff, .hp_diff_points = hp_diff_points, .img_diff = img_diff,
+                          .ops_sent = cosim_drv_ops_sent(ctx.drv), .have_metrics = have_m, .m = m,
+                          .sec_engine = sec_engine, .sec_update_rtl = sec_update_rtl,
+                          .cpu_update_rtl = cpu_update_rtl, .sec_rad_rtl = sec_rad_rtl, .cpu_process = cpu_now()};
+    rep.have_sched = cosim_drv_sched_stats(ctx.drv, &rep.sched) == 0;
+    memcpy(rep.cnt_upd, cnt_upd, sizeof cnt_upd);
+    memcpy(rep.cnt_all, cnt_all, sizeof cnt_all);
+    cosim_report_figures(&rep);
+    if (rep.ops_upd != rep.ops_sent)
         fprintf(stderr, "pree cosim: %llu update operations sent, %llu counted in the RTL\n",
-                (unsigned long long)cosim_drv_ops_sent(ctx.drv), (unsigned long long)ops_upd);
-    if (stats_path) {
-        FILE *f = fopen(stats_path, "w");
-        if (!f) { fprintf(stderr, "pree cosim: %s: cannot write\n", stats_path); goto out; }
-        fprintf(f, "{\n  \"scene\": ");
-        stats_json_string(f, scene_path);
-        fprintf(f, ",\n  \"width\": %d,\n  \"height\": %d,\n  \"photons_emitted\": %llu,\n",
-                opt.width, opt.height, (unsigned long long)res.stats.photons_emitted);
-        fprintf(f, "  \"datapath\": \"%s\",\n  \"alpha\": %.9g,\n", dp ? "stable" : "paper",
-                (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha));
-        fprintf(f, "  \"pipe_fast\": %d,\n  \"update_window\": %d,\n", pipefast, cosim_rtl_update_window(rtl));
-        fprintf(f, "  \"preu\": %d,\n  \"reorder\": %s,\n  \"input_gap\": %g,\n  \"hit_points\": %zu,\n",
-                np, reorder ? "true" : "false", gap, res.hp.n);
-        cosim_sched_stats_t ss;
-        if (cosim_drv_sched_stats(ctx.drv, &ss) == 0) {
-            fprintf(f, "  \"schedule\": {\"window\": %d, \"photons\": %llu, \"photons_moved\": %llu,\n", window,
-                    (unsigned long long)ss.photons, (unsigned long long)ss.moved);
-            fprintf(f, "    \"model_cycles\": %llu, \"model_short_cycles_by_cause\": {", (unsigned long long)ss.cnt[CNT_CYC_UPD]);
-            for (int k = 0; k < 5; k++) fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)ss.cnt[CNT_HAZ + k]);
-            fprintf(f, "}},\n");
-        } else {
-            fprintf(f, "  \"schedule\": null,\n");
-        }
-        fprintf(f, "  \"photon_hits_streamed\": %llu,\n  \"photon_hits_without_operations\": %llu,\n",
-                ctx.photons_sent, ctx.photons_empty);
-        fprintf(f, "  \"hp_words_differing\": %llu,\n  \"hp_points_differing\": %llu,\n  \"image_words_differing\": %llu,\n",
-                hp_diff, hp_diff_points, img_diff);
-        if (have_m)
-            fprintf(f, "  \"ssim_vs_double\": %.9f,\n  \"snr_db_vs_double\": %.4f,\n  \"psnr_db_vs_double\": %.4f,\n",
-                    m.ssim, m.snr_db, m.psnr_db);
-        fprintf(f, "  \"update\": {\"cycles\": %llu, \"operations\": %llu, \"ops_per_cycle\": %.6f, \"preu_utilization\": %.6f,\n",
-                (unsigned long long)cyc_upd, (unsigned long long)ops_upd, cyc_upd ? (double)ops_upd / (double)cyc_upd : 0, util_upd);
-        fprintf(f, "    \"ops_per_preu\": [");
-        for (int l = 0; l < np; l++) fprintf(f, "%s%llu", l ? ", " : "", (unsigned long long)cnt_upd[CNT_OPS0 + l]);
-        fprintf(f, "],\n    \"short_cycles_by_cause\": {");
-        for (int k = 0; k < 5; k++) fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)cnt_upd[CNT_HAZ + k]);
-        fprintf(f, "}},\n");
-        fprintf(f, "  \"radiance\": {\"cycles\": %llu, \"operations\": %llu, \"preu_utilization\": %.6f, \"short_cycles_by_cause\": {",
-                (unsigned long long)cyc_rad, (unsigned long long)ops_rad, util_rad);
-        for (int k = 0; k < 5; k++)
-            fprintf(f, "%s\"%s\": %llu", k ? ", " : "", causes[k], (unsigned long long)(cnt_all[CNT_HAZ + k] - cnt_upd[CNT_HAZ + k]));
-        fprintf(f, "}},\n");
-        fprintf(f, "  \"seconds\": {\"engine_with_rtl_wall\": %.3f, \"rtl_update_wall\": %.3f, \"rtl_update_cpu\": %.3f, \"rtl_radiance_wall\": %.3f, \"process_cpu\": %.3f},\n",
-                sec_engine, sec_update_rtl, cpu_update_rtl, sec_rad_rtl, cpu_now());
-        fprintf(f, "  \"simulated_ops_per_cpu_second\": %.0f,\n  \"simulated_cycles_per_cpu_second\": %.0f,\n",
-                sim_ops_s, cpu_update_rtl > 0 ? (double)cyc_upd / cpu_update_rtl : 0);
-        fprintf(f, "  \"pass\": %s\n}\n", ok ? "true" : "false");
-        if (fclose(f)) { fprintf(stderr, "pree cosim: %s: write failed\n", stats_path); goto out; }
+                (unsigned long long)rep.ops_sent, (unsigned long long)rep.ops_upd);
+    if (stats_path && cosim_report_write(stats_path, &rep, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
+        goto out;
     }
     if (opt.progress)
         fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
                 "differing words: hit points %llu, image %llu%s\n",
-                np, (unsigned long long)ops_upd, (unsigned long long)cyc_upd, 100 * util_upd, sim_ops_s,
-                hp_diff, img_diff, ok ? "" : " FAIL");
-    status = ok ? 0 : 1;
+                rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd,
+                rep.sim_ops_per_cpu_s, hp_diff, img_diff, rep.pass ? "" : " FAIL");
+    status = rep.pass ? 0 : 1;
 out:
     free(Lr);
     free(Lm);

@@ -56,7 +56,7 @@ COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
 HOST_DIR     := $(BUILD)/host
-HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
+HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
 COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mtag,$(m)))
@@ -88,7 +88,7 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench.
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP -Imodel -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)

@@ -47,8 +47,8 @@ FP32_FULL     ?= 10000000
 FP32_IV_QUICK ?= 20000
 FP32_IV_FULL  ?= 200000
 FP32_SEED     ?= 1
-FP32_CFLAGS   := -std=c11 -D_GNU_SOURCE -O2 $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel -Itb/fp32
-FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/fp32_ops.h model/wide_acc.h
+FP32_CFLAGS   := -std=c11 -D_GNU_SOURCE -O2 $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC) -Itb/fp32
+FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/pree/fp32_ops.h model/pree/wide_acc.h
 
 FP32_VL_BIN := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/vl_$(u)/fp32_bench_$(u))
 FP32_IV_SIM := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/tb_fp32_$(u).vvp)

@@ -1,6 +1,6 @@
 # PREU (rtl/pree_preu.v), both datapaths and both pipeline configurations (PREU_CFGS: 0 paper,
 # 1 stable, each with PipeFast 0; 0f, 1f the same with PipeFast 1, the deep plans): lint, Verilator bench
-# scoreboarded against the C model (model/preu_fp32.c, model/preu_stable.c), self-checking
+# scoreboarded against the C model (model/pree/preu_fp32.c, model/pree/preu_stable.c), self-checking
 # Icarus bench over a C-generated vector file, Yosys synthesis.
 #   make sim-preu        per configuration: Verilator C++ bench (PREU_N ops) + the Verilog bench over
 #                        PREU_IV_N vectors under Icarus and under Verilator --binary, both modes;
@@ -32,8 +32,8 @@ PREU_IV_N   ?= 4000
 PREU_SEED   ?= 1
 PREU_WAVE_DP ?= 0
 PREU_CHAIN_N ?= 10000000
-PREU_CFLAGS := -std=c11 -D_GNU_SOURCE -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel -Itb/preu
-PREU_HDRS   := tb/preu/preu_vec.h model/preu_state.h model/preu_fp32.h model/preu_stable.h model/wide_acc.h model/fp32_ops.h
+PREU_CFLAGS := -std=c11 -D_GNU_SOURCE -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC) -Itb/preu
+PREU_HDRS   := tb/preu/preu_vec.h $(addprefix model/pree/,preu_state.h preu_fp32.h preu_stable.h wide_acc.h fp32_ops.h)
 PREU_C_OBJ  := $(PREU_DIR)/preu_fp32.o $(PREU_DIR)/preu_stable.o $(PREU_DIR)/preu_vec.o
 preu_bench   = $(PREU_DIR)/vl_dp$(1)/preu_bench
 preu_hex     = $(PREU_DIR)/preu_vec_dp$(1)_$(PREU_IV_N)_$(PREU_SEED).hex
@@ -43,7 +43,7 @@ LINT_TARGETS  += lint-preu
 SIM_TARGETS   += sim-preu
 SYNTH_TARGETS += synth-preu
 
-$(PREU_DIR)/%.o: model/%.c $(PREU_HDRS) | $(DEPS_STAMP)
+$(PREU_DIR)/%.o: model/pree/%.c $(PREU_HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(PREU_CFLAGS) -c $< -o $@
 $(PREU_DIR)/%.o: tb/preu/%.c $(PREU_HDRS) | $(DEPS_STAMP)
@@ -71,7 +71,7 @@ define PREU_DP_RULES
 $(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(PREU_HDRS) $(PREU_C_OBJ) | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
- -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
+	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
 	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) -I$(CURDIR)/model -I$(CURDIR)/tb/preu" \
 	  $(PREU_SRCS) $(CURDIR)/tb/preu/preu_bench.cpp $(abspath $(PREU_C_OBJ)) >$(PREU_DIR)/vl-build-dp$(1).log 2>&1 \
 	  || { tail -30 $(PREU_DIR)/vl-build-dp$(1).log; exit 1; }

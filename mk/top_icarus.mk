@@ -13,7 +13,7 @@ TOPIV_DIR  := $(BUILD)/top_icarus
 TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
               rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 TOPIV_RTL_SUB := $(filter-out rtl/pree_top.v,$(TOPIV_RTL))
-TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) -Imodel
+TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC)
 TOPIV_IVERILOG := iverilog -g2005 -Wall -DPREE_ASSERT -Irtl -s top_tb
 
 # Configurations: pree_top parameters (bench side) and the matching vecgen geometry.
@@ -76,7 +76,7 @@ SIM_TARGETS  += sim-top-icarus
 .PHONY: sim-top-icarus sim-top-icarus-runs sim-top-icarus-mutants
 
 # The vector writer: the fp32 PREU model and the radiance order of libpree's objects.
-$(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c $(BUILD)/model/preu_fp32.o $(BUILD)/model/adiso_order.o
+$(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c $(BUILD)/model/pree/preu_fp32.o $(BUILD)/model/pree/adiso_order.o
 	@mkdir -p $(@D)
 	$(CC) $(TOPIV_CFLAGS) $^ -o $@ -lm
 

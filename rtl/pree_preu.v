@@ -4,7 +4,7 @@
 //
 //   Datapath 0, paper:  the paper's arithmetic. State {n, r2, tau b g r} (160 bits).
 //   Datapath 1, stable: the same estimator, held so that it stays accurate for any photon
-//                       count (model/preu_stable.h): state {k, w, T b g r} (320 bits) with an
+//                       count (model/pree/preu_stable.h): state {k, w, T b g r} (320 bits) with an
 //                       exact 64-bit count k, w = 1/r2 and T = PI tau / r2 in the 64-bit wide
 //                       format (pree_wacc), and kf = binary32(k + 1) (pree_u64_to_f32).
 //
@@ -17,7 +17,7 @@
 // Each unit's Stages may be overridden (AddStages .. WaccStages); the plan follows.
 //
 // The operation order, the operand order of every unit and the values are those of
-// docs/preu_datapath.md, which model/preu_fp32.c and model/preu_stable.c implement in C; the
+// docs/preu_datapath.md, which model/pree/preu_fp32.c and model/pree/preu_stable.c implement in C; the
 // two are bit-exact whatever the stage plan.
 //
 // Protocol: one operation may enter every cycle with valid_i (no back-pressure). Its result
@@ -27,7 +27,7 @@
 // stage LREQ_STAGE = RAD_LATENCY - (add's stages) - 1 ask for the pixel's running sum, which the caller drives on
 // l_i in the next cycle; l_o = l_i + (the hit point's radiance) comes out with valid_o.
 // Run-time constants: alpha_i (paper: N + alpha) and kappa_i (stable: fl(fl(1 - alpha) /
-// alpha), model/preu_stable.c preu_kappa); change them only while busy_o = 0.
+// alpha), model/pree/preu_stable.c preu_kappa); change them only while busy_o = 0.
 // Mode switch: the units serve different stages in the two modes, so mode_i may change only in
 // a cycle where busy_o = 0 (an operation of the new mode may enter in that cycle). With
 // PREE_ASSERT defined, a violation stops the simulation; so does a unit whose valid_o is out of
@@ -114,7 +114,7 @@ module pree_preu #(
     end
   endgenerate
 
-  // The binary32 view of a wide word (model/wide_acc.h wide_f32): truncation, a bit slice.
+  // The binary32 view of a wide word (model/pree/wide_acc.h wide_f32): truncation, a bit slice.
   /* verilator lint_off UNUSEDSIGNAL */
   function [31:0] wide_f32;
     input [63:0] a;       // the leading bit and the low 32 significand bits are dropped

@@ -38,7 +38,7 @@
 // issue, written RAD_LAT after): 3 with PipeFast 0 (9 and 12), 8 with PipeFast 1 (51 and 59).
 // ADISO-REC's pipeline depth is the PREU's radiance latency (12, or 59). Consequence: per hit point, updates happen in
 // photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
-// first), which model/adiso_order.c reproduces.
+// first), which model/pree/adiso_order.c reproduces.
 //
 // Memories (all pree_ram_sdp, one write and one read port each):
 //   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular

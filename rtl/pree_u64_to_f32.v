@@ -1,7 +1,7 @@
 // pree_u64_to_f32: an unsigned 64-bit integer rounded once to binary32, round to nearest even,
 // Stages pipeline stages (2 by default, the paper's; 5 with PipeFast = 1).
 //
-// Bit-exact with u64_to_f32() of model/wide_acc.h (the same as the C conversion (float)k):
+// Bit-exact with u64_to_f32() of model/pree/wide_acc.h (the same as the C conversion (float)k):
 // exact up to 2^24, 0 -> +0, never negative, never infinite (2^64 - 1 rounds to 2^64 =
 // 0x5F800000, far below the overflow threshold), no NaN.
 //

@@ -1,7 +1,7 @@
 // pree_wacc: the stable datapath's wide accumulator add, y = A + t, truncating, Stages pipeline
 // stages (2 by default, the paper's; 5 with PipeFast = 1).
 //
-// Bit-exact with wide_add() of model/wide_acc.h. A wide word (64 bits) is e = bits 63..56, an
+// Bit-exact with wide_add() of model/pree/wide_acc.h. A wide word (64 bits) is e = bits 63..56, an
 // 8-bit exponent biased as binary32's, and M = bits 55..0, a 56-bit significand with its leading
 // bit stored: value M * 2^(max(e, 1) - 182); e = 255 is +infinity (M = 0) or NaN (M != 0).
 // t is binary32. A binary32 significand {hidden, fraction} placed in M[55:32] has the same

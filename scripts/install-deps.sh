@@ -25,7 +25,7 @@ if [ "${1:-}" = --fpga ]; then
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind)
+      libassimp-dev libjansson-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -1,7 +1,7 @@
 /* top_bench.c: Verilator bench of pree_top (rtl/pree_top.v) against the C model, with
- * synthetic and adversarial traces. The expected hit-point state comes from model/preu_fp32.h
- * (--datapath 0) or model/preu_stable.h (--datapath 1) applied in photon order; the expected pixels from the same model in the radiance issue order
- * of model/adiso_order.h. Compares every word and prints the first mismatches.
+ * synthetic and adversarial traces. The expected hit-point state comes from model/pree/preu_fp32.h
+ * (--datapath 0) or model/pree/preu_stable.h (--datapath 1) applied in photon order; the expected pixels from the same model in the radiance issue order
+ * of model/pree/adiso_order.h. Compares every word and prints the first mismatches.
  *
  * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--pipe-fast] [--alpha A] [--scenario random|one|dense|mixed|abank]
  *                  [--photons N] [--hp N] [--gap P] [--no-reorder] [--seed S] [--trace FILE.fst]

@@ -1,8 +1,8 @@
 /* top_vecgen.c: writes the vector files of the Icarus bench of pree_top (tb/cosim/top_tb.v):
  * hit points to load, the photon stream with its index-table entries, and the expected hit-point
- * memory and pixel words. The expectations come from the fp32 PREU model (model/preu_fp32.h)
+ * memory and pixel words. The expectations come from the fp32 PREU model (model/pree/preu_fp32.h)
  * applied in photon order and, for the pixels, in the radiance issue order of
- * model/adiso_order.h, as tb/cosim/top_bench.c does for the Verilated top.
+ * model/pree/adiso_order.h, as tb/cosim/top_bench.c does for the Verilated top.
  *
  * usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario S] [--photons N]
  *                   [--hp N] [--seed S] [--place packed|random] OUT

@@ -1,6 +1,6 @@
 // fp32_bench.cpp: Verilator bench for one binary32 unit, checked bit for bit against
-// model/fp32_ops.h, or for the stable datapath's pree_wacc and pree_u64_to_f32 against
-// model/wide_acc.h (through fp32_gen.c).
+// model/pree/fp32_ops.h, or for the stable datapath's pree_wacc and pree_u64_to_f32 against
+// model/pree/wide_acc.h (through fp32_gen.c).
 //
 // Built once per unit configuration with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP|WACC|U2F> and the
 // matching Verilated model; a configuration other than the unit's default (-GStages=N,

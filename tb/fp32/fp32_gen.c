@@ -309,7 +309,7 @@ static void fam_cmp(list_t *l)
 
 /* ------------------------------------------------------------------ the stable datapath's units
  *
- * wacc: a is a wide accumulator word (model/wide_acc.h: e = bits 63..56, M = bits 55..0), b the
+ * wacc: a is a wide accumulator word (model/pree/wide_acc.h: e = bits 63..56, M = bits 55..0), b the
  * binary32 term t; the effective exponents max(e, 1) of both share one scale, so their
  * difference is the alignment shift. u2f: a is an unsigned 64-bit integer. */
 

@@ -2,8 +2,8 @@
  *
  * Shared by the Verilator benches (fp32_bench.cpp) and the Icarus vector writer
  * (fp32_vecgen.c), so both simulators see the same kinds of case. Expected results come from
- * model/fp32_ops.h (host IEEE arithmetic plus the explicit x86-64 SSE NaN rule) and, for the
- * stable datapath's two units, model/wide_acc.h:
+ * model/pree/fp32_ops.h (host IEEE arithmetic plus the explicit x86-64 SSE NaN rule) and, for the
+ * stable datapath's two units, model/pree/wide_acc.h:
  *   wacc  pree_wacc:        a = wide accumulator word (64 bits), b = binary32 term t,
  *                           y = wide_add(a, t) (64 bits)
  *   u2f   pree_u64_to_f32:  a = unsigned 64-bit integer, y = u64_to_f32(a) (binary32)

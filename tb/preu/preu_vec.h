@@ -1,5 +1,5 @@
 /* preu_vec.h: operation sequences for the PREU benches, with expected results from the C model,
- * for either datapath (0 paper: model/preu_fp32.c; 1 stable: model/preu_stable.c).
+ * for either datapath (0 paper: model/pree/preu_fp32.c; 1 stable: model/pree/preu_stable.c).
  *
  * API
  *   preu_vec_t            one operation: mode, idle cycles before it, inputs, expected outputs;

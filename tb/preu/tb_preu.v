@@ -2,7 +2,7 @@
 //
 // The vector file (tb/preu/preu_vecgen.c, layout in tb/preu/preu_vec.c: preu_vec_words) holds
 // NOps operations of PREU_VEC_WORDS = 44 hex words each: mode, gap, inputs, expected outputs,
-// computed by model/preu_fp32.c (Datapath 0) or model/preu_stable.c (Datapath 1). The bench plays them in order as a top would: it leaves `gap`
+// computed by model/pree/preu_fp32.c (Datapath 0) or model/pree/preu_stable.c (Datapath 1). The bench plays them in order as a top would: it leaves `gap`
 // idle cycles before each, switches mode_i only when the pipeline is empty, answers lreq_o with
 // the operation's pixel sum on l_i in the next cycle, and drives junk on unread inputs. Every
 // result is checked against its vector by tag, with the PREU's own latency (dut.UPD_LATENCY,

@@ -178,7 +178,7 @@ expect 2 'unknown option' "$tmp/a.ppm" "$tmp/b.ppm" --bogus
 expect 2 'needs two images' "$tmp/a.ppm"
 expect 2 'needs two images'
 expect 2 'too many images' "$tmp/a.ppm" "$tmp/b.ppm" "$tmp/b.ppm"
-expect 2 'needs an output file' "$tmp/a.ppm" "$tmp/b.ppm" --diff
+expect 2 '--diff needs a value' "$tmp/a.ppm" "$tmp/b.ppm" --diff
 "$PREE" compare --help | grep -q '^usage: pree compare' || fail "--help"
 
 if [ $fails -ne 0 ]; then echo "$fails failure(s); reproduce: $REPRO"; exit 1; fi

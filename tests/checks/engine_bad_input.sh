@@ -34,6 +34,12 @@ expect_error "negative threads" "--threads: -1 is out of range" render "$good" -
 expect_error "bad precision" "--precision: 'half'" render "$good" --precision half "${out[@]}"
 expect_error "bad grid" "--grid: 'kd'" render "$good" --grid kd "${out[@]}"
 expect_error "missing option value" "--width needs a value" render "$good" --width
+expect_error "flag given a value" "option '--no-skip' takes no value" render "$good" --no-skip=1 "${out[@]}"
+expect_error "2^63 photons" "--photons: 9223372036854775808 is out of range" render "$good" --photons 9223372036854775808 "${out[@]}"
+expect_error "ambiguous prefix" "unknown option '--photon'" render "$good" --photon 1000 "${out[@]}"
+# getopt_long's forms: --name=value, and operands after the options.
+run "$PREE" render --width=8 --height=6 --photons=1000 --quiet --out "$TMP/eq.ppm" "$good"
+[ -s "$TMP/eq.ppm" ] || fail "--name=value form: no image"
 expect_error "bad image extension" "must end in .png, .ppm or .exr" render "$good" --out "$TMP/out.jpg"
 expect_error "unwritable output" "out.png" render "$good" --width 8 --height 8 --photons 1000 --out "$TMP/nodir/out.png" --quiet
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The bucket-major update (--scan bucket, the default: model/update_batch.c) against the
+# The bucket-major update (--scan bucket, the default: model/ppm/update_batch.c) against the
 # photon-major oracle (--scan photon): the same image bits, final hit-point state and counts,
 # for every grid, both precisions, 1 and 2 threads, with and without the AVX2 screening
 # (PREE_NO_AVX2=1: the screening and the sphere group), and a triangle-mesh scene with glass;

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # preu_sim.sh: the PREU RTL (rtl/pree_preu.v) against the C model, both modes and both datapaths
-# (paper: model/preu_fp32.c; stable: model/preu_stable.c), in both pipeline configurations:
+# (paper: model/pree/preu_fp32.c; stable: model/pree/preu_stable.c), in both pipeline configurations:
 # PipeFast 0 (the paper's units) with the Verilator bench (200,000 operations each, scoreboard)
 # and the Verilog bench over 4,000 vectors each under Icarus and Verilator --binary; PipeFast 1
 # (the deep plans: update 45 / 48 stages, radiance 59) at a reduced size, 50,000 and 1,000. All

@@ -1,5 +1,5 @@
 /* stress_hitpoint.c: one hit point fed N accepted photons through both fp32 datapaths of the
- * PREU model (the paper's, model/preu_fp32.h, and the stable one, model/preu_stable.h), against
+ * PREU model (the paper's, model/pree/preu_fp32.h, and the stable one, model/pree/preu_stable.h), against
  * smallppm's double update with an integer count, the same recurrence in long double, and the
  * closed form of the radius product (issue 10, part 1; docs/numerics.md).
  *
@@ -47,7 +47,7 @@
 #include "preu_fp32.h"
 #include "preu_stable.h"
 
-#define PI_D  3.14159265358979      /* smallppm's pi (model/scene.h PREE_PI)            */
+#define PI_D  3.14159265358979      /* smallppm's pi (model/scene/scene.h PREE_PI)            */
 #define PI_LD 3.14159265358979L     /* the same truncated pi in long double              */
 #define MAX_AT 32
 #define MAX_CP 512
@@ -121,7 +121,7 @@ typedef struct {
 
 static inline void ref_d_update(ref_d_t *s, double a, double f, double phi)
 {
-    /* model/update.h update_accept_double: g = (n a + a) / (n a + 1); r2 *= g; n++;
+    /* model/ppm/update.h update_accept_double: g = (n a + a) / (n a + 1); r2 *= g; n++;
      * tau = (tau + f phi (1 / PI)) g. */
     double g = ((double)s->count * a + a) / ((double)s->count * a + 1.0);
     s->r2 = s->r2 * g;

@@ -1,4 +1,4 @@
-/* test_preu_fp32.c: the PREU binary32 model (model/preu_fp32.c) against hand-worked cases,
+/* test_preu_fp32.c: the PREU binary32 model (model/pree/preu_fp32.c) against hand-worked cases,
  * its own full-datapath trace, and an independent plain-float version for random inputs.
  * Expected bit patterns in the hand-worked cases were derived with exact rational arithmetic
  * rounded to nearest even (not with the host's float unit). */

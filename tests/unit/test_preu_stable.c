@@ -1,4 +1,4 @@
-/* test_preu_stable.c: the stable PREU datapath model (model/preu_stable.c, model/wide_acc.h):
+/* test_preu_stable.c: the stable PREU datapath model (model/pree/preu_stable.c, model/pree/wide_acc.h):
  * its basic arithmetic by hand-worked and exactly representable cases, the trace against the
  * update on random inputs (every field, special values included), the screening radius as a
  * true and monotone bound, the wide accumulator's truncation bound, the count through 2^32, and

@@ -4,7 +4,7 @@
  * The same estimator as the paper's datapath (Eq. 6-9, M = 1, the same alpha, accept rule and
  * photon order), held so that it stays accurate for any number of photons:
  *   k       the accepted-photon count, an exact 64-bit integer (N = alpha * k is never formed);
- *   w       1 / r2 in the wide format (model/wide_acc.h): w' = w + w * kappa / (k + 1), with
+ *   w       1 / r2 in the wide format (model/pree/wide_acc.h): w' = w + w * kappa / (k + 1), with
  *           kappa = (1 - alpha) / alpha, which is r2' = r2 * (N + alpha) / (N + 1) exactly;
  *   T[c]    tau_c / r2 times PI, wide: T' = T + f * phi * w. The factor g cancels, so T only
  *           grows by additions; radiance = T / (PI^2 * N_emitted) needs no r2.

@@ -4,7 +4,7 @@
  *
  * Double mode: the reference program's test and arithmetic. fp32 mode: the host keeps the
  * normal test in double; every candidate that passes it goes to the PREU model
- * (model/preu_fp32.h), which does the distance test and the update in binary32. */
+ * (model/pree/preu_fp32.h), which does the distance test and the update in binary32. */
 #ifndef PREE_UPDATE_H
 #define PREE_UPDATE_H
 
@@ -23,7 +23,7 @@ typedef struct {
 } update_stats_t;
 
 typedef enum { PRECISION_DOUBLE = 0, PRECISION_FP32 = 1 } precision_t;
-/* fp32 mode: the paper's PREU datapath, or the stable one (model/preu_stable.h). */
+/* fp32 mode: the paper's PREU datapath, or the stable one (model/pree/preu_stable.h). */
 typedef enum { DATAPATH_PAPER = 0, DATAPATH_STABLE = 1 } datapath_t;
 
 /* The hit-point update operations as the PREE must see them, in photon order: per photon hit,

@@ -2,8 +2,8 @@
  *
  * The memory's words (rtl/pree_top.v, host port hp_wdata_i) are {pixel, f, pos, state}; the
  * state part's layout is the datapath's (rtl/pree_preu.v hp_state_i, low word first):
- *   paper  (5 words):  tau r, g, b, r2, n                            (model/preu_fp32.h)
- *   stable (10 words): T r, g, b, w, k as 64-bit words, low half first (model/preu_stable.h)
+ *   paper  (5 words):  tau r, g, b, r2, n                            (model/pree/preu_fp32.h)
+ *   stable (10 words): T r, g, b, w, k as 64-bit words, low half first (model/pree/preu_stable.h)
  * The co-simulation host and the PREU benches move hit points in this form.
  *
  * API

@@ -9,7 +9,7 @@ static int zero_weight(const hitpoints_t *h, size_t i)
     return h->weight[i].x == 0 && h->weight[i].y == 0 && h->weight[i].z == 0;
 }
 
-/* fp32: the PREE's radiance pass, hit points in ADISO-REC issue order (model/adiso_order.h). */
+/* fp32: the PREE's radiance pass, hit points in ADISO-REC issue order (model/pree/adiso_order.h). */
 int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu,
                         uint32_t *L, unsigned long long *skipped)
 {

@@ -288,7 +288,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
     if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
-    /* The photon pass holds the hit points in spatial order (model/hp_order.c). */
+    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c). */
     s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
     if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one

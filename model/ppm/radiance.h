@@ -4,7 +4,7 @@
  * Double mode: the reference program's order, hit points newest first, factor
  * 1/(((pi*r2)*batches)*1000). fp32 mode: the PREU's radiance datapath (Eq. 9), each pixel
  * accumulated from +0 over its hit points in the PREE's issue order for `preu` PREUs: the
- * ADISO-REC leaping sequence (model/adiso_order.h, docs/pree_top.md "Radiance order"). Hit points of weight
+ * ADISO-REC leaping sequence (model/pree/adiso_order.h, docs/pree_top.md "Radiance order"). Hit points of weight
  * zero add exactly zero and are skipped when skip_zero is set (counted in *skipped). */
 #ifndef PREE_RADIANCE_H
 #define PREE_RADIANCE_H

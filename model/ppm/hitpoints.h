@@ -3,7 +3,7 @@
  * Geometry (position, normal, weight, pixel) comes from the eye pass, in creation order
  * (pixel order, then path order). The state (radius squared, photon count, flux) is held in
  * double for the double mode and, for the fp32 mode, as binary32 words in the PREU's layout
- * (model/preu_fp32.h) or, with the stable datapath, in its layout (model/preu_stable.h).
+ * (model/pree/preu_fp32.h) or, with the stable datapath, in its layout (model/pree/preu_stable.h).
  * Index i is the hit point's address in the PREE hit-point memory. */
 #ifndef PREE_HITPOINTS_H
 #define PREE_HITPOINTS_H

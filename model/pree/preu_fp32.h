@@ -1,7 +1,7 @@
 /* preu_fp32.h: the bit-exact binary32 model of one PREU (hit-point update and radiance evaluation).
  *
  * The golden model of rtl/pree_preu.v and of the renderer's fp32 mode. Every operation is one
- * model/fp32_ops.h operation (IEEE binary32, round to nearest even, x86-64 SSE NaN rules made
+ * model/pree/fp32_ops.h operation (IEEE binary32, round to nearest even, x86-64 SSE NaN rules made
  * explicit) in exactly the order, with exactly the operands, written in docs/preu_datapath.md.
  *
  * API

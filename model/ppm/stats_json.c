@@ -1,0 +1,61 @@
+/* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
+#include "json_file.h"
+#include "stats_json.h"
+
+#define S(member, kind) JSON_FIELD(render_stats_t, member, kind)
+#define SK(member, kind, key) JSON_FIELD_AS(render_stats_t, member, kind, key)
+#define N(a) (sizeof a / sizeof a[0])
+
+static const json_field_t counts[] = {
+    S(hit_points_saturated, JF_U64), S(hit_points, JF_U64), S(hit_points_zero_weight, JF_U64),
+    S(eye_rays, JF_U64), S(glass_splits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
+    SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(photons_emitted, JF_U64),
+    S(photon_segments, JF_U64), S(photon_hits, JF_U64), SK(photon_hits_no_cell, JF_U64, "skip_photon_hits_no_cell"),
+    SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
+    SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
+    SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
+    S(image_hash, JF_HEX64), S(state_hash, JF_HEX64),
+};
+static const json_field_t contents[] = {
+    SK(scene_spheres, JF_U64, "spheres"), SK(scene_triangles, JF_U64, "triangles"),
+    SK(scene_lights, JF_U64, "lights"), SK(scene_mirror, JF_BOOL, "mirror"), SK(scene_glass, JF_BOOL, "glass"),
+};
+static const json_field_t seconds[] = {
+    SK(sec_bvh, JF_REAL, "bvh"), SK(sec_eye, JF_REAL, "eye"), SK(sec_grid, JF_REAL, "grid"),
+    SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_radiance, JF_REAL, "radiance"),
+    SK(sec_total, JF_REAL, "total"),
+};
+
+static const char *grid_name(grid_kind_t g)
+{
+    return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
+}
+
+json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
+{
+    json_t *o = json_object();
+    if (!o) return NULL;
+    json_set_str(o, "scene", scene);
+    json_set_u64(o, "width", (uint64_t)opt->width);
+    json_set_u64(o, "height", (uint64_t)opt->height);
+    json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
+    json_set_str(o, "grid", grid_name(opt->grid));
+    json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
+    json_set_u64(o, "threads", (uint64_t)st->threads);
+    json_set_str(o, "datapath", opt->precision != PRECISION_FP32 ? "none"
+                                : opt->datapath == DATAPATH_STABLE ? "stable" : "paper");
+    json_set_real(o, "alpha", render_alpha(opt));
+    json_set_bool(o, "interrupted", interrupted);
+    json_set_u64(o, "photon_offset", opt->photon_offset);
+    json_object_set_new(o, "scene_contents", json_fields(st, contents, N(contents)));
+    json_set_fields(o, st, counts, N(counts));
+    json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
+    json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
+    return o;
+}
+
+int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
+                     const render_stats_t *st, int interrupted, char *err, size_t errlen)
+{
+    return json_file_write(path, stats_json(scene, opt, st, interrupted), err, errlen);
+}
