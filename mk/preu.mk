@@ -72,7 +72,7 @@ $(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(PREU_
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
-	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) -I$(CURDIR)/model -I$(CURDIR)/tb/preu" \
+	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) $(patsubst -I%,-I$(CURDIR)/%,$(MODEL_INC)) -I$(CURDIR)/tb/preu" \
 	  $(PREU_SRCS) $(CURDIR)/tb/preu/preu_bench.cpp $(abspath $(PREU_C_OBJ)) >$(PREU_DIR)/vl-build-dp$(1).log 2>&1 \
 	  || { tail -30 $(PREU_DIR)/vl-build-dp$(1).log; exit 1; }
 
