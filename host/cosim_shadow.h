@@ -8,7 +8,8 @@
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
- *   cosim_shadow_new(preu, hp_bank_w, win)  a model in reset state (NULL when out of memory);
+ *   cosim_shadow_new(preu, hp_bank_w, win)  a model in reset state (NULL when out of memory
+ *                                  or win > SHADOW_WIN_MAX);
  *                                  win: the update hazard window (cosim_rtl_update_window)
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
@@ -28,7 +29,7 @@
 #include "cosim_rtl.h"
 
 #define SHADOW_BUF   4    /* AFTSO-HpUOC BufDepth in pree_top */
-#define SHADOW_WIN_MAX 13 /* update hazard window, cycles (WIN_UPD): 11 paper, 13 stable */
+#define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 46 / 49 */
 
 typedef struct {
     int preu, hp_bank_w;

@@ -15,9 +15,10 @@
 # `pree cosim` runs build/pree-cosim-<d><n>[f] (d: p paper, s stable; n PREUs; f: PipeFast = 1,
 # `--pipe-fast`), one program per Verilated model, each built only when asked (make
 # build/pree-cosim-s8, build/pree-cosim-p4f); build/pree itself needs no Verilator. The regression
-# uses the paper datapath with NumPreu 4, 8, 16 (COSIM_PREUS), the stable one with
-# COSIM_STABLE_PREUS (default 4) and both with PipeFast = 1 with COSIM_FAST_PREUS (default 4);
-# the top bench links those models.
+# uses the paper datapath with NumPreu 4, 8, 16 (COSIM_PREUS) and the stable one with
+# COSIM_STABLE_PREUS (default 4); the PipeFast = 1 models of both datapaths for the counts in
+# COSIM_FAST_PREUS (default none: their reference image needs the radiance order of their
+# ADISO-REC depth, docs/fpga.md) are built when asked; the top bench links those models.
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
@@ -37,7 +38,7 @@ COSIM_PXB_4 := 4
 COSIM_PXB_8 := 5
 COSIM_PXB_16 := 6
 COSIM_STABLE_PREUS ?= 4
-COSIM_FAST_PREUS ?= 4
+COSIM_FAST_PREUS ?=
 # $(1): PREU count, $(2): p (paper) or s (stable), with f for PipeFast = 1 (pf, sf); the model's
 # tag (p4, s4, p4f, ...) names its directory, its class and its program.
 cosim_tag     = $(subst f,,$(2))$(1)$(findstring f,$(2))
