@@ -33,7 +33,7 @@ CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS
 LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 
-.PHONY: all deps build run test test-prereqs check bench clean help lint synth sim
+.PHONY: all deps build run test test-prereqs check bench clean help lint synth sim report
 all: build
 
 help:
@@ -41,6 +41,7 @@ help:
 	@echo "make test    the full regression (ends with 'N passed, N failed')"
 	@echo "make check   the quick regression for iteration"
 	@echo "make bench   speed, memory and run-time-against-error figures"
+	@echo "make report  one HTML page of the last run, bench, co-simulations, synthesis and test: out/report/"
 
 # Install every Debian package the project needs (quiet when all are present).
 DEPS_STAMP := $(BUILD)/.deps-ok
@@ -65,9 +66,16 @@ build: $(DEPS_STAMP) $(BUILD)/pree
 JOBS ?= $(shell nproc)
 PARALLEL := -j$(JOBS)
 
+# The clock for the time to the first image starts after the packages are in, before the build.
 run: $(DEPS_STAMP)
-	@$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree
-	@scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
+	@export PREE_RUN_START=$$(date +%s.%N); \
+	  $(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree && \
+	  scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
+
+# One self-contained page from what make run, make bench, make sim(-full), make fpga-timing and
+# make test wrote (scripts/report/build.py); tests/checks/report_browser.sh opens it in Chromium.
+report:
+	@python3 scripts/report/build.py $(CURDIR) $(OUT) $(BUILD)
 
 test-prereqs: $(DEPS_STAMP) $(TEST_PREREQS)
 

@@ -7,6 +7,9 @@
 
 int pree_cmd_render(int argc, char **argv);
 int pree_cmd_compare(int argc, char **argv);
+int pree_cmd_check(int argc, char **argv);
+/* cli_version.c: `git describe` of the tree this program was built from ("unknown" outside git). */
+const char *pree_version(void);
 /* host/cosim_main.c: the co-simulation program's own entry (pree-cosim-*). */
 int pree_cmd_cosim(int argc, char **argv);
 

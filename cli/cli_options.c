@@ -96,6 +96,23 @@ int cli_int(cli_args_t *a, long long lo, long long hi, long long *out)
     return 0;
 }
 
+int cli_size(cli_args_t *a, uint64_t *out)
+{
+    const char *s = a->val;
+    char *end;
+    errno = 0;
+    double v = strtod(s, &end);
+    const char *units = "KMGT";
+    const char *u = *end ? strchr(units, *end) : NULL;
+    double scale = u ? (double)(1ull << (10 * (u - units + 1))) : 1.0;
+    if (end == s || errno || !(v >= 0) || (*end && (!u || end[1])))
+        return cli_error(a, "%s: '%s' is not a size (bytes, or a number with K, M, G or T)", a->name, s);
+    v *= scale;
+    if (v < 1048576.0 || v > 1125899906842624.0) return cli_error(a, "%s: %s is out of range [1M, 1024T]", a->name, s);
+    *out = (uint64_t)v;
+    return 0;
+}
+
 int cli_real(cli_args_t *a, double lo, int lo_open, double hi, double *out)
 {
     const char *s = a->val;

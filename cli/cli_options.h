@@ -62,6 +62,9 @@ const char *cli_scene(cli_args_t *a);
 int cli_error(cli_args_t *a, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 /* The current option's value as an integer in [lo, hi]; 0, or 2 with the error printed. */
 int cli_int(cli_args_t *a, long long lo, long long hi, long long *out);
+/* The current option's value as a size in bytes: a number, or one with K, M, G or T (powers of
+ * 1024), in [1M, 1024T]; 0, or 2 with the error printed. */
+int cli_size(cli_args_t *a, uint64_t *out);
 /* The current option's value as a real in (lo, hi] (lo_open) or [lo, hi]; 0, or 2. */
 int cli_real(cli_args_t *a, double lo, int lo_open, double hi, double *out);
 /* The current option's value as one of names[0..n): its index, or -1 (error printed). */

@@ -1,14 +1,20 @@
 /* cli_render.c: `pree render SCENE [options]`: parse and check the options, render, write
- * the images and the statistics. Ctrl-C stops after the current photon block and writes
- * the image of the photons done so far; the exit status is then 130. */
+ * the images and the statistics. SIGINT or SIGTERM stops the render in any phase (the photon
+ * block in progress is abandoned) and writes the image of the photon blocks done so far, or
+ * nothing when no block was done; the exit status is then 130 (a second signal ends the process
+ * at once). SIGPIPE is ignored: a closed stderr stops the progress, never the render. */
 #include <errno.h>
+#include <math.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 #include "cli.h"
+#include "checkpoint.h"
 #include "cli_options.h"
+#include "cli_outputs.h"
+#include "cli_pm.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -17,6 +23,25 @@
 
 static volatile sig_atomic_t interrupted;
 static void on_sigint(int sig) { (void)sig; interrupted = 1; }
+
+/* Write the image to path; an EXR file carries the run's description in its header (pree:scene,
+ * pree:size, pree:photons, ...: docs/compare.md, "Image files written by the engine"). */
+static int write_image(const char *path, const char *scene, const render_options_t *opt,
+                       const render_result_t *res, char *err, size_t errlen)
+{
+    char size[32], photons[32], offset[32], alpha[32], hash[32];
+    snprintf(size, sizeof size, "%dx%d", res->width, res->height);
+    snprintf(photons, sizeof photons, "%llu", (unsigned long long)res->stats.photons_emitted);
+    snprintf(offset, sizeof offset, "%llu", (unsigned long long)opt->photon_offset);
+    snprintf(alpha, sizeof alpha, "%.17g", render_alpha(opt));
+    snprintf(hash, sizeof hash, "%016llx", (unsigned long long)res->stats.image_hash);
+    const char *meta[] = {
+        "pree:scene", scene, "pree:size", size, "pree:photons", photons, "pree:photon_offset", offset,
+        "pree:precision", opt->precision == PRECISION_FP32 ? "fp32" : "double",
+        "pree:datapath", stats_datapath_name(opt), "pree:grid", stats_grid_name(opt->grid),
+        "pree:alpha", alpha, "pree:version", pree_version(), "pree:image_hash", hash, NULL};
+    return pree_image_write_meta(path, res->width, res->height, res->rgb, meta, err, errlen);
+}
 
 static void render_usage(FILE *f)
 {
@@ -41,18 +66,36 @@ static void render_usage(FILE *f)
         "  --threads T            OpenMP threads (default: all cores); the image does not depend on T\n"
         "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
         "  --stats FILE.json      write the statistics\n"
-        "  --quiet                no progress on stderr\n");
+        "  --checkpoint FILE      write the render's state to FILE every --checkpoint-every photons and\n"
+        "                         when the photon pass ends or is interrupted (atomically)\n"
+        "  --checkpoint-every N   photons between checkpoints (default 1024000)\n"
+        "  --resume FILE          continue from a checkpoint of the same scene, options and build: the\n"
+        "                         same bits as an uninterrupted render, for any --threads\n"
+        "  --time-limit S         stop after the photon block in progress once S seconds have passed;\n"
+        "                         the image holds the photons done (stats: photons_emitted), exit 0\n"
+        "  --quiet                no progress on stderr\n"
+        "  --max-memory SIZE      the memory the render may hold, e.g. 512M or 8G (default: the\n"
+        "                         address-space limit and the available memory); checked against an\n"
+        "                         estimate before allocating\n");
+    cli_pm_usage(f);
 }
 
-enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS };
+enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
+       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
+    CLI_PM_LONGOPTS,
     {"photon-offset", required_argument, NULL, OPT_PHOTON_OFFSET},
     {"precision", required_argument, NULL, OPT_PRECISION},
     {"scan", required_argument, NULL, OPT_SCAN},
     {"out", required_argument, NULL, OPT_OUT},
     {"stats", required_argument, NULL, OPT_STATS},
+    {"checkpoint", required_argument, NULL, OPT_CHECKPOINT},
+    {"checkpoint-every", required_argument, NULL, OPT_CHECKPOINT_EVERY},
+    {"resume", required_argument, NULL, OPT_RESUME},
+    {"time-limit", required_argument, NULL, OPT_TIME_LIMIT},
+    {"max-memory", required_argument, NULL, OPT_MAX_MEMORY},
     {NULL, 0, NULL, 0}
 };
 
@@ -94,9 +137,18 @@ int pree_cmd_render(int argc, char **argv)
             outs[nout++] = a.val;
             break;
         case OPT_STATS: stats_path = a.val; break;
+        case OPT_MAX_MEMORY: if (cli_size(&a, &opt.max_memory)) return 2; break;
+        case OPT_CHECKPOINT: opt.checkpoint = a.val; break;
+        case OPT_RESUME: opt.resume = a.val; break;
+        case OPT_CHECKPOINT_EVERY:
+            if (cli_int(&a, 1000, 1000000000000LL, &v)) return 2;
+            opt.checkpoint_every = (uint64_t)v;
+            break;
+        case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt.time_limit)) return 2; break;
+        default: if (cli_pm_option(&a, id, &opt)) return 2;
         }
     }
-    if (!(scene_path = cli_scene(&a))) return 2;
+    if (!(scene_path = cli_scene(&a)) || cli_pm_check(&a, &opt)) return 2;
     if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
@@ -109,20 +161,41 @@ int pree_cmd_render(int argc, char **argv)
         outs[nout++] = default_out;
     }
 
+    cli_file_t in = {"the scene", scene_path}, out[MAX_OUTPUTS + 1];
+    for (int k = 0; k < nout; k++) out[k] = (cli_file_t){"--out", outs[k]};
+    if (stats_path) out[nout] = (cli_file_t){"--stats", stats_path};
+    if (cli_outputs_check("render", &in, 1, out, nout + (stats_path != NULL))) return 1;
+
     scene_t scene;
     if (scene_load(scene_path, &scene, err, sizeof err)) {
         fprintf(stderr, "pree render: %s\n", err);
         return 1;
     }
+    if (opt.checkpoint && checkpoint_probe(opt.checkpoint, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        scene_free(&scene);
+        return 1;
+    }
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_sigint;
+    sa.sa_flags = SA_RESETHAND;   /* a second signal ends the process at once */
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
     render_result_t res;
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
     if (rc < 0) {
-        fprintf(stderr, "pree render: %s: %s\n", scene_path, err);
+        fprintf(stderr, "pree render: %s: %s%s\n", scene_path, err, interrupted ? "; nothing written" : "");
+        render_result_free(&res);
+        scene_free(&scene);
+        return interrupted ? 130 : 1;
+    }
+    size_t nonfinite = 0;
+    for (size_t i = 0; i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
+    if (nonfinite) {   /* never an image of inf or NaN with status 0 */
+        fprintf(stderr, "pree render: %s: %zu pixel values are not finite (a light's power beyond the %s range?); "
+                "nothing written\n", scene_path, nonfinite, opt.precision == PRECISION_FP32 ? "binary32" : "double");
         render_result_free(&res);
         scene_free(&scene);
         return 1;
@@ -140,8 +213,11 @@ int pree_cmd_render(int argc, char **argv)
     if (rc == 1)
         fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
                 (unsigned long long)res.stats.photons_emitted);
+    if (res.stats.time_limited)
+        fprintf(stderr, "pree render: time limit of %g s reached after %llu photons; writing what was made\n",
+                opt.time_limit, (unsigned long long)res.stats.photons_emitted);
     for (int k = 0; k < nout; k++) {
-        if (pree_image_write(outs[k], res.width, res.height, res.rgb, err, sizeof err)) {
+        if (write_image(outs[k], scene_path, &opt, &res, err, sizeof err)) {
             fprintf(stderr, "pree render: %s\n", err);
             status = 1;
         }

@@ -6,6 +6,7 @@
  * --preu, --datapath and --pipe-fast name, from the directory this program lives in, with the
  * same arguments. */
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,7 @@ static int run_cosim(int argc, char **argv);
 
 static const command_t commands[] = {
     {"render",  pree_cmd_render,  "render a scene with progressive photon mapping"},
+    {"check",   pree_cmd_check,   "parse and validate a scene; report what a render would need"},
     {"compare", pree_cmd_compare, "compare two images: SSIM, SNR, PSNR, RMSE, max difference"},
     {"cosim",   run_cosim,        "render with the Verilated PREE RTL doing the radiance estimation"},
 };
@@ -29,9 +31,11 @@ static const command_t commands[] = {
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper", *fast = "";
+    int axi = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--")) break;
-        if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
+        if (!strcmp(argv[i], "--axi")) axi = 1;
+        else if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
         else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
         else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
         else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
@@ -45,7 +49,7 @@ static int run_cosim(int argc, char **argv)
     self[n] = '\0';
     char *slash = strrchr(self, '/');
     if (slash) *slash = '\0';
-    snprintf(path, sizeof path, "%s/pree-cosim-%c%s%s", self, d, preu, fast);
+    snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s%s", self, axi ? "axi-" : "", d, preu, fast);
     execv(path, argv);
     fprintf(stderr, "pree cosim: %s: %s (build it with 'make %s')\n", path, strerror(errno),
             strstr(path, "build/") ? strstr(path, "build/") : path);
@@ -57,13 +61,26 @@ static void usage(FILE *f)
     fprintf(f, "usage: pree <command> [options]\n\ncommands:\n");
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         fprintf(f, "  %-8s %s\n", commands[i].name, commands[i].summary);
-    fprintf(f, "\n'pree <command> --help' describes a command's options.\n");
+    fprintf(f, "\n'pree <command> --help' describes a command's options; 'pree --version' the build.\n");
+}
+
+/* Descriptors 0, 1 and 2 open (on /dev/null where closed), so that no output file is given
+ * one of them and then receives the messages meant for stderr. */
+static void std_fds_open(void)
+{
+    for (int fd = 0; fd < 3; fd++)
+        if (fcntl(fd, F_GETFD) < 0 && errno == EBADF) {
+            int n = open("/dev/null", fd ? O_WRONLY : O_RDONLY);
+            if (n >= 0 && n != fd) { dup2(n, fd); close(n); }
+        }
 }
 
 int main(int argc, char **argv)
 {
+    std_fds_open();
     if (argc < 2) { usage(stderr); return 2; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { usage(stdout); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("pree %s\n", pree_version()); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
         if (!strcmp(argv[1], commands[i].name))
             return commands[i].run(argc - 1, argv + 1);

@@ -95,7 +95,10 @@ static void pump(cosim_drv_t *d)
     /* Up to NumPreu index entries in distinct banks (consecutive queue entries are). */
     uint32_t used = 0;
     int nw = 0;
-    while (nw < np && d->iq_head != d->iq_tail) {
+    /* A stalled cycle writes fewer entries than the port takes (none to NumPreu - 1). */
+    const int wmax = d->opt.stall > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.stall
+                   ? (int)(next_rand(d) % (uint64_t)np) : np;
+    while (nw < wmax && d->iq_head != d->iq_tail) {
         const idx_entry_t *e = &d->iq[d->iq_head & (IQ_CAP - 1)];
         uint32_t b = 1u << (e->addr % (uint32_t)np);
         if (used & b) break;
@@ -166,14 +169,20 @@ static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
     }
 }
 
-/* A wait that has lasted WAIT_LIMIT cycles: the RTL is not making progress. Sets the error
- * (and d->hung, which every later call reports) and returns 1. */
+/* A wait (named by state) that has lasted the wait limit: the RTL is not making progress. Sets
+ * the error, naming the wait and the stream's state (and d->hung, which every later call
+ * reports), and returns 1. */
 #define WAIT_LIMIT 10000000u
-static int stuck(cosim_drv_t *d, uint64_t *guard)
+static int stuck(cosim_drv_t *d, uint64_t *guard, const char *state)
 {
     if (d->hung) return 1;
-    if (++*guard < WAIT_LIMIT) return 0;
-    snprintf(d->err, sizeof d->err, "the PREE made no progress for %u cycles", WAIT_LIMIT);
+    const uint64_t limit = d->opt.wait_limit ? d->opt.wait_limit : WAIT_LIMIT;
+    if (++*guard < limit) return 0;
+    snprintf(d->err, sizeof d->err, "the PREE made no progress for %llu cycles %s (ph_ready_o %d, idle_o %d; "
+             "photons taken %llu of %llu queued, retired %u; index entries written %llu of %llu)",
+             (unsigned long long)limit, state, cosim_rtl_ph_ready(d->rtl), cosim_rtl_idle(d->rtl),
+             (unsigned long long)d->pq_head, (unsigned long long)d->pq_tail, d->retired,
+             (unsigned long long)d->iq_head, (unsigned long long)d->iq_tail);
     d->hung = 1;
     return 1;
 }
@@ -193,7 +202,7 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
         if (p + n - low <= IDX_DEPTH && d->aq_tail - d->aq_head < AQ_CAP &&
             d->pq_tail - d->pq_head < PQ_CAP)
             break;
-        if (stuck(d, &guard)) return p;
+        if (stuck(d, &guard, "waiting for index-table space")) return p;
         pump(d);
     }
     d->aq[d->aq_tail++ & (AQ_CAP - 1)] = (alloc_entry_t){p, p + n};
@@ -213,7 +222,9 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
     d->ops += n;
     d->in->cnt_en = 1;
     guard = 0;
-    while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) && !stuck(d, &guard)) pump(d);
+    while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= 64u * np) &&
+           !stuck(d, &guard, "waiting for the PREE to take queued photons"))
+        pump(d);
     return p;
 }
 
@@ -258,17 +269,19 @@ int cosim_drv_drain(cosim_drv_t *d)
         if (!d->hung) snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
         return -1;
     }
-    uint64_t guard = 0;
+    /* Each wait is bounded by the cycles since its last progress (a photon taken). */
+    uint64_t guard = 0, taken = d->pq_head;
     while (d->pq_head != d->pq_tail || d->iq_head != d->iq_tail) {
         pump(d);
-        if (++guard > 100000000ull) { snprintf(d->err, sizeof d->err, "the photon stream does not drain"); return -1; }
+        if (d->pq_head != taken) { taken = d->pq_head; guard = 0; }
+        if (stuck(d, &guard, "draining the photon stream")) return -1;
     }
     d->in->ph_valid = 0;
     for (int j = 0; j < d->opt.preu; j++) d->in->idx_we[j] = 0;
     guard = 0;
     while (!cosim_rtl_idle(d->rtl)) {
         cosim_rtl_tick(d->rtl);
-        if (++guard > 1000000) { snprintf(d->err, sizeof d->err, "the PREE does not become idle"); return -1; }
+        if (stuck(d, &guard, "waiting for idle_o after the update stream")) return -1;
     }
     d->in->cnt_en = 0;
     cosim_rtl_tick(d->rtl);
@@ -278,8 +291,12 @@ int cosim_drv_drain(cosim_drv_t *d)
 void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n)
 {
     cosim_in_t *in = d->in;
-    in->hp_we = 1;
     for (size_t i = 0; i < n; i++) {
+        while (d->opt.stall > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.stall) {
+            in->hp_we = 0;   /* an idle cycle in the load */
+            cosim_rtl_tick(d->rtl);
+        }
+        in->hp_we = 1;
         in->hp_addr = (uint32_t)i;
         in->hp_wdata = hp[i];
         in->hp_pixel = (uint32_t)pixel[i];
@@ -320,7 +337,7 @@ int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix,
     in->rad_start = 0;
     uint64_t guard = 0;
     while (!cosim_rtl_idle(d->rtl)) {
-        if (stuck(d, &guard)) return -1;
+        if (stuck(d, &guard, "waiting for idle_o after the radiance pass")) return -1;
         cosim_rtl_tick(d->rtl);
     }
     in->cnt_en = 0;

@@ -16,8 +16,9 @@
  *   cosim_drv_radiance(d, n_hit, ne, npix, L)  clear npix pixels, run the radiance pass over
  *                                 [0, n_hit) with N_emitted = ne, read the pixels into L;
  *                                 0, or -1 with a message when the PREE does not finish
- * Every wait for the RTL is bounded (10 million cycles without the awaited progress): the call
- * then fails with a message, and so does every later call.
+ * Every wait for the RTL is bounded (opt.wait_limit, default 10 million cycles without the
+ * awaited progress): the call then fails with a message naming the wait and the stream's state
+ * (ph_ready_o, idle_o, photons taken and retired, entries queued), and so does every later call.
  *   cosim_drv_counters(d, cnt)    pree_top's counters now
  *   cosim_drv_sched_stats(d, st)  the scheduler's figures (-1 when not scheduling)
  *
@@ -44,7 +45,10 @@ typedef struct {
     int schedule;      /* 1: photon order chosen by cosim_sched.h; 0: photon order */
     int window;        /* the scheduler's pending photons */
     double gap;        /* probability of an idle cycle on the photon input (0: none) */
-    uint64_t seed;     /* for the gaps */
+    double stall;      /* probability of a cycle with fewer index writes than the load port takes,
+                        * and of an idle cycle in the hit-point load (0: none) */
+    uint64_t seed;     /* for the gaps and stalls */
+    uint64_t wait_limit; /* cycles a wait may last without progress (0: 10 million) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

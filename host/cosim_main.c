@@ -20,6 +20,11 @@
 #include "radiance.h"
 #include "render.h"
 
+/* 1 in the AXI program (build/pree-cosim-axi-*: host/cosim_axi.c through rtl/pree_axi.v). */
+#ifndef COSIM_DRV_AXI
+#define COSIM_DRV_AXI 0
+#endif
+
 typedef struct {
     cosim_drv_t *drv;
     double sec_rtl, cpu_rtl;     /* wall and CPU time spent clocking the RTL in the update phase */
@@ -57,7 +62,9 @@ static void cosim_usage(FILE *f)
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128)\n"
-        "  --gap P                idle cycles on the photon input with probability P\n"
+        "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
+        "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
+        "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
         "  --quiet                no progress on stderr\n");
 }
 
@@ -126,7 +133,7 @@ static void to_float(const double *rgb, size_t n, float *out)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_PIPE_FAST };
+       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_AXI, OPT_PIPE_FAST };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -138,6 +145,7 @@ static const struct option cosim_longopts[] = {
     {"trace", required_argument, NULL, OPT_TRACE},
     {"out", required_argument, NULL, OPT_OUT},
     {"stats", required_argument, NULL, OPT_STATS},
+    {"axi", no_argument, NULL, OPT_AXI},
     {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
     {NULL, 0, NULL, 0}
 };
@@ -147,7 +155,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, pipefast = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, axi = 0, pipefast = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -168,10 +176,14 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_TRACE: trace_path = a.val; break;
         case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
         case OPT_STATS: stats_path = a.val; break;
+        case OPT_AXI: axi = 1; break;
         case OPT_PIPE_FAST: pipefast = 1; break;
         }
     }
     if (!(scene_path = cli_scene(&a))) return 2;
+    if (axi != COSIM_DRV_AXI)
+        return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
+                                 : "this program drives pree_axi: give --axi");
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     if (npix > (1u << COSIM_PXAW))
         return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
@@ -294,7 +306,7 @@ int pree_cmd_cosim(int argc, char **argv)
 
     /* Figures. */
     cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
-                          .preu = opt.preu, .reorder = reorder, .window = window, .pipe_fast = pipefast,
+                          .preu = opt.preu, .axi = axi, .reorder = reorder, .window = window, .pipe_fast = pipefast,
                           .update_window = cosim_rtl_update_window(rtl),
                           .photons_emitted = res.stats.photons_emitted,
                           .alpha = (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha), .gap = gap,

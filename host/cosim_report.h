@@ -14,7 +14,7 @@
 typedef struct {
     /* What was run. */
     const char *scene;
-    int width, height, datapath, preu, reorder, window;
+    int width, height, datapath, preu, axi, reorder, window;
     int pipe_fast, update_window;   /* the RTL's PipeFast and its update hazard window */
     uint64_t photons_emitted;
     double alpha, gap;

@@ -120,6 +120,7 @@ struct cosim_rtl {
     virtual int open_trace(const char *path) = 0;
     virtual int hp_bank_w() = 0;
     virtual int update_window() = 0;
+    virtual void set_reset(int on) = 0;
 };
 
 namespace {
@@ -130,6 +131,9 @@ struct Rtl : cosim_rtl {
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
     std::unique_ptr<V> top;
     std::unique_ptr<VerilatedFstC> tfp;
+    // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
+    // cycle, so a waveform viewer shows real times; cycle n's rising edge is at (8n + 4) ns.
+    static constexpr uint64_t HALF_PERIOD_PS = 4000;
     uint64_t time = 0;
     cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
 
@@ -218,14 +222,19 @@ struct Rtl : cosim_rtl {
         top->clk_i = 0;
         top->eval();
         if (tfp) tfp->dump(time);
-        time++;
+        time += HALF_PERIOD_PS;
         top->clk_i = 1;
         top->eval();
         if (tfp) tfp->dump(time);
-        time++;
+        time += HALF_PERIOD_PS;
     }
     int hp_bank_w() override { return HPB; }
     int update_window() override { return WIN; }
+    void set_reset(int on) override
+    {
+        top->rst_ni = on ? 0 : 1;
+        top->eval();
+    }
     int ph_ready() override { return top->ph_ready_o; }
     int idle() override { return top->idle_o; }
     uint32_t photons_done() override { return top->photons_done_o; }
@@ -324,5 +333,6 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
+void cosim_rtl_set_reset(cosim_rtl_t *r, int on) { r->set_reset(on); }
 
 }  // extern "C"

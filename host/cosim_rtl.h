@@ -15,6 +15,7 @@
  *   cosim_rtl_hp_bank_w            the model's HpBankW parameter
  *   cosim_rtl_update_window        its update hazard window (pree_top's WIN_UPD: 1 + the PREU's
  *                                  update latency, which follows from Datapath and PipeFast)
+ *   cosim_rtl_set_reset(r, on)     hold rst_ni low (on: asynchronous, at once) or release it
  * Inputs hold their values until changed; none of these can fail after cosim_rtl_new. */
 #ifndef PREE_COSIM_RTL_H
 #define PREE_COSIM_RTL_H
@@ -69,6 +70,7 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cycles */
+void cosim_rtl_set_reset(cosim_rtl_t *r, int on);
 
 #ifdef __cplusplus
 }

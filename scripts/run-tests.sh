@@ -1,40 +1,64 @@
 #!/usr/bin/env bash
 # Regression runner: every cmocka unit binary in build/tests and every script in tests/checks.
 # Usage: run-tests.sh [quick|full]. A check script declares "# level: quick" to run in both;
-# the rest run only at the full level. Ends with one line "N passed, N failed".
+# the rest run only at the full level. Writes build/test-results.xml (JUnit XML: one testcase
+# per unit test and per check, with time, failure message, log and rerun command; see
+# scripts/junit-xml.py), lists the slowest checks, and ends with one line "N passed, N failed".
+# PREE_TEST_UNITS, PREE_TEST_CHECKS, PREE_TEST_XML: other unit-binary and check folders and XML
+# path (tests/checks/junit_xml.sh runs the runner on a folder of its own).
 set -u
 level=${1:-full}
 cd "$(dirname "$0")/.."
+units=${PREE_TEST_UNITS:-build/tests}; checks=${PREE_TEST_CHECKS:-tests/checks}
+xml=${PREE_TEST_XML:-build/test-results.xml}
 pass=0; fail=0; failed=()
-logdir=build/test-logs; mkdir -p "$logdir"
+logdir=$(dirname "$xml")/test-logs; mkdir -p "$logdir"
+results=$logdir/results.tsv; : >"$results"
+now() { date +%s.%N; }
+secs() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.3f", b - a }'; }
 
-for bin in build/tests/test_*; do
-  [ -x "$bin" ] || continue
-  name=$(basename "$bin"); log="$logdir/$name.log"
-  CMOCKA_MESSAGE_OUTPUT=stdout "$bin" >"$log" 2>&1; rc=$?
-  p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -1)
-  f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) test.*/\1/p' "$log" | tail -1)
-  p=${p:-0}; f=${f:-0}
+for bin in "$units"/test_*; do
+  [ -x "$bin" ] && [ -f "$bin" ] || continue
+  name=$(basename "$bin"); log="$logdir/$name.log"; report="$logdir/$name.xml"
+  rm -f "$report"   # cmocka does not overwrite an existing report
+  start=$(now)
+  CMOCKA_MESSAGE_OUTPUT=xml CMOCKA_XML_FILE="$report" "$bin" >"$log" 2>&1; rc=$?
+  t=$(secs "$start" "$(now)")
+  read -r p f < <(python3 scripts/junit-xml.py counts "$report")
   if [ $rc -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
   pass=$((pass + p)); fail=$((fail + f))
-  if [ "$f" -ne 0 ]; then failed+=("$name  (log: $log; rerun: $bin)"); grep -E '^\[  (FAILED|  ERROR)' "$log" | head -5; fi
+  printf 'unit\t%s\t%s\t%d\t%s\t%s\t%s\n' "$name" "$t" "$rc" "$log" "$bin" "$report" >>"$results"
+  if [ "$f" -ne 0 ]; then
+    failed+=("$name  (log: $log, report: $report; rerun: $bin)")
+    grep -o 'testcase name="[^"]*"[^>]*>[^<]*<failure' "$report" 2>/dev/null | sed 's/ time.*//; s/^/    FAILED /' | head -5
+  fi
   printf '%-40s %d passed, %d failed\n' "$name" "$p" "$f"
 done
 
-for chk in tests/checks/*.sh; do
+for chk in "$checks"/*.sh; do
   [ -f "$chk" ] || continue
   if [ "$level" = quick ] && ! grep -q '^# level: quick' "$chk"; then continue; fi
   name=$(basename "$chk" .sh); log="$logdir/$name.log"
-  start=$(date +%s)
-  if bash "$chk" >"$log" 2>&1; then
+  start=$(now)
+  bash "$chk" >"$log" 2>&1; rc=$?
+  t=$(secs "$start" "$(now)")
+  if [ $rc -eq 0 ]; then
     pass=$((pass + 1)); r=ok
   else
     fail=$((fail + 1)); r=FAIL; failed+=("$name  (log: $log; rerun: bash $chk)")
     tail -5 "$log" | sed 's/^/    /'
   fi
-  printf '%-40s %s (%ss)\n' "$name" "$r" "$(( $(date +%s) - start ))"
+  printf 'check\t%s\t%s\t%d\t%s\t%s\n' "$name" "$t" "$rc" "$log" "bash $chk" >>"$results"
+  printf '%-40s %s (%.0fs)\n' "$name" "$r" "$t"
 done
 
+if python3 scripts/junit-xml.py write "$results" "$xml"; then
+  echo "JUnit XML: $xml"
+else
+  echo "JUnit XML: could not write $xml"; fail=$((fail + 1))
+fi
+echo "slowest checks:"
+awk -F'\t' '$1 == "check" { printf "  %8.1fs  %s\n", $3, $2 }' "$results" | sort -rn | head -8
 if [ ${#failed[@]} -ne 0 ]; then
   echo "failed:"; printf '  %s\n' "${failed[@]}"
 fi

@@ -7,6 +7,7 @@
  * number of threads. The loops are SIMD without reassociation, so every lane rounds exactly as
  * the scalar code would. */
 #include "compare.h"
+#include "diffmap.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -68,10 +69,11 @@ static inline void vfilter(const double *const rows[WIN], double *restrict out, 
 
 /* One tile: channel c, output rows [y0, y1), output columns [x0, x0 + n) of an image w wide
  * (output (x, y) is the window whose top-left input pixel is (x, y)). Puts the sum of the SSIM
- * map over the tile in *sum_out; returns 0, or -1 when out of memory. */
+ * map over the tile in *sum_out, and, when map_out is not NULL, the map itself at map_out[y * wv + x];
+ * returns 0, or -1 when out of memory. */
 PREE_SIMD_CLONES
 static int ssim_tile(const float *a, const float *b, int w, int c, int y0, int y1, int x0, int n,
-                     double c1, double c2, const double *g, double *sum_out)
+                     double c1, double c2, const double *g, double *sum_out, double *map_out, int wv)
 {
     const int nin = n + WIN - 1;   /* input columns the tile reads */
     double *mem = malloc(sizeof(double) * ((size_t)NMOM * nin + (size_t)(WIN + 1) * NMOM * n + n));
@@ -119,6 +121,7 @@ static int ssim_tile(const float *a, const float *b, int w, int c, int y0, int y
         }
         double row = 0.0;
         for (int x = 0; x < n; x++) row += map[x];
+        if (map_out) memcpy(map_out + (size_t)y * wv + x0, map, sizeof(double) * n);
         sum += row;
     }
     free(mem);
@@ -126,7 +129,8 @@ static int ssim_tile(const float *a, const float *b, int w, int c, int y0, int y
     return 0;
 }
 
-double pree_ssim(const float *a, const float *b, int w, int h, double L)
+/* The mean SSIM; with map (3 * (w-10) * (h-10) doubles) not NULL also the map per channel. */
+static double ssim_run(const float *a, const float *b, int w, int h, double L, double *map)
 {
     if (w < WIN || h < WIN) return NAN;
     double g[WIN];
@@ -144,7 +148,8 @@ double pree_ssim(const float *a, const float *b, int w, int h, double L)
         int c = t / per_channel, band = (t % per_channel) / nstrips, strip = t % nstrips;
         int y0 = band * BAND, y1 = y0 + BAND < hv ? y0 + BAND : hv;
         int x0 = strip * STRIP, n = x0 + STRIP < wv ? STRIP : wv - x0;
-        failed |= ssim_tile(a, b, w, c, y0, y1, x0, n, c1, c2, g, &sums[t]) != 0;
+        double *mc = map ? map + (size_t)c * wv * hv : NULL;
+        failed |= ssim_tile(a, b, w, c, y0, y1, x0, n, c1, c2, g, &sums[t], mc, wv) != 0;
     }
     /* Add the tiles in a fixed order: the mean per channel, then over channels. */
     double total = 0.0;
@@ -155,6 +160,29 @@ double pree_ssim(const float *a, const float *b, int w, int h, double L)
     }
     free(sums);
     return failed ? NAN : total / 3.0;
+}
+
+double pree_ssim(const float *a, const float *b, int w, int h, double L)
+{
+    return ssim_run(a, b, w, h, L, NULL);
+}
+
+double pree_ssim_map(const float *a, const float *b, int w, int h, double L, double *out)
+{
+    if (w < WIN || h < WIN) return NAN;
+    const int wv = w - (WIN - 1), hv = h - (WIN - 1);
+    double *map = malloc(sizeof(double) * 3 * wv * hv);
+    if (!map) return NAN;
+    double mean = ssim_run(a, b, w, h, L, map);
+    for (long p = 0; p < (long)w * h; p++) out[p] = NAN;
+    const size_t plane = (size_t)wv * hv;
+    for (int y = 0; y < hv; y++)
+        for (int x = 0; x < wv; x++) {
+            size_t k = (size_t)y * wv + x;
+            out[(size_t)(y + RAD) * w + x + RAD] = (map[k] + map[plane + k] + map[2 * plane + k]) / 3.0;
+        }
+    free(map);
+    return mean;
 }
 
 double pree_compare_peak(const pree_image_t *ref)
@@ -231,25 +259,16 @@ int pree_compare(const pree_image_t *ref, const pree_image_t *test, pree_metrics
     return 0;
 }
 
-void pree_diff_heatmap(const float *a, const float *b, int w, int h, unsigned char *out)
+int pree_diff_heatmap(const float *a, const float *b, int w, int h, unsigned char *out)
 {
     size_t n = (size_t)w * h;
+    double *e = malloc(sizeof(double) * n);
+    if (!e) return -1;
+    pree_err_abs(a, b, w, h, e);
     double emax = 0.0;
-    for (size_t i = 0; i < 3 * n; i++) {
-        double d = fabs((double)a[i] - (double)b[i]);
-        if (d > emax) emax = d;
-    }
-    for (size_t p = 0; p < n; p++) {
-        double e = 0.0;
-        for (int c = 0; c < 3; c++) {
-            double d = fabs((double)a[3 * p + c] - (double)b[3 * p + c]);
-            if (d > e) e = d;
-        }
-        double t = emax > 0.0 ? e / emax : 0.0;
-        for (int c = 0; c < 3; c++) {
-            double v = 3.0 * t - c;
-            v = v < 0.0 ? 0.0 : v > 1.0 ? 1.0 : v;
-            out[3 * p + c] = (unsigned char)(v * 255.0 + 0.5);
-        }
-    }
+    for (size_t p = 0; p < n; p++)
+        if (e[p] > emax) emax = e[p];
+    for (size_t p = 0; p < n; p++) pree_false_colour(emax > 0.0 ? e[p] / emax : 0.0, out + 3 * p);
+    free(e);
+    return 0;
 }

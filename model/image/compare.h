@@ -5,6 +5,7 @@
  *   pree_compare_peak       the dynamic range L a reference image implies
  *   pree_compare            all metrics of a test image against a reference image
  *   pree_ssim               SSIM alone, over raw interleaved RGB floats
+ *   pree_ssim_map           SSIM per pixel (the window centred there), and the mean
  *   pree_diff_heatmap       an 8-bit false-colour picture of where two images differ
  *
  * Definitions (docs/compare.md gives them in full): SSIM as Wang et al. 2004 with an 11x11
@@ -45,9 +46,15 @@ int pree_compare(const pree_image_t *ref, const pree_image_t *test, pree_metrics
  * The result does not depend on the number of OpenMP threads. */
 double pree_ssim(const float *a, const float *b, int w, int h, double L);
 
+/* SSIM as pree_ssim, and out[w*h] the per-pixel map: the three channels' mean SSIM of the
+ * window centred on each pixel, NaN within 5 pixels of the border (no valid window). NaN
+ * (and out untouched) when out of memory or w, h < 11. */
+double pree_ssim_map(const float *a, const float *b, int w, int h, double L, double *out);
+
 /* Fill out[w*h*3] with a heat map of e = max over channels |a - b| per pixel: t = e / max e over
  * the image, colour (r, g, b) = 255 * (clamp(3t), clamp(3t-1), clamp(3t-2)) rounded, i.e. black
- * through red and yellow to white. Identical images give an all-black map. */
-void pree_diff_heatmap(const float *a, const float *b, int w, int h, unsigned char *out);
+ * through red and yellow to white. Identical images give an all-black map. Returns 0, or -1
+ * when out of memory. */
+int pree_diff_heatmap(const float *a, const float *b, int w, int h, unsigned char *out);
 
 #endif

@@ -7,6 +7,8 @@
  * first PNG/EXR read or write, so runs that only touch PPM files never pay for it. */
 #include "image.h"
 #include "image_io.h"
+#include "file_in.h"
+#include "atomic_out.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -23,7 +25,8 @@
 #include <dlfcn.h>
 #include <pthread.h>
 
-typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const void *, char *, size_t);
+typedef int (*oiio_write_fn)(const char *, const char *, int, int, int, const void *, const char *const *,
+                             char *, size_t);
 typedef int (*oiio_read_fn)(const char *, pree_image_t *, char *, size_t);
 static oiio_write_fn oiio_write;
 static oiio_read_fn oiio_read;
@@ -158,30 +161,6 @@ static const char *extension(const char *path)
     return dot ? dot + 1 : "";
 }
 
-/* A fresh temporary file beside `path`: "<dir>/.<name>.tmp-<pid>-<n>", created exclusively
- * with mode 0666 less the umask. Returns the open descriptor and fills tmp, or -1. */
-static int make_temp(const char *path, char *tmp, size_t tmplen, char *err, size_t errlen)
-{
-    static atomic_uint counter;
-    const char *slash = strrchr(path, '/');
-    int dirlen = slash ? (int)(slash - path + 1) : 0;
-    const char *name = slash ? slash + 1 : path;
-    if (!*name) return set_err(err, errlen, "%s: %s", path, "not a file name");
-    for (int tries = 0; tries < 100; tries++) {
-        unsigned n = atomic_fetch_add(&counter, 1);
-        int len = snprintf(tmp, tmplen, "%.*s.%s.tmp-%ld-%u", dirlen, path, name, (long)getpid(), n);
-        if (len < 0 || (size_t)len >= tmplen) return set_err(err, errlen, "%s: %s", path, "path too long");
-        int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-        if (fd >= 0) return fd;
-        if (errno != EEXIST) {
-            if (err && errlen) snprintf(err, errlen, "%s: cannot create a temporary file beside it: %s",
-                                        path, strerror(errno));
-            return -1;
-        }
-    }
-    return set_err(err, errlen, "%s: %s", path, "cannot find a free temporary file name");
-}
-
 /* Write smallppm's ASCII P3 from 8-bit values to the open descriptor fd (which it closes). */
 static int write_ppm_fd(int fd, const char *path, int w, int h, const unsigned char *v,
                         char *err, size_t errlen)
@@ -216,17 +195,17 @@ static int write_ppm_fd(int fd, const char *path, int w, int h, const unsigned c
 
 /* Write 8-bit (is_float = 0) or float (1) RGB pixels to path in format ext, atomically. */
 static int write_atomic(const char *path, const char *ext, int w, int h, int is_float,
-                        const void *pixels, char *err, size_t errlen)
+                        const void *pixels, const char *const *meta, char *err, size_t errlen)
 {
     char tmp[4096];
-    int fd = make_temp(path, tmp, sizeof tmp, err, errlen);
+    int fd = atomic_out_begin(path, tmp, sizeof tmp, err, errlen);
     if (fd < 0) return -1;
     int rc;
     if (!strcasecmp(ext, "ppm")) {
         rc = write_ppm_fd(fd, path, w, h, pixels, err, errlen);
     } else {
         close(fd);   /* OpenImageIO opens the file by name and truncates it */
-        rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, err, errlen);
+        rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, meta, err, errlen);
         if (rc && err && errlen) {   /* name the destination, not the temporary */
             size_t tl = strlen(tmp);
             if (!strncmp(err, tmp, tl)) {
@@ -236,15 +215,18 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
             }
         }
     }
-    if (rc == 0 && rename(tmp, path) != 0) {
-        rc = set_err(err, errlen, "%s: cannot rename the finished temporary file over it: %s",
-                     path, strerror(errno));
-    }
-    if (rc) unlink(tmp);
+    if (rc) atomic_out_discard(tmp);
+    else rc = atomic_out_commit(tmp, path, err, errlen);
     return rc;
 }
 
 int pree_image_write(const char *path, int w, int h, const double *rgb, char *err, size_t errlen)
+{
+    return pree_image_write_meta(path, w, h, rgb, NULL, err, errlen);
+}
+
+int pree_image_write_meta(const char *path, int w, int h, const double *rgb, const char *const *meta,
+                          char *err, size_t errlen)
 {
     const char *ext = extension(path);
     int is_exr = !strcasecmp(ext, "exr");
@@ -261,7 +243,7 @@ int pree_image_write(const char *path, int w, int h, const double *rgb, char *er
         unsigned char *u = pix;
         for (size_t i = 0; i < n; i++) u[i] = (unsigned char)pree_tonemap8(rgb[i]);
     }
-    int rc = write_atomic(path, ext, w, h, is_exr, pix, err, errlen);
+    int rc = write_atomic(path, ext, w, h, is_exr, pix, is_exr ? meta : NULL, err, errlen);
     free(pix);
     return rc;
 }
@@ -273,7 +255,7 @@ int pree_image_write_u8(const char *path, int w, int h, const unsigned char *rgb
     if (strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
         return set_err(err, errlen, "%s: unknown 8-bit image extension '%s' (use .png or .ppm)", path, ext);
     if (check_size(w, h, path, err, errlen)) return -1;
-    return write_atomic(path, ext, w, h, 0, rgb, err, errlen);
+    return write_atomic(path, ext, w, h, 0, rgb, NULL, err, errlen);
 }
 
 /* A PNM file being parsed: the whole file in memory and a cursor. */
@@ -353,8 +335,8 @@ int pree_image_read(const char *path, pree_image_t *img, char *err, size_t errle
     img->samples = PREE_SAMPLES_FLOAT;
 
     /* PNM (P2, P3, P5, P6) is read here; everything else by OpenImageIO. */
-    FILE *f = fopen(path, "rb");
-    if (!f) return set_err(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+    FILE *f = file_in_open(path, PREE_INPUT_MAX_BYTES, err, errlen);
+    if (!f) return -1;
     unsigned char magic[2] = {0, 0};
     size_t got = fread(magic, 1, 2, f);
     int pnm = got == 2 && magic[0] == 'P' && (magic[1] == '2' || magic[1] == '3' || magic[1] == '5' || magic[1] == '6');

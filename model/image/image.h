@@ -6,6 +6,7 @@
  *   pree_accum_t               double RGB accumulation image, same layout, with alloc/free
  *   pree_tonemap8              smallppm's toInt: linear radiance to an 8-bit value
  *   pree_image_write           write double RGB pixels; format chosen by the file extension
+ *   pree_image_write_meta      the same, with name/value metadata in EXR headers
  *   pree_image_write_u8        write 8-bit RGB values as they are (.png or .ppm)
  *   pree_image_read            read a .png, .ppm/.pnm or .exr file into a pree_image_t
  *
@@ -55,6 +56,11 @@ int pree_tonemap8(double L);
  *         through OpenImageIO with its default (zip) compression.
  * Any other extension, w or h < 1, or an I/O failure: -1 and the destination is unchanged. */
 int pree_image_write(const char *path, int w, int h, const double *rgb, char *err, size_t errlen);
+
+/* pree_image_write, and for .exr the string attributes meta (name/value pairs ending with a
+ * NULL name; NULL for none) in the file's header; .png and .ppm files get none. */
+int pree_image_write_meta(const char *path, int w, int h, const double *rgb, const char *const *meta,
+                          char *err, size_t errlen);
 
 /* Write 8-bit RGB values unchanged (3 bytes per pixel, row-major, top row first) to a .png,
  * or to a .ppm in the same ASCII layout as above. Atomic like pree_image_write. */

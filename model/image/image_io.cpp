@@ -31,7 +31,7 @@ static int fail(char *err, size_t errlen, const char *path, const char *what, st
 }
 
 extern "C" int pree_oiio_write(const char *path, const char *format, int w, int h, int is_float,
-                               const void *pixels, char *err, size_t errlen)
+                               const void *pixels, const char *const *meta, char *err, size_t errlen)
 {
     try {
         // Create the writer by format name, so the (temporary) file name needs no extension.
@@ -42,6 +42,7 @@ extern "C" int pree_oiio_write(const char *path, const char *format, int w, int 
         // No time stamp (OpenImageIO stamps EXR files with the time otherwise): identical pixels
         // give identical files.
         spec.attribute("DateTime", "");
+        for (size_t k = 0; meta && meta[k]; k += 2) spec.attribute(meta[k], meta[k + 1] ? meta[k + 1] : "");
         if (!out->open(path, spec))
             return fail(err, errlen, path, "cannot open for writing", out->geterror());
         if (!out->write_image(type, pixels)) {

@@ -18,9 +18,11 @@ extern "C" {
 /* Write pixels (3 values per pixel, row-major, top row first) to `path` in the format named by
  * `format` ("png", "exr": an OpenImageIO format or extension name; the name of `path` does not
  * matter). is_float = 0: pixels are unsigned char; 1: pixels are float, stored as 32-bit float.
+ * meta: NULL, or name/value string pairs ending with a NULL name, stored as string attributes
+ * (EXR header attributes).
  * On failure the file at `path` may be partly written: the caller owns its removal. */
 int pree_oiio_write(const char *path, const char *format, int w, int h, int is_float,
-                    const void *pixels, char *err, size_t errlen);
+                    const void *pixels, const char *const *meta, char *err, size_t errlen);
 
 /* Read `path` into *img, as described for pree_image_read in image.h. */
 int pree_oiio_read(const char *path, pree_image_t *img, char *err, size_t errlen);

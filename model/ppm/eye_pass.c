@@ -1,5 +1,6 @@
 /* eye_pass.c: eye rays from the camera to their diffuse hit points, rows in parallel. */
 #include <omp.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "eye_pass.h"
@@ -25,7 +26,7 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     switch (m->kind) {
     case MAT_DIFFUSE:
         /* Store the measurement point; the eye path ends here. */
-        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel)) c->failed = 1;
+        if (hitpoints_push(c->out, h.x, h.n, v3_mul(m->colour, throughput), pixel, (uint32_t)h.object)) c->failed = 1;
         return;
     case MAT_MIRROR:
         eye_trace(c, h.x, optics_reflect(d, h.n), depth, v3_mul(m->colour, throughput), pixel);
@@ -43,24 +44,52 @@ static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, 
     }
 }
 
+/* The image axes of a w x h image: the reference program's camera fixes x to world +x. */
+static void camera_axes(const camera_t *cam, int w, int h, vec3 *dir, vec3 *cx, vec3 *cy)
+{
+    *dir = v3_norm(cam->dir);
+    *cx = cam->has_up ? v3_scale(v3_norm(v3_cross(*dir, cam->up)), w * cam->scale / h)
+                      : v3(w * cam->scale / h, 0, 0);
+    *cy = v3_scale(v3_norm(v3_cross(*cx, *dir)), cam->scale);
+}
+
+/* The tracer (Embree's ray.valid()) takes ray origins with |x| up to 1.8e18 and finite
+ * directions; the corner rays bound every eye ray's origin and direction. */
+int eye_camera_check(const camera_t *cam, int w, int h, char *err, size_t errlen)
+{
+    vec3 dir, cx, cy;
+    camera_axes(cam, w, h, &dir, &cx, &cy);
+    for (int k = 0; k < 4; k++) {
+        vec3 d = v3_add(v3_add(v3_scale(cx, (k & 1) - 0.5), v3_scale(cy, (k >> 1) - 0.5)), dir);
+        vec3 o = v3_add(cam->origin, v3_scale(d, cam->near)), n = v3_norm(d);
+        double m = fmax(fabs(o.x), fmax(fabs(o.y), fabs(o.z)));
+        if (!v3_is_finite(n) || !(m <= 1e17)) {
+            snprintf(err, errlen, "camera: the eye rays (scale %g, near %g, this image size) %s", cam->scale,
+                     cam->near, v3_is_finite(n) ? "start beyond +-1e17, outside the tracer's range"
+                                                : "have no direction (is 'dir' along the x axis without 'up'?)");
+            return -1;
+        }
+    }
+    return 0;
+}
+
 int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t *out,
-             eye_stats_t *stats, char *err, size_t errlen)
+             eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen)
 {
     const camera_t *cam = &scene->camera;
-    vec3 dir = v3_norm(cam->dir);
-    /* Image axes: the reference program's camera fixes x to world +x. */
-    vec3 cx = cam->has_up ? v3_scale(v3_norm(v3_cross(dir, cam->up)), w * cam->scale / h)
-                          : v3(w * cam->scale / h, 0, 0);
-    vec3 cy = v3_scale(v3_norm(v3_cross(cx, dir)), cam->scale);
+    vec3 dir, cx, cy;
+    camera_axes(cam, w, h, &dir, &cx, &cy);
+    if (eye_camera_check(cam, w, h, err, errlen)) return -1;
     hitpoints_t *rows = calloc((size_t)h, sizeof *rows);
     if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
     eye_stats_t total = {0, 0};
-    int failed = 0;
-#pragma omp parallel reduction(+ : failed)
+    int failed = 0, stopped = 0;
+#pragma omp parallel reduction(+ : failed, stopped)
     {
         eye_ctx_t c = {scene, tr, NULL, {0, 0}, 0};
 #pragma omp for schedule(dynamic, 4)
         for (int y = 0; y < h; y++) {
+            if (stopped || stop_requested(stop)) { stopped = 1; continue; }
             c.out = &rows[y];
             for (int x = 0; x < w; x++) {
                 vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
@@ -74,11 +103,14 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
         }
         failed += c.failed;
     }
-    for (int y = 0; y < h && !failed; y++)
+    for (int y = 0; y < h && !failed && !stopped; y++)
         if (hitpoints_append(out, &rows[y])) failed = 1;
     for (int y = 0; y < h; y++) hitpoints_free(&rows[y]);
     free(rows);
-    if (failed) { snprintf(err, errlen, "out of memory in the eye pass"); return -1; }
+    if (failed || stopped) {
+        snprintf(err, errlen, "%s", failed ? "out of memory in the eye pass" : STOP_MESSAGE);
+        return -1;
+    }
     *stats = total;
     return 0;
 }

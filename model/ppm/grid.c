@@ -291,6 +291,7 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char 
         memset(c.keys, 0xFF, size * sizeof(uint64_t));
         for (size_t i = 0; i < h->n; i++)
             if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+        if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
         if (round == 0) { free(c.keys); bound = c.distinct; continue; }
         g->num_buckets = size;
         if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(c.keys); return -1; }
@@ -326,6 +327,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     g->zero_weight_skipped = 0;
     for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
     if (number_cells(g, h, include_zero, err, errlen)) return -1;
+    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
     uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t) = g->dense ? dense_bucket : hashed_bucket;
     /* Parts are counted and filled in parallel: each walks the hit points it owns. */
     int failed = 0;
@@ -372,9 +374,10 @@ static void fill_entries(grid_t *g, const hitpoints_t *h)
 }
 
 int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
-               int num_parts, int include_zero_weight, char *err, size_t errlen)
+               int num_parts, int include_zero_weight, const stop_flag_t *stop, char *err, size_t errlen)
 {
     memset(g, 0, sizeof *g);
+    g->stop = stop;
     g->kind = kind;
     g->num_parts = num_parts;
     g->r0 = r0;
@@ -390,6 +393,7 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
     case GRID_CELLS: rc = build_cells(g, h, width, include_zero_weight, err, errlen); break;
     default: rc = build_brute(g, h, width, err, errlen); break;
     }
+    if (rc == 0 && stop_requested(stop)) { snprintf(err, errlen, STOP_MESSAGE); rc = -1; }
     if (rc == 0) fill_entries(g, h);
     if (rc) grid_free(g);
     return rc;

@@ -16,6 +16,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "hitpoints.h"
+#include "stop.h"
 
 typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 
@@ -61,6 +62,7 @@ typedef struct {
     double r0;               /* initial radius */
     double r_safe;           /* radius within which the fp32 datapath could ever accept */
     size_t zero_weight_skipped;
+    const stop_flag_t *stop; /* build: polled between the passes over the hit points */
 } grid_t;
 
 /* The reference program's initial radius: mean bbox side over mean image side, times 2. */
@@ -78,9 +80,10 @@ static inline int grid_owner(const hitpoints_t *h, size_t i, int width, int num_
 }
 
 /* Build the grid. include_zero_weight: list hit points of weight zero too (GRID_CELLS
- * leaves them out otherwise; the other kinds always list them). */
+ * leaves them out otherwise; the other kinds always list them). 0, or -1 with err (STOP_MESSAGE
+ * when stop was set between passes). */
 int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
-               int num_parts, int include_zero_weight, char *err, size_t errlen);
+               int num_parts, int include_zero_weight, const stop_flag_t *stop, char *err, size_t errlen);
 
 void grid_free(grid_t *g);
 

@@ -23,10 +23,10 @@ static int reserve(hitpoints_t *h, size_t need)
     return 0;
 }
 
-int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel)
+int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel, uint32_t object)
 {
     if (reserve(h, h->n + 1)) return -1;
-    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0, 0};
+    hp_hot_t hot = {pos.x, pos.y, pos.z, nrm.x, nrm.y, nrm.z, 0, object};
     h->r2[h->n] = 0.0;
     h->hot[h->n] = hot;
     h->weight[h->n] = weight;
@@ -38,6 +38,7 @@ int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixe
 
 int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src)
 {
+    if (src->n == 0) return 0;   /* an empty row: its arrays may be NULL (memcpy's contract) */
     if (reserve(dst, dst->n + src->n)) return -1;
     memcpy(dst->hot + dst->n, src->hot, src->n * sizeof *src->hot);
     memcpy(dst->weight + dst->n, src->weight, src->n * sizeof *src->weight);

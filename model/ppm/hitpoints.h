@@ -19,7 +19,7 @@ typedef struct {
     double px, py, pz;   /* position */
     double nx, ny, nz;   /* outward surface normal */
     uint32_t count;      /* accepted photons (double mode) */
-    uint32_t pad;
+    uint32_t object;     /* the object it lies on (hit_t.object) */
 } hp_hot_t;
 
 typedef struct {
@@ -38,7 +38,7 @@ typedef struct {
     uint32_t kappa32;   /* fp32: preu_kappa(alpha32) (stable datapath's run-time constant) */
 } hitpoints_t;
 
-int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel);
+int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel, uint32_t object);
 int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src);
 void hitpoints_free(hitpoints_t *h);
 

@@ -11,21 +11,10 @@
 #include <string.h>
 #include "grid.h"
 #include "hp_order.h"
+#include "morton.h"
 
-#define MORTON_BITS 21
 
 /* Spread the low 21 bits of v to every third bit. */
-static uint64_t spread3(uint64_t v)
-{
-    v &= 0x1FFFFFull;
-    v = (v | v << 32) & 0x001F00000000FFFFull;
-    v = (v | v << 16) & 0x001F0000FF0000FFull;
-    v = (v | v << 8) & 0x100F00F00F00F00Full;
-    v = (v | v << 4) & 0x10C30C30C30C30C3ull;
-    v = (v | v << 2) & 0x1249249249249249ull;
-    return v;
-}
-
 static uint32_t quantize(double x, double lo, double scale)
 {
     double q = (x - lo) * scale;
@@ -51,8 +40,8 @@ uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, doubl
     const double scale = cell > 0 ? 1.0 / cell : 1.0;
     for (size_t i = 0; i < n; i++) {
         const hp_hot_t *p = &h->hot[i];
-        uint64_t key = spread3(quantize(p->px, lo[0], scale)) | spread3(quantize(p->py, lo[1], scale)) << 1 |
-                       spread3(quantize(p->pz, lo[2], scale)) << 2;
+        uint64_t key = morton_spread3(quantize(p->px, lo[0], scale)) | morton_spread3(quantize(p->py, lo[1], scale)) << 1 |
+                       morton_spread3(quantize(p->pz, lo[2], scale)) << 2;
         items[i] = (sort_item_t){key, (uint32_t)grid_owner(h, i, width, num_parts), (uint32_t)i};
     }
     /* Stable LSD radix sort on (part, key); items start in index order, so ties keep it. */

@@ -12,17 +12,15 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "hp_order.h"
-#include "photon_pass.h"
+#include "mem_check.h"
 #include "radiance.h"
-#include "render.h"
-#include "update_batch.h"
+#include "checkpoint.h"
+#include "render_check.h"
+#include "render_session.h"
 
-#define PHOTON_BLOCK 32000u   /* whole batches of 1000 photons */
-#define TRACE_CHUNKS 64u
-_Static_assert(TRACE_CHUNKS <= UPDATE_BATCH_MAX_CHUNKS, "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
 #define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
-static long peak_rss_kb(void)
+long render_peak_rss_kb(void)
 {
     struct rusage ru;
     return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
@@ -71,20 +69,16 @@ static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
     return 0;
 }
 
-typedef struct {
-    photon_hits_t chunk[TRACE_CHUNKS];
-    unsigned long long no_cell;
-} block_buffers_t;
-
 /* Trace the photons of sequence indices [first, first + count) into the ordered chunk buffers;
- * drop hits that reach no hit point's cell when skipping. Returns 0 or -1 (out of memory). */
+ * drop hits that reach no hit point's cell when skipping. Returns 0, -1 (out of memory) or 1
+ * (stop was set: the block is abandoned, the counters untouched). */
 static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
-                       uint64_t first, uint64_t count, block_buffers_t *bb)
+                       uint64_t first, uint64_t count, const stop_flag_t *stop, block_buffers_t *bb)
 {
-    int failed = 0;
+    int failed = 0, stopped = 0;
     unsigned long long no_cell = 0;
     const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
-#pragma omp parallel for schedule(dynamic, 1) reduction(+ : failed, no_cell)
+#pragma omp parallel for schedule(dynamic, 1) reduction(+ : failed, stopped, no_cell)
     for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
         /* Work on a copy: neighbouring chunks share cache lines, and their counters change with
          * every segment and hit. */
@@ -93,7 +87,8 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
         out->n = 0;
         uint64_t lo = first + c * per, hi = lo + per;
         if (hi > first + count) hi = first + count;
-        for (uint64_t i = lo; i < hi && !failed; i++) {
+        for (uint64_t i = lo; i < hi && !failed && !stopped; i++) {
+            if (stop_requested(stop)) { stopped = 1; break; }
             size_t before = out->n;
             if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
             /* Find each hit's bucket once, here in parallel; with skips, drop the hits
@@ -109,11 +104,18 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
         }
         bb->chunk[c] = local;
     }
+    if (failed) return -1;
+    if (stopped) {
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) bb->chunk[c].n = bb->chunk[c].segments = 0;
+        return 1;
+    }
     bb->no_cell += no_cell;
-    return failed ? -1 : 0;
+    return 0;
 }
 
-static void progress(const render_options_t *opt, uint64_t done, uint64_t total, double t0, int *last_decile)
+/* Progress on stderr; a failed write (EPIPE from a closed pipe, SIGPIPE ignored) only stops
+ * the printing, never the render. */
+static void progress(render_options_t *opt, uint64_t done, uint64_t total, double t0, int *last_decile)
 {
     if (!opt->progress) return;
     const int tty = isatty(2);
@@ -123,95 +125,8 @@ static void progress(const render_options_t *opt, uint64_t done, uint64_t total,
     double el = omp_get_wtime() - t0;
     fprintf(stderr, "%spree: photons %llu/%llu (%3.0f%%) %.1fs%s", tty ? "\r" : "", (unsigned long long)done,
             (unsigned long long)total, 100.0 * (double)done / (double)total, el, tty && done < total ? "" : "\n");
-    fflush(stderr);
+    if (fflush(stderr) != 0 || ferror(stderr)) opt->progress = 0;
 }
-
-static uint64_t fnv1a(uint64_t h, const void *data, size_t n)
-{
-    const unsigned char *p = data;
-    for (size_t i = 0; i < n; i++) { h ^= p[i]; h *= 0x100000001b3ull; }
-    return h;
-}
-
-/* Hashes of the image and of the final hit-point state, for determinism checks. */
-static void hash_results(render_result_t *res, precision_t prec)
-{
-    const uint64_t basis = 0xcbf29ce484222325ull;
-    const hitpoints_t *h = &res->hp;
-    res->stats.image_hash = fnv1a(basis, res->rgb, (size_t)res->width * res->height * 3 * sizeof *res->rgb);
-    uint64_t s = basis;
-    if (prec == PRECISION_FP32 && h->stable) s = fnv1a(s, h->stable, h->n * sizeof *h->stable);
-    else if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
-    else {
-        s = fnv1a(s, h->r2, h->n * sizeof *h->r2);
-        s = fnv1a(s, h->flux, h->n * sizeof *h->flux);
-        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->hot[i].count, sizeof h->hot[i].count);
-    }
-    res->stats.state_hash = s;
-}
-
-/* fp32 mode: every photon hit crosses into the PREE as binary32 (update_photon_fp32); a flux or
- * position beyond binary32's range there is an error naming the photon. */
-static int fp32_check_hits(const block_buffers_t *bb, char *err, size_t errlen)
-{
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++)
-        for (size_t i = 0; i < bb->chunk[c].n; i++) {
-            const photon_hit_t *h = &bb->chunk[c].hits[i];
-            const double v[6] = {h->flux.x, h->flux.y, h->flux.z, h->x.x, h->x.y, h->x.z};
-            for (int k = 0; k < 6; k++)
-                if (!isfinite((float)v[k])) {
-                    snprintf(err, errlen, "fp32: photon %llu's %s (%g, %g, %g) is beyond binary32's range at the "
-                             "PREE boundary: scale the light or the scene down, or use --precision double",
-                             (unsigned long long)h->photon, k < 3 ? "flux" : "hit position",
-                             v[k < 3 ? 0 : 3], v[k < 3 ? 1 : 4], v[k < 3 ? 2 : 5]);
-                    return -1;
-                }
-        }
-    return 0;
-}
-
-/* fp32 mode: count the stable datapath's saturated hit points, and refuse an image with an
- * infinite or NaN pixel (docs/numerics.md: what overflows where). */
-static int fp32_result_check(render_result_t *res, char *err, size_t errlen)
-{
-    const hitpoints_t *h = &res->hp;
-    unsigned long long sat = 0;
-    for (size_t i = 0; h->stable && i < h->n; i++) {
-        const preu_shp_t *s = &h->stable[i];
-        sat += s->w == WIDE_MAX || s->T[0] == WIDE_MAX || s->T[1] == WIDE_MAX || s->T[2] == WIDE_MAX;
-    }
-    res->stats.hit_points_saturated = sat;
-    const size_t n = (size_t)res->width * (size_t)res->height * 3;
-    size_t bad = 0, first = 0;
-    for (size_t j = 0; j < n; j++)
-        if (!isfinite(res->rgb[j]) && !bad++) first = j / 3;
-    if (!bad) return 0;
-    snprintf(err, errlen, "fp32: %zu pixel values are infinite or NaN (first at pixel %zu, %zu): a value left "
-             "binary32's range (light flux above 3.4e38, or the %s datapath's radius collapsed); "
-             "try --precision double%s", bad, first % (size_t)res->width, first / (size_t)res->width,
-             h->stable ? "stable" : "paper", h->stable ? "" : " or --datapath stable");
-    return -1;
-}
-
-struct render_session {
-    const scene_t *scene;
-    render_options_t opt;
-    render_result_t *res;
-    double t_start, t_photons;
-    int T, skip, photon_major, interrupted, last_decile;
-    size_t npix;
-    grid_t grid;
-    block_buffers_t *bb;
-    tracer_t *tr;
-    uint32_t *perm;
-    uint16_t *owner;
-    update_batch_t batch;
-    update_scratch_t *scratch;
-    update_stats_t *ust;
-    update_ops_t ops;
-    uint64_t emitted_target, done_photons;
-    int failed;              /* a step failed: close only releases */
-};
 
 static void session_free(render_session_t *s)
 {
@@ -243,6 +158,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->res = res;
     render_stats_t *st = &res->stats;
     s->t_start = omp_get_wtime();
+    const char *phase = "set-up";
     if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
         snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
         goto fail;
@@ -253,14 +169,13 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     }
     if (opt->threads > 0) omp_set_num_threads(opt->threads);
     s->T = opt->record_ops ? 1 : omp_get_max_threads();
+    render_stats_scene(st, scene);
     st->threads = s->T;
-    st->scene_spheres = (unsigned long long)scene->num_spheres;
-    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
-    st->scene_lights = (unsigned long long)scene->num_lights;
-    st->scene_mirror = scene->has_mirror;
-    st->scene_glass = scene->has_glass;
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
+    /* Memory: before anything large, with one hit point a pixel; again with the true count. */
+    if (mem_check(mem_estimate_start(st->scene_triangles, s->npix), opt->max_memory, MEM_START_WHAT, err, errlen))
+        goto fail;
     s->bb = calloc(1, sizeof *s->bb);
     res->rgb = calloc(s->npix * 3, sizeof *res->rgb);
     if (!s->bb || !res->rgb) { snprintf(err, errlen, "out of memory for a %dx%d image", opt->width, opt->height); goto fail; }
@@ -268,15 +183,23 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     res->height = opt->height;
 
     /* Acceleration structure and eye pass. */
+    phase = "BVH build";
+    render_test_interrupt("bvh");
     double t = omp_get_wtime();
-    s->tr = tracer_create(scene, err, errlen);
+    s->tr = tracer_create(scene, opt->interrupt, err, errlen);
     if (!s->tr) goto fail;
     st->sec_bvh = omp_get_wtime() - t;
+    phase = "eye pass";
+    render_test_interrupt("eye");
     t = omp_get_wtime();
     eye_stats_t es;
-    if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, err, errlen)) goto fail;
+    if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) goto fail;
+    if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(scene, opt, &res->hp);
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
+    if (mem_check((uint64_t)res->hp.n * MEM_HIT_POINT_BYTES, opt->max_memory, "the hit points' state and grid",
+                  err, errlen))
+        goto fail;
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
     for (size_t i = 0; i < res->hp.n; i++) {
@@ -285,8 +208,15 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     }
 
     /* Initial radius, hit-point state, and the grid. */
+    phase = "grid build";
+    render_test_interrupt("grid");
     t = omp_get_wtime();
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
+        snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
+                 "bounding box) is 0: use a larger image", res->hp.n);
+        goto fail;
+    }
     if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c). */
     s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
@@ -298,7 +228,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
     if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
-                                !s->skip, err, errlen))
+                                !s->skip, opt->interrupt, err, errlen))
         goto fail;
     st->r_safe = s->grid.r_safe;
     for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
@@ -308,9 +238,11 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->ust = calloc((size_t)s->T, sizeof *s->ust);
     s->scratch = calloc((size_t)s->T, sizeof *s->scratch);
     if (!s->ust || !s->scratch) { snprintf(err, errlen, "out of memory"); goto fail; }
+    if (opt->resume && render_session_resume(s, err, errlen)) goto fail;
     s->t_photons = omp_get_wtime();
     return s;
 fail:
+    if (stop_requested(opt->interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the %s", phase);
     session_free(s);
     return NULL;
 }
@@ -359,13 +291,21 @@ static int step_block(render_session_t *s, char *err, size_t errlen)
     uint64_t count = s->emitted_target - s->done_photons;
     if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
     update_ops_clear(&s->ops);
+    char block_name[32];   /* fault injection: "block1" is this run's first block */
+    snprintf(block_name, sizeof block_name, "block%llu",
+             (unsigned long long)((s->done_photons - s->res->stats.photons_resumed) / PHOTON_BLOCK + 1));
+    render_test_interrupt(block_name);
     double t = omp_get_wtime();
-    if (trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + s->done_photons, count, s->bb)) {
-        snprintf(err, errlen, "out of memory in the photon pass");
-        return -1;
+    const int traced = trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + s->done_photons, count,
+                                   s->opt.interrupt, s->bb);
+    if (traced < 0) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
+    if (traced > 0) {   /* interrupted: the image keeps the whole blocks done */
+        s->interrupted = 1;
+        if (s->opt.progress) fputc('\n', stderr);
+        return 0;
     }
     st->sec_trace += omp_get_wtime() - t;
-    if (s->opt.precision == PRECISION_FP32 && fp32_check_hits(s->bb, err, errlen)) return -1;
+    if (s->opt.precision == PRECISION_FP32 && render_fp32_check_hits(s->bb->chunk, TRACE_CHUNKS, err, errlen)) return -1;
     t = omp_get_wtime();
     if (update_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
     st->sec_update += omp_get_wtime() - t;
@@ -401,12 +341,8 @@ int render_close(render_session_t *s, char *err, size_t errlen)
     render_stats_t *st = &res->stats;
     int rc = -1;
     if (s->failed) goto done;
-    for (int p = 0; p < s->T; p++) {
-        st->upd.candidates += s->ust[p].candidates;
-        st->upd.skipped_radius += s->ust[p].skipped_radius;
-        st->upd.normal_passed += s->ust[p].normal_passed;
-        st->upd.accepted += s->ust[p].accepted;
-    }
+    if (s->interrupted && !s->done_photons) { snprintf(err, errlen, STOP_MESSAGE " during the first photon block"); goto done; }
+    st->upd = render_session_update_totals(s);
     st->photon_hits_no_cell = s->bb->no_cell;
     st->photon_hits += s->bb->no_cell;
     st->photons_emitted = res->hp.n ? s->done_photons : s->emitted_target;
@@ -420,23 +356,23 @@ int render_close(render_session_t *s, char *err, size_t errlen)
         goto done;
     }
     st->sec_radiance = omp_get_wtime() - t;
-    if (s->opt.precision == PRECISION_FP32 && fp32_result_check(res, err, errlen)) goto done;
-    hash_results(res, s->opt.precision);
+    if (s->opt.precision == PRECISION_FP32 && render_fp32_result_check(res, err, errlen)) goto done;
+    render_hash_results(res, s->opt.precision);
     rc = s->interrupted ? 1 : 0;
 done:
     st->sec_total = omp_get_wtime() - s->t_start;
     session_free(s);
-    st->peak_rss_kb = peak_rss_kb();
+    st->peak_rss_kb = render_peak_rss_kb();
     return rc;
 }
 
-int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
-               char *err, size_t errlen)
+void render_stats_scene(render_stats_t *st, const scene_t *scene)
 {
-    render_session_t *s = render_open(scene, opt, res, err, errlen);
-    if (!s) return -1;
-    while (render_step(s, err, errlen) > 0) {}
-    return render_close(s, err, errlen);   /* -1 after a failed step, with its message */
+    st->scene_spheres = (unsigned long long)scene->num_spheres;
+    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
+    st->scene_lights = (unsigned long long)scene->num_lights;
+    st->scene_mirror = scene->has_mirror;
+    st->scene_glass = scene->has_glass;
 }
 
 void render_result_free(render_result_t *res)
@@ -444,4 +380,16 @@ void render_result_free(render_result_t *res)
     free(res->rgb);
     hitpoints_free(&res->hp);
     memset(res, 0, sizeof *res);
+}
+
+update_stats_t render_session_update_totals(const render_session_t *s)
+{
+    update_stats_t u = {0, 0, 0, 0};
+    for (int p = 0; p < s->T; p++) {
+        u.candidates += s->ust[p].candidates;
+        u.skipped_radius += s->ust[p].skipped_radius;
+        u.normal_passed += s->ust[p].normal_passed;
+        u.accepted += s->ust[p].accepted;
+    }
+    return u;
 }

@@ -1,8 +1,12 @@
 /* render.h: one progressive photon mapping render: eye pass, grid, photon pass with ordered
  * updates, radiance evaluation. The output image is bit-identical for every thread count.
  *
- * render_run() returns 0 (complete), 1 (interrupted: the image holds the whole photon
- * batches done so far) or -1 with a one-line message in err. An fp32 render whose image holds
+ * With opt->estimator = ESTIMATOR_PM it is the photon-map estimator instead (model/pm/).
+ *
+ * render_run() returns 0 (complete, or stopped by the time limit: stats.time_limited), 1
+ * (interrupted: the image holds the whole photon blocks done so far) or -1 with a one-line
+ * message in err (STOP_MESSAGE when interrupted before the first photon block was done: the BVH
+ * build, eye pass, grid build and photon tracing poll the interrupt flag). An fp32 render whose image holds
  * an infinity or a NaN (binary32 overflow of the light's flux, or the paper datapath's radius
  * collapsing) is an error (-1), never a silent image. */
 #ifndef PREE_RENDER_H
@@ -14,10 +18,16 @@
 #include "eye_pass.h"
 #include "grid.h"
 #include "hitpoints.h"
+#include "pm_stats.h"
 #include "scene.h"
 #include "update.h"
 
 typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
+typedef enum { ESTIMATOR_PPM = 0, ESTIMATOR_PM = 1 } estimator_t;
+typedef enum { KNN_CLUSTERED = 0, KNN_NAIVE = 1 } knn_search_t;
+
+#define RENDER_PHOTON_BLOCK 32000u            /* photons traced and applied together */
+#define RENDER_CHECKPOINT_EVERY (32ull * RENDER_PHOTON_BLOCK)
 
 typedef struct {
     int width, height;
@@ -32,9 +42,25 @@ typedef struct {
     update_scan_t scan;      /* SCAN_BUCKET (default): update_batch.c; SCAN_PHOTON: update_part, the oracle */
     int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
-    volatile sig_atomic_t *interrupt;   /* set to stop after the current photon block */
+    volatile sig_atomic_t *interrupt;   /* set to stop: the photon block in progress is abandoned */
+    double time_limit;       /* render_run: > 0: stop after the block in progress once this many
+                              * seconds have passed since render_open began */
+    const char *checkpoint;  /* render_run: write the state here (model/ppm/checkpoint.h) every
+                              * checkpoint_every photons and when the photon pass ends or stops */
+    uint64_t checkpoint_every; /* 0: RENDER_CHECKPOINT_EVERY */
+    const char *resume;      /* render_open: continue from this checkpoint */
+    uint64_t max_memory;     /* bytes the render may hold (mem_check.h); 0: RLIMIT_AS and MemAvailable */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
                               * update then runs photon-major on one thread */
+    /* The photon-map estimator (--estimator pm, model/pm/): the k nearest photons of each hit
+     * point within max_radius, found by knn_search; photons traced in task units. */
+    estimator_t estimator;   /* ESTIMATOR_PPM (default) or ESTIMATOR_PM */
+    int knn_k;               /* 0: 50 */
+    double max_radius;       /* 0: the PPM initial radius */
+    knn_search_t knn_search; /* KNN_CLUSTERED (default) or KNN_NAIVE (the oracle) */
+    int cluster_bundle;      /* 0: 2000 shading points a bundle */
+    int task_photons;        /* photons per tracing task unit (0: 1000) */
+    int task_static;         /* 1: static shares instead of the shared task queue */
 } render_options_t;
 
 typedef struct {
@@ -52,7 +78,11 @@ typedef struct {
     unsigned long long scene_spheres, scene_triangles, scene_lights;
     int scene_mirror, scene_glass;
     uint64_t image_hash;     /* FNV-1a over the pixels' double bits */
-    uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words) */
+    uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words;
+                              * the photon-map estimator: each hit point's radiance) */
+    pm_stats_t pm;           /* the photon-map estimator's figures */
+    unsigned long long photons_resumed; /* photons done in the checkpoint the render resumed from */
+    int time_limited;        /* the time limit stopped the photon pass early */
 } render_stats_t;
 
 typedef struct {
@@ -64,6 +94,10 @@ typedef struct {
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen);
+/* The process's peak resident memory so far, KiB. */
+long render_peak_rss_kb(void);
+/* The scene-content figures of the statistics. */
+void render_stats_scene(render_stats_t *st, const scene_t *scene);
 
 /* The same render driven step by step by its caller, who may look at each block's operations:
  *   render_open       eye pass, initial state, grid; NULL with err on failure (res is then to

@@ -14,7 +14,7 @@ static const json_field_t counts[] = {
     SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
     SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
     SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
-    S(image_hash, JF_HEX64), S(state_hash, JF_HEX64),
+    S(image_hash, JF_HEX64), S(state_hash, JF_HEX64), S(time_limited, JF_BOOL), S(photons_resumed, JF_U64),
 };
 static const json_field_t contents[] = {
     SK(scene_spheres, JF_U64, "spheres"), SK(scene_triangles, JF_U64, "triangles"),
@@ -26,9 +26,22 @@ static const json_field_t seconds[] = {
     SK(sec_total, JF_REAL, "total"),
 };
 
-static const char *grid_name(grid_kind_t g)
+#define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
+static const json_field_t pm_fields[] = {
+    P(photons_stored, JF_U64), P(k, JF_U64), P(max_radius, JF_REAL), P(clusters, JF_U64),
+    P(clusters_sparse, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
+    P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_cluster, JF_REAL),
+    P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
+};
+
+const char *stats_grid_name(grid_kind_t g)
 {
     return g == GRID_SMALLPPM ? "smallppm" : g == GRID_BRUTE ? "brute" : "cells";
+}
+
+const char *stats_datapath_name(const render_options_t *opt)
+{
+    return opt->precision != PRECISION_FP32 ? "none" : opt->datapath == DATAPATH_STABLE ? "stable" : "paper";
 }
 
 json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted)
@@ -39,11 +52,10 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_u64(o, "width", (uint64_t)opt->width);
     json_set_u64(o, "height", (uint64_t)opt->height);
     json_set_str(o, "precision", opt->precision == PRECISION_FP32 ? "fp32" : "double");
-    json_set_str(o, "grid", grid_name(opt->grid));
+    json_set_str(o, "grid", stats_grid_name(opt->grid));
     json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
     json_set_u64(o, "threads", (uint64_t)st->threads);
-    json_set_str(o, "datapath", opt->precision != PRECISION_FP32 ? "none"
-                                : opt->datapath == DATAPATH_STABLE ? "stable" : "paper");
+    json_set_str(o, "datapath", stats_datapath_name(opt));
     json_set_real(o, "alpha", render_alpha(opt));
     json_set_bool(o, "interrupted", interrupted);
     json_set_u64(o, "photon_offset", opt->photon_offset);
@@ -51,6 +63,12 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_fields(o, st, counts, N(counts));
     json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);
     json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
+    if (opt->estimator == ESTIMATOR_PM) {
+        json_t *pm = json_fields(st, pm_fields, N(pm_fields));
+        json_set_str(pm, "knn_search", opt->knn_search == KNN_NAIVE ? "naive" : "clustered");
+        json_object_set_new(o, "pm", pm);
+    }
+    json_set_str(o, "estimator", opt->estimator == ESTIMATOR_PM ? "pm" : "ppm");
     return o;
 }
 

@@ -8,6 +8,10 @@
 
 int stats_json_write(const char *path, const char *scene, const render_options_t *opt,
                      const render_stats_t *st, int interrupted, char *err, size_t errlen);
+/* The names the statistics (and the EXR metadata) give: "cells", "smallppm", "brute"; "paper",
+ * "stable", or "none" for the double mode. */
+const char *stats_grid_name(grid_kind_t g);
+const char *stats_datapath_name(const render_options_t *opt);
 /* The statistics as a JSON object (NULL when out of memory); the caller releases it. */
 json_t *stats_json(const char *scene, const render_options_t *opt, const render_stats_t *st, int interrupted);
 

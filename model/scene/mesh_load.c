@@ -173,7 +173,7 @@ static int resolve_material(scene_t *s, const mesh_opts_t *o, const struct aiMat
     snprintf(want, sizeof want, "%.40s:%.22s", base, name.data);
     for (int k = 1; k < 1000; k++) {
         if (k == 1) snprintf(m.name, sizeof m.name, "%s", want);
-        else snprintf(m.name, sizeof m.name, "%.55s#%d", want, k);
+        else snprintf(m.name, sizeof m.name, "%.55s#%u", want, (unsigned)k % 1000u);   /* k < 1000 */
         int id = scene_find_material(s, m.name);
         if (id < 0) return scene_add_material(s, &m, err, errlen);
         const material_t *e = &s->materials[id];
@@ -277,6 +277,12 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
             if (!v3_is_finite(p) || !isfinite(dst[0]) || !isfinite(dst[1]) || !isfinite(dst[2])) {
                 snprintf(err, errlen, "%s: vertex %zu is not finite%s", path, v0 + k + 1,
                          v3_is_finite(p) ? " after the transform (or beyond float range)" : "");
+                rc = -1;
+                break;
+            }
+            if (fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))) > SCENE_COORD_MAX) {
+                snprintf(err, errlen, "%s: vertex %zu lies beyond +-%g (the range the tracer and binary32 hold)%s",
+                         path, v0 + k + 1, SCENE_COORD_MAX, " after the transform");
                 rc = -1;
                 break;
             }

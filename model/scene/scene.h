@@ -59,10 +59,21 @@ typedef struct {
     vec3 up;
 } camera_t;
 
+/* The largest magnitude of a scene coordinate, radius or distance: Embree's rays hold origins
+ * up to |x| = 1.8e18 (ray.valid()), and binary32 squared distances need |x| below ~1.8e19;
+ * 1e15 leaves a margin for sums of coordinates and the camera's near offset. */
+#define SCENE_COORD_MAX 1e15
+/* The camera's scale (the image plane's height at distance 1) lies in [1e-6, 1e6]. */
+#define SCENE_SCALE_MIN 1e-6
+#define SCENE_SCALE_MAX 1e6
+
 typedef struct {
     char path[512];
     camera_t camera;
     material_t *materials; int num_materials;
+    int materials_cap;     /* scene_materials.c: the array's capacity and its index by name */
+    int *mat_index;        /* open addressing: material id + 1, 0 empty */
+    size_t mat_index_cap, mat_index_used;
     sphere_t *spheres;     int num_spheres;
     mesh_t *meshes;        int num_meshes;
     light_t *lights;       int num_lights;
@@ -79,5 +90,7 @@ void scene_free(scene_t *scene);
 /* Add a material, returning its index, or -1 if the name exists (err filled). */
 int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen);
 int scene_find_material(const scene_t *scene, const char *name);
+/* Free the materials and their index (scene_free calls it). */
+void scene_materials_free(scene_t *scene);
 
 #endif

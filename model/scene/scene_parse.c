@@ -11,6 +11,8 @@
 #include "scene.h"
 #include "mesh_load.h"
 #include "mesh_light.h"
+#include "file_in.h"
+#include "text_escape.h"
 
 #define MAX_TOKENS 64
 #define SCENE_LINE_MAX (1 << 20)   /* bytes in one line, comments included */
@@ -20,6 +22,7 @@ typedef struct {
     int line;
     char *err;
     size_t errlen;
+    int camera_line, depth_line, epsilon_line;   /* where each singleton was given, or 0 */
 } parse_ctx_t;
 
 static int fail(parse_ctx_t *pc, const char *fmt, ...)
@@ -29,8 +32,25 @@ static int fail(parse_ctx_t *pc, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
-    snprintf(pc->err, pc->errlen, "%s:%d: %s", pc->file, pc->line, msg);
+    char safe[sizeof msg * 4];
+    text_escape(msg, safe, sizeof safe);   /* the scene's bytes never reach the terminal raw */
+    snprintf(pc->err, pc->errlen, "%s:%d: %s", pc->file, pc->line, safe);
     return -1;
+}
+
+/* A directive that may appear once: fail when it was given before (first on *seen). */
+static int once(parse_ctx_t *pc, int *seen, const char *what)
+{
+    if (*seen) return fail(pc, "%s is given twice (first on line %d)", what, *seen);
+    *seen = pc->line;
+    return 0;
+}
+
+/* Fail when a directive has values after its last one. */
+static int no_more(parse_ctx_t *pc, char **tok, int ntok, int n, const char *what)
+{
+    if (ntok > n) return fail(pc, "%s: unexpected '%s'", what, tok[n]);
+    return 0;
 }
 
 /* A number, or a sum "A+B" / "A-B" of two numbers evaluated in double (so that the
@@ -53,12 +73,35 @@ static int parse_number(parse_ctx_t *pc, const char *tok, double *out)
     return 0;
 }
 
-static int parse_vec(parse_ctx_t *pc, char **tok, vec3 *out)
+/* A number of magnitude at most SCENE_COORD_MAX: a coordinate, radius or distance. */
+static int parse_coord(parse_ctx_t *pc, const char *tok, double *out)
 {
-    double x, y, z;
-    if (parse_number(pc, tok[0], &x) || parse_number(pc, tok[1], &y) || parse_number(pc, tok[2], &z))
-        return -1;
-    *out = v3(x, y, z);
+    if (parse_number(pc, tok, out)) return -1;
+    if (fabs(*out) > SCENE_COORD_MAX)
+        return fail(pc, "value '%s' lies beyond +-%g, the range the tracer and binary32 hold", tok, SCENE_COORD_MAX);
+    return 0;
+}
+
+/* Three numbers; bounded by SCENE_COORD_MAX unless raw (light power: docs/scene_format.md). */
+static int parse_vec3(parse_ctx_t *pc, char **tok, int raw, vec3 *out)
+{
+    double v[3];
+    for (int k = 0; k < 3; k++)
+        if (raw ? parse_number(pc, tok[k], &v[k]) : parse_coord(pc, tok[k], &v[k])) return -1;
+    *out = v3(v[0], v[1], v[2]);
+    return 0;
+}
+
+static int parse_vec(parse_ctx_t *pc, char **tok, vec3 *out) { return parse_vec3(pc, tok, 0, out); }
+
+/* Light power R G B: not negative, and finite after scale (intensity * 4 pi). */
+static int parse_power(parse_ctx_t *pc, char **tok, double scale, vec3 *out)
+{
+    vec3 v;
+    if (parse_vec3(pc, tok, 1, &v)) return -1;
+    if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
+    *out = v3_scale(v, scale);
+    if (!v3_is_finite(*out)) return fail(pc, "light power %s %s %s overflows double", tok[0], tok[1], tok[2]);
     return 0;
 }
 
@@ -71,26 +114,6 @@ static int need(parse_ctx_t *pc, int ntok, int n, const char *usage)
 static void *grow(void *p, int count, size_t elem)
 {
     return realloc(p, (size_t)(count + 1) * elem);
-}
-
-int scene_find_material(const scene_t *scene, const char *name)
-{
-    for (int i = 0; i < scene->num_materials; i++)
-        if (!strcmp(scene->materials[i].name, name)) return i;
-    return -1;
-}
-
-int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen)
-{
-    if (scene_find_material(scene, m->name) >= 0) {
-        snprintf(err, errlen, "material '%s' is defined twice", m->name);
-        return -1;
-    }
-    material_t *mats = grow(scene->materials, scene->num_materials, sizeof *mats);
-    if (!mats) { snprintf(err, errlen, "out of memory"); return -1; }
-    scene->materials = mats;
-    mats[scene->num_materials] = *m;
-    return scene->num_materials++;
 }
 
 static int material_ref(parse_ctx_t *pc, const scene_t *s, const char *name, int *out)
@@ -106,6 +129,7 @@ static int material_ref(parse_ctx_t *pc, const scene_t *s, const char *name, int
 static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     camera_t c = {0};
+    if (once(pc, &pc->camera_line, "camera")) return -1;
     int have_origin = 0, have_dir = 0, have_scale = 0;
     for (int i = 1; i < ntok;) {
         const char *key = tok[i];
@@ -126,6 +150,7 @@ static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
             c.has_up = 1; i += 4;
         } else if (!strcmp(key, "scale") && i + 1 < ntok) {
             if (parse_number(pc, tok[i + 1], &c.scale)) return -1;
+            if (!(c.scale > 0)) return fail(pc, "camera: scale must be positive");
             have_scale = 1; i += 2;
         } else if (!strcmp(key, "fov") && i + 1 < ntok) {
             double deg;
@@ -134,7 +159,7 @@ static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
             c.scale = 2.0 * tan(deg * PREE_PI / 360.0);
             have_scale = 1; i += 2;
         } else if (!strcmp(key, "near") && i + 1 < ntok) {
-            if (parse_number(pc, tok[i + 1], &c.near)) return -1;
+            if (parse_coord(pc, tok[i + 1], &c.near)) return -1;
             i += 2;
         } else {
             return fail(pc, "camera: unexpected '%s'", key);
@@ -145,7 +170,9 @@ static int parse_camera(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     if (v3_dot(c.dir, c.dir) == 0) return fail(pc, "camera: the view direction is zero");
     if (c.has_up && v3_dot(v3_cross(c.dir, c.up), v3_cross(c.dir, c.up)) == 0)
         return fail(pc, "camera: 'up' is parallel to the view direction");
-    if (!(c.scale > 0)) return fail(pc, "camera: scale must be positive");
+    if (!(c.scale >= SCENE_SCALE_MIN && c.scale <= SCENE_SCALE_MAX))
+        return fail(pc, "camera: scale %g is not in [%g, %g] (a fov gives scale 2 tan(fov/2))", c.scale,
+                    SCENE_SCALE_MIN, SCENE_SCALE_MAX);
     if (c.near < 0) return fail(pc, "camera: near must not be negative");
     s->camera = c;
     return 1;
@@ -168,6 +195,7 @@ static int parse_material(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     m.ior = 1.5;
     int i = 6;
     if (i < ntok && !strcmp(tok[i], "ior")) {
+        if (m.kind != MAT_GLASS) return fail(pc, "material '%s': 'ior' applies to glass only", m.name);
         if (i + 1 >= ntok) return fail(pc, "material '%s': 'ior' needs a value", m.name);
         if (parse_number(pc, tok[i + 1], &m.ior)) return -1;
         if (!(m.ior >= 1.0 && m.ior <= 10.0)) return fail(pc, "material '%s': ior %g is not in [1, 10]", m.name, m.ior);
@@ -183,9 +211,9 @@ static int parse_material(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 static int parse_sphere(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     if (need(pc, ntok, 6, "sphere RADIUS X Y Z MATERIAL") ) return -1;
-    if (ntok > 6) return fail(pc, "sphere: unexpected '%s'", tok[6]);
+    if (no_more(pc, tok, ntok, 6, "sphere")) return -1;
     sphere_t sp;
-    if (parse_number(pc, tok[1], &sp.radius) || parse_vec(pc, tok + 2, &sp.centre)) return -1;
+    if (parse_coord(pc, tok[1], &sp.radius) || parse_vec(pc, tok + 2, &sp.centre)) return -1;
     if (!(sp.radius > 0)) return fail(pc, "sphere radius must be positive");
     if (material_ref(pc, s, tok[5], &sp.material)) return -1;
     sphere_t *arr = grow(s->spheres, s->num_spheres, sizeof *arr);
@@ -200,12 +228,11 @@ static int parse_sphere(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 static int parse_light_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     if (need(pc, ntok, 15, "light triangle X Y Z X Y Z X Y Z radiance|flux R G B")) return -1;
-    if (ntok > 15) return fail(pc, "light: unexpected '%s'", tok[15]);
+    if (no_more(pc, tok, ntok, 15, "light")) return -1;
     vec3 p[3], v;
     for (int k = 0; k < 3; k++)
         if (parse_vec(pc, tok + 2 + 3 * k, &p[k])) return -1;
-    if (parse_vec(pc, tok + 12, &v)) return -1;
-    if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
+    if (parse_power(pc, tok + 12, 1.0, &v)) return -1;
     int is_flux;
     if (!strcmp(tok[11], "radiance")) is_flux = 0;
     else if (!strcmp(tok[11], "flux")) is_flux = 1;
@@ -224,16 +251,15 @@ static int parse_light(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
     const char *usage = "light point X Y Z intensity|flux R G B";
     if (need(pc, ntok, 9, usage)) return -1;
     if (strcmp(tok[1], "point")) return fail(pc, "unknown light kind '%s' (point or triangle)", tok[1]);
-    if (ntok > 9) return fail(pc, "light: unexpected '%s'", tok[9]);
+    if (no_more(pc, tok, ntok, 9, "light")) return -1;
     light_t l;
     memset(&l, 0, sizeof l);
     l.kind = LIGHT_POINT;
-    vec3 v;
-    if (parse_vec(pc, tok + 2, &l.position) || parse_vec(pc, tok + 6, &v)) return -1;
-    if (v.x < 0 || v.y < 0 || v.z < 0) return fail(pc, "light power must not be negative");
-    if (!strcmp(tok[5], "intensity")) l.flux = v3_scale(v, PREE_PI * 4.0);
-    else if (!strcmp(tok[5], "flux")) l.flux = v;
-    else return fail(pc, "light: expected 'intensity' or 'flux', found '%s'", tok[5]);
+    int is_flux = !strcmp(tok[5], "flux");
+    if (!is_flux && strcmp(tok[5], "intensity"))
+        return fail(pc, "light: expected 'intensity' or 'flux', found '%s'", tok[5]);
+    if (parse_vec(pc, tok + 2, &l.position) || parse_power(pc, tok + 6, is_flux ? 1.0 : PREE_PI * 4.0, &l.flux))
+        return -1;
     light_t *arr = grow(s->lights, s->num_lights, sizeof *arr);
     if (!arr) return fail(pc, "out of memory");
     s->lights = arr;
@@ -245,7 +271,7 @@ static int parse_light(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 static int parse_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     if (need(pc, ntok, 11, "triangle X Y Z X Y Z X Y Z MATERIAL")) return -1;
-    if (ntok > 11) return fail(pc, "triangle: unexpected '%s'", tok[11]);
+    if (no_more(pc, tok, ntok, 11, "triangle")) return -1;
     vec3 p[3];
     int mat = -1;
     for (int k = 0; k < 3; k++)
@@ -261,7 +287,8 @@ static int parse_triangle(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 static int parse_depth(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     double d;
-    if (need(pc, ntok, 2, "depth N")) return -1;
+    if (need(pc, ntok, 2, "depth N") || no_more(pc, tok, ntok, 2, "depth") || once(pc, &pc->depth_line, "depth"))
+        return -1;
     if (parse_number(pc, tok[1], &d)) return -1;
     if (d != floor(d) || d < 1 || d > 20)
         return fail(pc, "depth %s is not an integer in 1..20 (the Halton dimensions end at 61)", tok[1]);
@@ -272,7 +299,9 @@ static int parse_depth(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 static int parse_epsilon(parse_ctx_t *pc, scene_t *s, char **tok, int ntok)
 {
     double e;
-    if (need(pc, ntok, 2, "epsilon E")) return -1;
+    if (need(pc, ntok, 2, "epsilon E") || no_more(pc, tok, ntok, 2, "epsilon") ||
+        once(pc, &pc->epsilon_line, "epsilon"))
+        return -1;
     if (parse_number(pc, tok[1], &e)) return -1;
     if (!(e > 0 && e <= 1e30)) return fail(pc, "epsilon %s is not a positive distance up to 1e30", tok[1]);
     s->epsilon = e;
@@ -324,9 +353,9 @@ static int scene_validate(parse_ctx_t *pc, scene_t *s)
 
 int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
 {
-    parse_ctx_t pc = {path, 0, err, errlen};
-    FILE *f = fopen(path, "r");
-    if (!f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
+    parse_ctx_t pc = {path, 0, err, errlen, 0, 0, 0};
+    FILE *f = file_in_open(path, PREE_INPUT_MAX_BYTES, err, errlen);
+    if (!f) return -1;
     scene_t s;
     memset(&s, 0, sizeof s);
     snprintf(s.path, sizeof s.path, "%s", path);
@@ -343,7 +372,9 @@ int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
          * stop at it and drop the rest of the line). */
         if (got > SCENE_LINE_MAX) { rc = fail(&pc, "line longer than %d bytes", SCENE_LINE_MAX); break; }
         if (strlen(line) != (size_t)got) { rc = fail(&pc, "binary data (a NUL byte)"); break; }
-        int ntok = tokenize(line, tok);
+        /* A UTF-8 byte-order mark (as some editors write) before the first line is skipped. */
+        size_t bom = pc.line == 1 && !strncmp(line, "\xEF\xBB\xBF", 3) ? 3 : 0;
+        int ntok = tokenize(line + bom, tok);
         if (ntok < 0) { rc = fail(&pc, "too many values on one line"); break; }
         if (ntok == 0) continue;
         size_t d;
@@ -365,7 +396,7 @@ void scene_free(scene_t *s)
 {
     for (int i = 0; i < s->num_meshes; i++) mesh_free(&s->meshes[i]);
     free(s->meshes);
-    free(s->materials);
+    scene_materials_free(s);
     free(s->spheres);
     for (int i = 0; i < s->num_lights; i++) free(s->lights[i].tris);
     free(s->lights);

@@ -1,5 +1,6 @@
 /* tracer.c: Embree 3 scene of user-geometry spheres (intersected in double) and triangles. */
 #include <embree3/rtcore.h>
+#include <stdbool.h>
 #include <float.h>
 #include <math.h>
 #include <omp.h>
@@ -38,6 +39,7 @@ typedef struct {
 static void embree_error(void *user, enum RTCError code, const char *msg)
 {
     (void)user;
+    if (code == RTC_ERROR_CANCELLED) return;   /* a stop request: tracer_create reports it */
     fprintf(stderr, "pree: embree error %d: %s\n", (int)code, msg ? msg : "");
 }
 
@@ -162,7 +164,14 @@ static int add_mesh(tracer_t *tr, unsigned mesh_index, char *err, size_t errlen)
     return 0;
 }
 
-tracer_t *tracer_create(const scene_t *scene, char *err, size_t errlen)
+/* Embree's build progress callback: returning false cancels the build. */
+static bool build_monitor(void *stop, double done)
+{
+    (void)done;
+    return !stop_requested(stop);
+}
+
+tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err, size_t errlen)
 {
     tracer_t *tr = calloc(1, sizeof *tr);
     if (!tr) { snprintf(err, errlen, "out of memory"); return NULL; }
@@ -175,13 +184,14 @@ tracer_t *tracer_create(const scene_t *scene, char *err, size_t errlen)
     tr->scene = rtcNewScene(tr->device);
     rtcSetSceneFlags(tr->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(tr->scene, RTC_BUILD_QUALITY_HIGH);
+    if (stop) rtcSetSceneProgressMonitorFunction(tr->scene, build_monitor, (void *)stop);
     int rc = 0;
     if (scene->num_spheres > 0) rc = add_spheres(tr, err, errlen);
     for (int i = 0; rc == 0 && i < scene->num_meshes; i++) rc = add_mesh(tr, (unsigned)i, err, errlen);
     if (rc == 0) {
         rtcCommitScene(tr->scene);
-        if (rtcGetDeviceError(tr->device) != RTC_ERROR_NONE) {
-            snprintf(err, errlen, "embree: scene build failed");
+        if (rtcGetDeviceError(tr->device) != RTC_ERROR_NONE || stop_requested(stop)) {
+            snprintf(err, errlen, "%s", stop_requested(stop) ? STOP_MESSAGE : "embree: scene build failed");
             rc = -1;
         }
     }
@@ -231,6 +241,7 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
         hit->x = v3_add(o, v3_scale(d, ctx.best_t));
         hit->n = v3_norm(v3_sub(hit->x, s->centre));
         hit->material = s->material;
+        hit->object = ctx.best_sphere;
         return 1;
     }
     const mesh_t *m = &tr->src->meshes[tr->mesh_of_geom[rh.hit.geomID]];
@@ -252,5 +263,6 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
     /* Triangles have no outside: their normal faces the incoming ray. */
     hit->n = v3_dot(n, d) < 0 ? n : v3_scale(n, -1.0);
     hit->material = m->tri_material[rh.hit.primID];
+    hit->object = tr->src->num_spheres + (int)tr->mesh_of_geom[rh.hit.geomID];
     return 1;
 }

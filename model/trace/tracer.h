@@ -3,12 +3,14 @@
  * (carried in an extended intersect context) exactly as the reference program does;
  * triangles are Embree's native triangle geometry.
  *
- * tracer_create() returns NULL with a one-line message in err on failure. */
+ * tracer_create() returns NULL with a one-line message in err on failure, STOP_MESSAGE when
+ * stop was set during the build (Embree's progress monitor polls it). */
 #ifndef PREE_TRACER_H
 #define PREE_TRACER_H
 
 #include <stddef.h>
 #include "scene.h"
+#include "stop.h"
 
 /* Rays start this far along their direction from a surface (triangles), and a sphere hit
  * closer than this is ignored, as in the reference program: the scene's `epsilon` (scene_t),
@@ -22,9 +24,10 @@ typedef struct {
     vec3 x;         /* hit position o + d * t */
     vec3 n;         /* unit normal: outward for spheres; facing the ray for triangles */
     int material;
+    int object;     /* sphere s: s; mesh m: num_spheres + m (the photon-map estimator groups by it) */
 } hit_t;
 
-tracer_t *tracer_create(const scene_t *scene, char *err, size_t errlen);
+tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err, size_t errlen);
 void tracer_destroy(tracer_t *tr);
 
 /* Closest hit along o + t d, t > epsilon; returns 1 and fills *hit, or 0 on a miss.

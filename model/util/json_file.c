@@ -1,23 +1,19 @@
-/* json_file.c: JSON files through jansson, written atomically (see json_file.h). */
+/* json_file.c: JSON files through jansson, written atomically (model/util/atomic_out.h). */
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
+#include "atomic_out.h"
 #include "json_file.h"
 
 int json_file_write(const char *path, json_t *v, char *err, size_t errlen)
 {
     if (!v) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
     char tmp[4096];
-    int len = snprintf(tmp, sizeof tmp, "%s.tmp.%ld", path, (long)getpid());
-    if (len < 0 || (size_t)len >= sizeof tmp) {
-        snprintf(err, errlen, "%s: path too long", path);
-        json_decref(v);
-        return -1;
-    }
-    FILE *f = fopen(tmp, "w");
+    int fd = atomic_out_begin(path, tmp, sizeof tmp, err, errlen);
+    FILE *f = fd < 0 ? NULL : fdopen(fd, "w");
     if (!f) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        if (fd >= 0) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); close(fd); atomic_out_discard(tmp); }
         json_decref(v);
         return -1;
     }
@@ -25,13 +21,12 @@ int json_file_write(const char *path, json_t *v, char *err, size_t errlen)
     json_decref(v);
     int saved = errno;
     if (fclose(f) != 0) { bad = 1; saved = errno; }
-    if (!bad && rename(tmp, path) != 0) { bad = 1; saved = errno; }
     if (bad) {
         snprintf(err, errlen, "%s: %s", path, saved ? strerror(saved) : "write failed");
-        unlink(tmp);
+        atomic_out_discard(tmp);
         return -1;
     }
-    return 0;
+    return atomic_out_commit(tmp, path, err, errlen);   /* over a regular file only */
 }
 
 int json_file_print(FILE *f, json_t *v)

@@ -4,7 +4,8 @@
  * of model/pree/adiso_order.h. Compares every word and prints the first mismatches.
  *
  * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--pipe-fast] [--alpha A] [--scenario random|one|dense|mixed|abank]
- *                  [--photons N] [--hp N] [--gap P] [--no-reorder] [--seed S] [--trace FILE.fst]
+ *                  [--photons N] [--hp N] [--gap P] [--stall P] [--no-reorder] [--seed S] [--trace FILE.fst]
+ *                  [--reset-at K] [--hold-reset] [--wait-limit N]
  *   random  photons with 1..40 random distinct candidates among --hp hit points
  *   one     every photon hits hit point 0 (and nothing else): in-flight hazards every cycle
  *   dense   few pixels with dozens of hit points each, photons on small neighbourhoods
@@ -15,8 +16,15 @@
  *           reads one index bank twice (stage-A bank conflicts in update mode). The results
  *           must stay bit-exact and the abank counter must be non-zero.
  * In the other scenarios the driver places the entries as docs/pree_top.md "Host protocol" says,
- * and the update pass's abank counter must be zero. --pipe-fast: the PipeFast = 1 model (the deep
- * PREU pipeline; its hazard windows follow from it).
+ * and the update pass's abank counter must be zero.
+ * Faults (not with abank): --gap P idles the photon input, --stall P writes fewer index entries
+ * than the port takes and idles the hit-point load, each in a cycle with probability P;
+ * --reset-at K resets pree_top (rst_ni low 2 cycles) after K photons were streamed, in mid-pass,
+ * then reloads the hit points and streams every photon again with a fresh driver: the results
+ * and every counter must equal a run without the reset. --hold-reset holds rst_ni low while the
+ * photons stream: the driver's bounded wait (--wait-limit cycles) must fail, naming its state
+ * (exit status 3 when it does, 1 when it does not).
+ * --pipe-fast: the PipeFast = 1 model (the deep PREU pipeline; its hazard windows follow from it).
  * Exit status 0 when every word matches, 1 on a mismatch, 2 on a usage error. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -131,16 +139,49 @@ static int misplaced_stream(cosim_rtl_t *rtl, const mis_stream_t *m, int preu, d
     return 0;
 }
 
+/* Stream photons [from, to) (candidates of photon p at cand + p * MAX_CAND, ncand[p] of them). */
+static int stream(cosim_drv_t *drv, const preu_photon_t *ph, const uint32_t *cand, const int *ncand, int from, int to)
+{
+    for (int p = from; p < to; p++)
+        if (cosim_drv_photon(drv, &ph[p], cand + (size_t)p * MAX_CAND, (size_t)ncand[p])) {
+            fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv));
+            return -1;
+        }
+    return 0;
+}
+
+/* Reset pree_top in mid-pass and start again: a fresh driver, the hit points reloaded. */
+static cosim_drv_t *reset_and_reload(cosim_rtl_t *rtl, cosim_drv_t *drv, const cosim_drv_opts_t *dopt,
+                                     const preu_hpw_t *init, const int32_t *pixel, size_t nhp)
+{
+    cosim_in_t *in = cosim_rtl_in(rtl);
+    printf("top_bench: reset in mid-pass (idle_o %d, photons_done_o %u, %llu operations sent), hit points reloaded, "
+           "every photon again\n", cosim_rtl_idle(rtl), cosim_rtl_photons_done(rtl),
+           (unsigned long long)cosim_drv_ops_sent(drv));
+    cosim_rtl_set_reset(rtl, 1);
+    in->ph_valid = 0;
+    in->cnt_en = 0;
+    for (int j = 0; j < COSIM_MAX_PREU; j++) in->idx_we[j] = 0;
+    for (int c = 0; c < 2; c++) cosim_rtl_tick(rtl);
+    cosim_rtl_set_reset(rtl, 0);
+    cosim_drv_free(drv);
+    drv = cosim_drv_new(rtl, dopt);
+    if (drv) cosim_drv_load_hp(drv, init, pixel, nhp);
+    return drv;
+}
+
 int main(int argc, char **argv)
 {
-    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, pf = 0;
-    double gap = 0, alpha = 0.7;
+    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, pf = 0, reset_at = -1, hold_reset = 0;
+    double gap = 0, stall = 0, alpha = 0.7;
+    uint64_t wait_limit = 0;
     const char *scenario = "random", *trace = NULL;
     uint64_t seed = 1;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(o, "--no-reorder")) { reorder = 0; continue; }
         if (!strcmp(o, "--pipe-fast")) { pf = 1; continue; }
+        if (!strcmp(o, "--hold-reset")) { hold_reset = 1; continue; }
         if (!v) { fprintf(stderr, "top_bench: %s needs a value\n", o); return 2; }
         i++;
         if (!strcmp(o, "--preu")) preu = atoi(v);
@@ -150,6 +191,9 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--photons")) photons = atoi(v);
         else if (!strcmp(o, "--hp")) nhp = atoi(v);
         else if (!strcmp(o, "--gap")) gap = atof(v);
+        else if (!strcmp(o, "--stall")) stall = atof(v);
+        else if (!strcmp(o, "--reset-at")) reset_at = atoi(v);
+        else if (!strcmp(o, "--wait-limit")) wait_limit = strtoull(v, NULL, 0);
         else if (!strcmp(o, "--seed")) seed = strtoull(v, NULL, 0);
         else if (!strcmp(o, "--trace")) trace = v;
         else { fprintf(stderr, "top_bench: unknown option %s\n", o); return 2; }
@@ -161,6 +205,7 @@ int main(int argc, char **argv)
     if ((dp != 0 && dp != 1) || !(alpha > 0 && alpha <= 1)) { fprintf(stderr, "top_bench: bad --datapath or --alpha\n"); return 2; }
     rng_state = seed * 0x9E3779B97F4A7C15ull + 7;
     if (abank) reorder = 0;   /* its own host streams the candidates as drawn */
+    if (abank && (stall > 0 || reset_at >= 0 || hold_reset)) { fprintf(stderr, "top_bench: abank takes no faults but --gap\n"); return 2; }
 
     char err[256];
     cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, pf, trace, err, sizeof err);
@@ -169,7 +214,7 @@ int main(int argc, char **argv)
     cosim_rtl_in(rtl)->alpha = alpha32;
     cosim_rtl_in(rtl)->kappa = kappa32;
     cosim_drv_opts_t dopt = {.preu = preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
-                             .gap = gap, .seed = seed};
+                             .gap = gap, .stall = stall, .seed = seed, .wait_limit = wait_limit};
     cosim_drv_t *drv = cosim_drv_new(rtl, &dopt);
 
     /* Hit points in the unit cube; dense: 40 per pixel, else 3 per pixel. */
@@ -179,7 +224,10 @@ int main(int argc, char **argv)
     preu_shp_t *sp = calloc((size_t)nhp, sizeof *sp);
     preu_hpw_t *init = calloc((size_t)nhp, sizeof *init);
     int32_t *pixel = calloc((size_t)nhp, sizeof *pixel);
-    uint32_t *cand = malloc(MAX_CAND * sizeof *cand);
+    preu_photon_t *phs = malloc((size_t)(photons ? photons : 1) * sizeof *phs);
+    uint32_t *cands = malloc((size_t)(photons ? photons : 1) * MAX_CAND * sizeof *cands);
+    int *ncand = malloc((size_t)(photons ? photons : 1) * sizeof *ncand);
+    if (!hp || !sp || !init || !pixel || !phs || !cands || !ncand) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
     mis_stream_t mis;
     if (abank && mis_init(&mis, (size_t)photons)) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
     for (int i = 0; i < nhp; i++) {
@@ -199,9 +247,10 @@ int main(int argc, char **argv)
     }
     cosim_drv_load_hp(drv, init, pixel, (size_t)nhp);
 
-    /* Photons, applied to the model in photon order and streamed to the RTL. */
+    /* Photons, applied to the model in photon order, then streamed to the RTL. */
     for (int p = 0; p < photons; p++) {
         preu_photon_t ph;
+        uint32_t *cand = cands + (size_t)p * MAX_CAND;
         for (int c = 0; c < 3; c++) { ph.pos[c] = fb(frand(0, 1)); ph.phi[c] = fb(frand(0, 2)); }
         size_t n = 0;
         if (one) {
@@ -227,8 +276,16 @@ int main(int argc, char **argv)
             else preu_update(&hp[cand[k]], &ph, alpha32);
         }
         if (abank) mis_add(&mis, preu, &ph, cand, n);
-        else if (cosim_drv_photon(drv, &ph, cand, n)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
+        phs[p] = ph;
+        ncand[p] = (int)n;
     }
+    if (!abank && reset_at >= 0) {
+        if (stream(drv, phs, cands, ncand, 0, reset_at < photons ? reset_at : photons)) return 1;
+        if (!(drv = reset_and_reload(rtl, drv, &dopt, init, pixel, (size_t)nhp))) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
+    }
+    if (hold_reset) cosim_rtl_set_reset(rtl, 1);   /* the PREE takes nothing: a wait must run out */
+    if (!abank && stream(drv, phs, cands, ncand, 0, photons)) return hold_reset ? 3 : 1;
+    if (hold_reset) { printf("top_bench: FAIL: no wait ran out with rst_ni held low\n"); return 1; }
     uint64_t sent = cosim_drv_ops_sent(drv);
     if (abank) {
         if (misplaced_stream(rtl, &mis, preu, gap)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
@@ -303,7 +360,7 @@ int main(int argc, char **argv)
            (unsigned long long)(cnt2[CNT_HAZ] - cnt[CNT_HAZ]), (unsigned long long)(cnt2[CNT_DUP] - cnt[CNT_DUP]),
            (unsigned long long)(cnt2[CNT_BANK] - cnt[CNT_BANK]), (unsigned long long)(cnt2[CNT_ABANK] - cnt[CNT_ABANK]),
            (unsigned long long)(cnt2[CNT_STARVE] - cnt[CNT_STARVE]), bad ? "FAIL" : "PASS");
-    free(order); free(Lm); free(Lr); free(hp); free(sp); free(init); free(pixel); free(cand);
+    free(order); free(Lm); free(Lr); free(hp); free(sp); free(init); free(pixel); free(phs); free(cands); free(ncand);
     if (abank) mis_free(&mis);
     cosim_drv_free(drv);
     cosim_rtl_free(rtl);

@@ -288,6 +288,38 @@ static void test_heatmap(void **state)
     pree_image_free(&b);
 }
 
+/* The SSIM map: its valid windows' mean is pree_ssim's figure (up to the order of the sums),
+ * NaN within 5 pixels of the border, and it is the same whatever the thread count. */
+static void test_ssim_map(void **state)
+{
+    (void)state;
+    const int w = 37, h = 29;
+    pree_image_t a = make(w, h, PREE_SAMPLES_U8, bytes), b = make(w, h, PREE_SAMPLES_U8, bytes);
+    for (int i = 0; i < 3 * w * h; i += 7) b.rgb[i] = (float)fmod(b.rgb[i] + 40.0, 256.0);
+    double *m1 = malloc(sizeof(double) * w * h), *m2 = malloc(sizeof(double) * w * h);
+    assert_non_null(m1);
+    assert_non_null(m2);
+    omp_set_num_threads(1);
+    double mean = pree_ssim_map(a.rgb, b.rgb, w, h, 255.0, m1);
+    omp_set_num_threads(3);
+    pree_ssim_map(a.rgb, b.rgb, w, h, 255.0, m2);
+    assert_memory_equal(m1, m2, sizeof(double) * w * h);
+    assert_true(mean == pree_ssim(a.rgb, b.rgb, w, h, 255.0));
+    double sum = 0.0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            int inside = x >= 5 && x < w - 5 && y >= 5 && y < h - 5;
+            assert_int_equal(isnan(m1[y * w + x]), !inside);
+            if (inside) sum += m1[y * w + x];
+        }
+    assert_true(fabs(sum / ((w - 10) * (h - 10)) - mean) < 1e-12);
+    assert_true(mean < 0.99);
+    free(m1);
+    free(m2);
+    pree_image_free(&a);
+    pree_image_free(&b);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -300,6 +332,7 @@ int main(void)
         cmocka_unit_test(test_peak),
         cmocka_unit_test(test_refused),
         cmocka_unit_test(test_heatmap),
+        cmocka_unit_test(test_ssim_map),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

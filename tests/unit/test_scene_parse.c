@@ -69,11 +69,43 @@ static void test_errors_name_line(void **state)
     assert_non_null(strstr(err, "no camera"));
 }
 
+/* The materials' hash index: every name found at its id through growth, duplicates refused,
+ * and entries left by a rollback (mesh_load.c trims num_materials) never returned. */
+static void test_material_index(void **state)
+{
+    (void)state;
+    scene_t s;
+    memset(&s, 0, sizeof s);
+    char err[256], name[32];
+    material_t m;
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < 5000; i++) {
+        snprintf(m.name, sizeof m.name, "m%d", i);
+        assert_int_equal(scene_add_material(&s, &m, err, sizeof err), i);
+    }
+    for (int i = 0; i < 5000; i++) {
+        snprintf(name, sizeof name, "m%d", i);
+        assert_int_equal(scene_find_material(&s, name), i);
+    }
+    assert_int_equal(scene_find_material(&s, "m5000"), -1);
+    snprintf(m.name, sizeof m.name, "m17");
+    assert_int_equal(scene_add_material(&s, &m, err, sizeof err), -1);
+    assert_non_null(strstr(err, "material 'm17' is defined twice"));
+    s.num_materials = 4000;   /* a rollback */
+    assert_int_equal(scene_find_material(&s, "m4500"), -1);
+    snprintf(m.name, sizeof m.name, "m4500");
+    assert_int_equal(scene_add_material(&s, &m, err, sizeof err), 4000);
+    assert_int_equal(scene_find_material(&s, "m4500"), 4000);
+    assert_int_equal(scene_find_material(&s, "m4001"), -1);
+    scene_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_cornell3),
         cmocka_unit_test(test_errors_name_line),
+        cmocka_unit_test(test_material_index),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

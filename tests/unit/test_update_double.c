@@ -13,7 +13,7 @@ static hitpoints_t one_hit_point(vec3 weight)
 {
     hitpoints_t h;
     memset(&h, 0, sizeof h);
-    assert_int_equal(hitpoints_push(&h, v3(1, 2, 3), v3(0, 1, 0), weight, 0), 0);
+    assert_int_equal(hitpoints_push(&h, v3(1, 2, 3), v3(0, 1, 0), weight, 0, 0), 0);
     h.r2[0] = 1.0;
     h.alpha = UPDATE_ALPHA;
     return h;
@@ -70,8 +70,8 @@ static void test_initial_radius(void **state)
     (void)state;
     hitpoints_t h;
     memset(&h, 0, sizeof h);
-    hitpoints_push(&h, v3(0, 0, 0), v3(0, 1, 0), v3(1, 1, 1), 0);
-    hitpoints_push(&h, v3(3, 6, 9), v3(0, 1, 0), v3(1, 1, 1), 1);
+    hitpoints_push(&h, v3(0, 0, 0), v3(0, 1, 0), v3(1, 1, 1), 0, 0);
+    hitpoints_push(&h, v3(3, 6, 9), v3(0, 1, 0), v3(1, 1, 1), 1, 0);
     /* ((3 + 6 + 9)/3) / ((2 + 2)/2) * 2 = 6 */
     assert_true(grid_initial_radius(&h, 2, 2) == 6.0);
     /* The safe radius covers binary32 rounding: strictly larger, by a small margin. */

@@ -1,0 +1,26 @@
+/* cli_pm.h: `pree render`'s options of the photon-map estimator (docs/photon_map.md). */
+#ifndef PREE_CLI_PM_H
+#define PREE_CLI_PM_H
+
+#include <stdio.h>
+#include "cli_options.h"
+
+enum { CLI_PM_ESTIMATOR = 0x180, CLI_PM_K, CLI_PM_MAX_RADIUS, CLI_PM_SEARCH, CLI_PM_BUNDLE, CLI_PM_TASK,
+       CLI_PM_SCHEDULE };
+
+#define CLI_PM_LONGOPTS                                                                \
+    {"estimator", required_argument, NULL, CLI_PM_ESTIMATOR},                          \
+    {"k", required_argument, NULL, CLI_PM_K},                                          \
+    {"max-radius", required_argument, NULL, CLI_PM_MAX_RADIUS},                        \
+    {"knn-search", required_argument, NULL, CLI_PM_SEARCH},                            \
+    {"cluster-bundle", required_argument, NULL, CLI_PM_BUNDLE},                        \
+    {"task-photons", required_argument, NULL, CLI_PM_TASK},                            \
+    {"task-schedule", required_argument, NULL, CLI_PM_SCHEDULE}
+
+/* Apply one of CLI_PM_LONGOPTS: 0 taken, 1 not one of them, 2 a bad value (printed). */
+int cli_pm_option(cli_args_t *a, int id, render_options_t *opt);
+/* The options' help lines; the combination check after parsing (0, or 2 printed). */
+void cli_pm_usage(FILE *f);
+int cli_pm_check(cli_args_t *a, const render_options_t *opt);
+
+#endif

@@ -1,0 +1,162 @@
+// cosim_axi_rtl.cpp: the Verilated pree_axi behind cosim_axi_rtl.h (one model per program: the
+// make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_HPB). C++ only because Verilator's
+// models are C++ classes. Every field of the wrapper's streams sits on a 32-bit boundary, so the
+// wide ports are filled and read a word at a time.
+#include "cosim_axi_rtl.h"
+
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "verilated.h"
+#include "verilated_fst_c.h"
+#include AXI_MODEL_H
+
+namespace {
+const unsigned SW = AXI_DP ? 320 : 160;   // state bits of a hit point
+const unsigned HPW = SW / 32;             // state words
+}
+
+struct cosim_rtl {
+    std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
+    std::unique_ptr<AXI_MODEL> top;
+    std::unique_ptr<VerilatedFstC> tfp;
+    uint64_t time = 0;
+    cosim_in_t in;          // alpha and kappa only (cosim_main.c sets them)
+    cosim_axi_in_t ain;
+    cosim_axi_out_t out;
+
+    cosim_rtl()
+    {
+        ctx->traceEverOn(true);
+        top.reset(new AXI_MODEL{ctx.get()});
+        std::memset(&in, 0, sizeof in);
+        std::memset(&ain, 0, sizeof ain);
+        std::memset(&out, 0, sizeof out);
+        top->aclk = 0;
+        top->aresetn = 0;
+        apply();
+        top->eval();
+        // The reset synchroniser releases two edges after aresetn rises.
+        for (int i = 0; i < 4; i++) {
+            if (i == 2) top->aresetn = 1;
+            top->aclk = 1; top->eval(); top->aclk = 0; top->eval();
+        }
+    }
+    ~cosim_rtl()
+    {
+        if (tfp) tfp->close();
+        top->final();
+    }
+    void apply()
+    {
+        AXI_MODEL &t = *top;
+        const cosim_axi_in_t &a = ain;
+        t.s_axil_awaddr = a.awaddr;
+        t.s_axil_awvalid = a.awvalid;
+        t.s_axil_wdata = a.wdata;
+        t.s_axil_wstrb = 0xf;
+        t.s_axil_wvalid = a.wvalid;
+        t.s_axil_bready = a.bready;
+        t.s_axil_araddr = a.araddr;
+        t.s_axil_arvalid = a.arvalid;
+        t.s_axil_rready = a.rready;
+        for (int c = 0; c < 3; c++) {
+            t.s_axis_ph_tdata[c] = a.ph.pos[c];
+            t.s_axis_ph_tdata[3 + c] = a.ph.phi[c];
+        }
+        t.s_axis_ph_tdata[6] = a.ph_n;
+        t.s_axis_ph_tlast = a.ph_last;
+        t.s_axis_ph_tvalid = a.ph_valid;
+        uint64_t keep = 0;
+        for (int j = 0; j < AXI_NP; j++) {
+            t.s_axis_cand_tdata[j] = a.cand[j];
+            if (a.cand_keep >> j & 1u) keep |= 0xfull << (4 * j);
+        }
+        t.s_axis_cand_tkeep = keep;
+        t.s_axis_cand_tvalid = a.cand_valid;
+        for (unsigned k = 0; k < HPW; k++) t.s_axis_hp_tdata[k] = a.hp.st[k];
+        for (int c = 0; c < 3; c++) {
+            t.s_axis_hp_tdata[HPW + c] = a.hp.pos[c];
+            t.s_axis_hp_tdata[HPW + 3 + c] = a.hp.f[c];
+        }
+        t.s_axis_hp_tdata[HPW + 6] = a.hp_pixel;
+        t.s_axis_hp_tvalid = a.hp_valid;
+        t.m_axis_tready = a.m_ready;
+    }
+    // The handshakes of this cycle, seen with the clock low and the inputs settled.
+    void sample()
+    {
+        AXI_MODEL &t = *top;
+        unsigned f = 0;
+        if (t.s_axil_awvalid && t.s_axil_awready) f |= AXI_AW;
+        if (t.s_axil_wvalid && t.s_axil_wready) f |= AXI_W;
+        if (t.s_axil_bvalid && t.s_axil_bready) f |= AXI_B;
+        if (t.s_axil_arvalid && t.s_axil_arready) f |= AXI_AR;
+        if (t.s_axil_rvalid && t.s_axil_rready) { f |= AXI_R; out.rdata = t.s_axil_rdata; }
+        if (t.s_axis_ph_tvalid && t.s_axis_ph_tready) f |= AXI_PH;
+        if (t.s_axis_cand_tvalid && t.s_axis_cand_tready) f |= AXI_CAND;
+        if (t.s_axis_hp_tvalid && t.s_axis_hp_tready) f |= AXI_HP;
+        if (t.m_axis_tvalid && t.m_axis_tready) {
+            f |= AXI_M;
+            out.m_user = t.m_axis_tuser;
+            out.m_last = t.m_axis_tlast;
+            for (unsigned k = 0; k < HPW; k++) out.m_hp.st[k] = t.m_axis_tdata[k];
+            for (int c = 0; c < 3; c++) {
+                out.m_hp.pos[c] = t.m_axis_tdata[HPW + c];
+                out.m_hp.f[c] = t.m_axis_tdata[HPW + 3 + c];
+                out.m_px[c] = t.m_axis_tdata[c];
+            }
+            out.m_pixel = t.m_axis_tdata[HPW + 6];
+        }
+        out.irq = t.irq_o;
+        out.fired = f;
+    }
+    void tick()
+    {
+        apply();
+        top->aclk = 0;
+        top->eval();
+        sample();
+        if (tfp) tfp->dump(time);
+        time++;
+        top->aclk = 1;
+        top->eval();
+        if (tfp) tfp->dump(time);
+        time++;
+    }
+};
+
+extern "C" {
+
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
+{
+    if (preu != AXI_NP || (datapath != 0) != (AXI_DP != 0) || pipefast) {
+        std::snprintf(err, errlen, "this program holds pree_axi with %d PREUs, the %s datapath and PipeFast 0, not %d, %s and %d",
+                      AXI_NP, AXI_DP ? "stable" : "paper", preu, datapath ? "stable" : "paper", pipefast != 0);
+        return nullptr;
+    }
+    cosim_rtl_t *r = new cosim_rtl;
+    if (fst) {
+        r->tfp.reset(new VerilatedFstC);
+        r->top->trace(r->tfp.get(), 99);
+        r->tfp->open(fst);
+        if (!r->tfp->isOpen()) {
+            std::snprintf(err, errlen, "%s: cannot open the FST trace", fst);
+            r->tfp.reset();
+            delete r;
+            return nullptr;
+        }
+    }
+    return r;
+}
+
+void cosim_rtl_free(cosim_rtl_t *r) { delete r; }
+cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
+int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
+// pree_axi's pree_top runs with PipeFast 0: 1 + the PREU's update latency (10 paper, 12 stable).
+int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
+cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r) { return &r->ain; }
+const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r) { r->tick(); return &r->out; }
+
+}  // extern "C"

@@ -1,0 +1,54 @@
+# (After mk/cosim.mk, whose variables it uses.) The AXI4 wrapper (rtl/pree_axi.v) and the FPGA integration kit: docs/integration.md.
+#
+#   make lint-axi      verilator --lint-only -Wall of pree_axi through rtl/pree.f, NumPreu 4, 8, 16,
+#                      both datapaths (in `make lint`)
+#   make synth-axi     Yosys synth_xilinx of pree_axi: the wrapper's own logic (pree_top a black box)
+#                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
+#                      SYNTH_AXI_PREUS (default 4; over 7 CPU minutes): rows in $(AXI_DIR)/synth/*.md
+#   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
+#   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
+#                      s stable; n PREUs), built only when asked (the regression builds axi-p4)
+# The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
+
+AXI_DIR    := $(BUILD)/axi
+AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
+AXI_MDIR    = $(AXI_DIR)/vl_$(2)$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+SYNTH_AXI_PREUS ?= 4
+
+TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
+LINT_TARGETS  += lint-axi
+
+.PHONY: lint-axi synth-axi fit-table
+
+define AXI_VL_RULE
+$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+	@mkdir -p $$(@D)
+	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
+	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
+	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
+$(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a
+	@mkdir -p $$(@D)
+	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2)) -DAXI_MODEL=Vpree_axi_$(2)$(1) \
+	  -DAXI_MODEL_H='"Vpree_axi_$(2)$(1).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(filter s,$(2)),1,0) \
+	  -DAXI_HPB=$(COSIM_HPB_$(1)) -c $$< -o $$@
+$(BUILD)/pree-cosim-axi-$(2)$(1): $(HOST_DIR)/cosim_main_axi.o $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
+                          $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o $(BUILD)/cli/cli_options.o $(LIBPREE) \
+                          $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a $(COSIM_VLIB)
+	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
+endef
+$(foreach p,4 8 16,$(foreach d,p s,$(eval $(call AXI_VL_RULE,$(p),$(d)))))
+
+$(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(COSIM_CFLAGS) -DCOSIM_DRV_AXI=1 -c $< -o $@
+
+lint-axi: | $(DEPS_STAMP)
+	@bash tests/checks/axi_lint.sh
+
+synth-axi: | $(DEPS_STAMP)
+	@set -e; for p in 4 8 16; do tb/axi/synth_axi.sh --own $$p $(AXI_DIR)/synth; done
+	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh $$p $(AXI_DIR)/synth; done
+
+fit-table:
+	python3 scripts/pree_fit.py

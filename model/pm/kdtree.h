@@ -1,0 +1,32 @@
+/* kdtree.h: a balanced kd-tree over 3-D points (the photon map's positions), with range queries.
+ *
+ * The tree is implicit: build permutes the points so that each node of [lo, hi) splits at
+ * mid = (lo + hi) / 2 on the axis of the widest extent of its points, with points ordered by
+ * (coordinate, original index) so the tree and every query's order are the same on any
+ * machine and thread count. Ranges of KD_LEAF points or fewer are leaves. Queries walk nodes in
+ * a fixed order and report points as their original indices. */
+#ifndef PREE_KDTREE_H
+#define PREE_KDTREE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define KD_LEAF 8
+
+typedef struct {
+    size_t n;
+    double *x, *y, *z;     /* positions in tree order */
+    uint32_t *index;       /* tree order -> original index */
+    uint8_t *axis;         /* split axis of the node whose median is at this position */
+} kdtree_t;
+
+/* Build over n points (x, y, z of point i at pts[i * stride + 0..2]). 0, or -1 out of memory. */
+int kdtree_build(kdtree_t *t, const double *pts, size_t stride, size_t n);
+void kdtree_free(kdtree_t *t);
+
+/* Every point within distance r of q (d^2 <= r^2): appended to *out (grown as needed, *cap its
+ * capacity) as tree positions, in the walk's fixed order. Returns the count appended, or
+ * (size_t)-1 when out of memory. */
+size_t kdtree_range(const kdtree_t *t, const double q[3], double r, uint32_t **out, size_t *n, size_t *cap);
+
+#endif

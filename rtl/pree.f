@@ -1,0 +1,27 @@
+// pree.f: the PREE RTL in dependency order (leaves first), for Vivado (read_verilog -f / add_files),
+// Verilator (-f), Icarus (-c) and Yosys (read_verilog of each line). Top for an FPGA build:
+// pree_axi (docs/integration.md); pree_top for the bare engine. Paths relative to the repository.
+rtl/pree_ram_sdp.v
+rtl/pree_reset_sync.v
+rtl/pree_fp32_lzc.v
+rtl/pree_fp32_unpack_lz.v
+rtl/pree_fp32_unpack_norm.v
+rtl/pree_fp32_unpack.v
+rtl/pree_fp32_denorm_amt.v
+rtl/pree_fp32_denorm.v
+rtl/pree_fp32_round.v
+rtl/pree_fp32_pipe.v
+rtl/pree_fp32_add.v
+rtl/pree_fp32_mul.v
+rtl/pree_fp32_sqr.v
+rtl/pree_fp32_div_steps.v
+rtl/pree_fp32_div.v
+rtl/pree_fp32_cmp.v
+rtl/pree_u64_to_f32.v
+rtl/pree_wacc.v
+rtl/pree_preu.v
+rtl/pree_aftso_hpuoc.v
+rtl/pree_adiso_rec.v
+rtl/pree_top.v
+rtl/pree_axil_slave.v
+rtl/pree_axi.v

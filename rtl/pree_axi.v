@@ -1,0 +1,428 @@
+// pree_axi: pree_top behind standard AXI interfaces (docs/integration.md is the manual: register
+// map, stream formats, timing diagrams, a worked host sequence).
+//
+//   s_axil_*      AXI4-Lite slave (pree_axil_slave): control, status, constants, counters.
+//   s_axis_ph_*   photons, one a beat: {N^P (32-bit slot), phi b g r, pos z y x}. TLAST marks the
+//                 last photon of a batch (interrupt "batch done" once all of it is applied).
+//   s_axis_cand_* the photons' candidate hit-point addresses, concatenated in photon order, up to
+//                 NumPreu a beat (lane j = tdata[32j +: 32], present when tkeep[4j +: 4] is all
+//                 ones; photon boundaries need not align with beats).
+//   s_axis_hp_*   hit points to load, one a beat at HP_PTR, HP_PTR + 1, ...: {pixel (32-bit
+//                 slot), f b g r, pos z y x, state}; taken only while the engine is idle.
+//   m_axis_*      results of the read commands: hit-point records (tuser 0, as s_axis_hp) or
+//                 pixels (tuser 1, {b, g, r} in the low 96 bits); tlast on a command's last beat.
+//   irq_o         level: (IRQ_STATUS & IRQ_EN) != 0.
+//
+// Index table. The wrapper owns pree_top's index table: candidate number s (counting every
+// candidate since reset) goes to entry ~s mod 2^IdxAW, so that photon k, whose candidates are
+// s = S_k .. S_k + N_k - 1, has p_k = -(S_k + N_k) and AFTSO-HpUOC reads its entries in stream
+// order; any NumPreu consecutive candidates lie in distinct index banks (no stage-A conflict and
+// a conflict-free load port). A photon is offered to pree_top once all its candidates are written
+// (registered count), and an entry is overwritten only after pree_top has counted its photon
+// done (photons_done_o; a ring of the in-flight photons' candidate ends). Photons with N^P = 0
+// are dropped here. The mode (update / radiance) is the command engine's: radiance only while
+// CMD 1 runs. Streams and commands never overlap: streams move only while no command runs, and
+// a command starts only when everything is idle.
+//
+// Parameters: those of pree_top, and PhotonsPerCycle (photons a beat on s_axis_ph; 1 only until
+// pree_top's wide intake lands: the slots of one beat then share tvalid/tready and a slot with
+// N^P = 0 is empty), PhFifoAW (log2 of the photon FIFO depth), RingAW (log2 of the in-flight
+// photon ring: at most 2^RingAW - 1 photons between pree_top's intake and photons_done_o).
+`default_nettype none
+
+module pree_axi #(
+  parameter NumPreu  = 4,
+  parameter HpAW     = 18,
+  parameter HpBankW  = 4,
+  parameter IdxAW    = 12,
+  parameter PxAW     = 17,
+  parameter PxBankW  = 4,
+  parameter CntW     = 16,
+  parameter Datapath = 0,
+  parameter PhotonsPerCycle = 1,
+  parameter PhFifoAW = 2,
+  parameter RingAW   = 4,
+  parameter StateW   = (Datapath != 0) ? 320 : 160,   // do not override: set by Datapath
+  parameter HpRecW   = 32 + 192 + StateW               // do not override: hit-point record bits
+) (
+  input  wire                       aclk,
+  input  wire                       aresetn,
+  // AXI4-Lite slave.
+  input  wire [11:0]                s_axil_awaddr,
+  input  wire                       s_axil_awvalid,
+  output wire                       s_axil_awready,
+  input  wire [31:0]                s_axil_wdata,
+  input  wire [3:0]                 s_axil_wstrb,
+  input  wire                       s_axil_wvalid,
+  output wire                       s_axil_wready,
+  output wire [1:0]                 s_axil_bresp,
+  output wire                       s_axil_bvalid,
+  input  wire                       s_axil_bready,
+  input  wire [11:0]                s_axil_araddr,
+  input  wire                       s_axil_arvalid,
+  output wire                       s_axil_arready,
+  output wire [31:0]                s_axil_rdata,
+  output wire [1:0]                 s_axil_rresp,
+  output wire                       s_axil_rvalid,
+  input  wire                       s_axil_rready,
+  // Photons.
+  input  wire [PhotonsPerCycle*224-1:0] s_axis_ph_tdata,
+  input  wire                       s_axis_ph_tlast,
+  input  wire                       s_axis_ph_tvalid,
+  output wire                       s_axis_ph_tready,
+  // Candidates.
+  input  wire [32*NumPreu-1:0]      s_axis_cand_tdata,
+  input  wire [4*NumPreu-1:0]       s_axis_cand_tkeep,
+  input  wire                       s_axis_cand_tvalid,
+  output wire                       s_axis_cand_tready,
+  // Hit points in.
+  input  wire [HpRecW-1:0]          s_axis_hp_tdata,
+  input  wire                       s_axis_hp_tvalid,
+  output wire                       s_axis_hp_tready,
+  // Results out.
+  output wire [HpRecW-1:0]          m_axis_tdata,
+  output wire                       m_axis_tuser,
+  output wire                       m_axis_tlast,
+  output wire                       m_axis_tvalid,
+  input  wire                       m_axis_tready,
+  output wire                       irq_o
+);
+
+  // RTL version: major.minor.patch in bits 23:16, 15:8, 7:0 (VERSION register, docs).
+  localparam [31:0] PREE_VERSION = 32'h0001_0000;
+  localparam CtrW     = 48;
+  localparam NCNT     = 7 + NumPreu;
+  localparam PH_DEPTH = 1 << PhFifoAW;
+  localparam RING     = 1 << RingAW;
+  localparam [31:0] IDX_ROOM = (32'd1 << IdxAW) - NumPreu;   // free entries a beat needs
+
+  generate
+    if (PhotonsPerCycle != 1) begin : g_bad_ppc
+      pree_axi_photons_per_cycle_needs_the_wide_intake u_fail ();
+    end
+    if (PxAW > 31 || HpAW > 31 || CntW > 31) begin : g_bad_widths
+      pree_axi_addresses_and_counts_fit_32_bit_slots u_fail ();
+    end
+  endgenerate
+
+  wire rst_n;
+  pree_reset_sync #(.Stages(2)) u_rst (.clk_i(aclk), .arst_ni(aresetn), .rst_no(rst_n));
+
+  // ===============================================================================================
+  // Registers (AXI4-Lite).
+  wire        wr, rd;
+  wire [11:0] wr_addr, rd_addr;
+  wire [31:0] wr_data;
+  wire [3:0]  wr_strb;
+  reg  [31:0] rd_data;
+
+  pree_axil_slave #(.AddrW(12)) u_axil (
+    .clk_i(aclk), .rst_ni(rst_n),
+    .awaddr_i(s_axil_awaddr), .awvalid_i(s_axil_awvalid), .awready_o(s_axil_awready),
+    .wdata_i(s_axil_wdata), .wstrb_i(s_axil_wstrb), .wvalid_i(s_axil_wvalid),
+    .wready_o(s_axil_wready), .bresp_o(s_axil_bresp), .bvalid_o(s_axil_bvalid),
+    .bready_i(s_axil_bready), .araddr_i(s_axil_araddr), .arvalid_i(s_axil_arvalid),
+    .arready_o(s_axil_arready), .rdata_o(s_axil_rdata), .rresp_o(s_axil_rresp),
+    .rvalid_o(s_axil_rvalid), .rready_i(s_axil_rready),
+    .wr_o(wr), .wr_addr_o(wr_addr), .wr_data_o(wr_data), .wr_strb_o(wr_strb),
+    .rd_o(rd), .rd_addr_o(rd_addr), .rd_data_i(rd_data));
+
+  // A 32-bit register written under the byte strobes.
+  function [31:0] strobe;
+    input [31:0] old, new_v;
+    input [3:0]  s;
+    integer b;
+    begin
+      for (b = 0; b < 4; b = b + 1) strobe[8*b +: 8] = s[b] ? new_v[8*b +: 8] : old[8*b +: 8];
+    end
+  endfunction
+
+  // Register numbers (byte address / 4).
+  localparam [9:0] R_VERSION = 10'h000, R_CONFIG0 = 10'h001, R_CONFIG1 = 10'h002,
+                   R_CTRL = 10'h004, R_CMD = 10'h005, R_STATUS = 10'h006, R_IRQ_EN = 10'h007,
+                   R_IRQ_STATUS = 10'h008, R_ERR = 10'h009, R_NE = 10'h00C, R_ALPHA = 10'h00D,
+                   R_KAPPA = 10'h00E, R_N_HIT = 10'h00F, R_HP_PTR = 10'h010, R_HP_COUNT = 10'h011,
+                   R_PX_BASE = 10'h012, R_PX_COUNT = 10'h013, R_PH_IN = 10'h014,
+                   R_PH_DONE = 10'h015, R_CAND_IN = 10'h016;
+  // Commands (CMD register).
+  localparam [2:0] C_RAD = 3'd1, C_HP_READ = 3'd2, C_PX_CLEAR = 3'd3, C_PX_READ = 3'd4;
+  // Command engine states.
+  localparam [2:0] S_IDLE = 3'd0,      // streams move; a command may start
+                   S_HP_READ = 3'd1,   // hit points [HP_PTR, + HP_COUNT) to m_axis
+                   S_PX_READ = 3'd2,   // pixels [PX_BASE, + PX_COUNT) to m_axis
+                   S_PX_CLEAR = 3'd3,  // pixels [PX_BASE, + PX_COUNT) to +0
+                   S_RAD_START = 3'd4, // radiance mode applied: pulse rad_start_i
+                   S_RAD_WAIT = 3'd5;  // the pass runs: wait for idle_o, back to update mode
+
+  reg  [2:0]  state_q, state_d;
+  reg         cnt_en_q;
+  reg  [1:0]  irq_en_q, irq_q, err_q;
+  reg  [31:0] ne_q, alpha_q, kappa_q, n_hit_q, hp_ptr_q, hp_cnt_q, px_base_q, px_cnt_q;
+  reg  [31:0] ph_in_q, cnt_hi_q;
+  reg         mode_q, batch_q;
+  wire        all_idle, core_idle, cmd_done, batch_done;
+  wire [31:0] core_done;
+  wire [NCNT*CtrW-1:0] cnt;
+  reg  [31:0] cum_in_q, wr_cnt_q;
+
+  wire        idle_wr  = wr && all_idle;   // constants and commands: only while idle
+  wire [9:0]  wreg     = wr_addr[11:2];
+  wire        cmd_ok   = idle_wr && wreg == R_CMD && wr_data[2:0] >= C_RAD && wr_data[2:0] <= C_PX_READ;
+  wire        cmd_bad  = wr && wreg == R_CMD && !cmd_ok;
+  wire        const_wr = wr && (wreg == R_NE || wreg == R_ALPHA || wreg == R_KAPPA ||
+                                wreg == R_N_HIT || wreg == R_HP_PTR || wreg == R_HP_COUNT ||
+                                wreg == R_PX_BASE || wreg == R_PX_COUNT);
+  wire        ph_big;                      // a photon with N^P above the index table's room
+  wire        hp_take;
+
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n) begin
+      cnt_en_q <= 1'b0; irq_en_q <= 2'b00; irq_q <= 2'b00; err_q <= 2'b00;
+      ne_q <= 32'd0; alpha_q <= 32'd0; kappa_q <= 32'd0; n_hit_q <= 32'd0;
+      hp_ptr_q <= 32'd0; hp_cnt_q <= 32'd0; px_base_q <= 32'd0; px_cnt_q <= 32'd0;
+    end else begin
+      if (wr && wreg == R_CTRL)   cnt_en_q <= wr_strb[0] ? wr_data[0] : cnt_en_q;
+      if (wr && wreg == R_IRQ_EN) irq_en_q <= wr_strb[0] ? wr_data[1:0] : irq_en_q;
+      irq_q <= (irq_q & ~((wr && wreg == R_IRQ_STATUS && wr_strb[0]) ? wr_data[1:0] : 2'b00))
+               | {cmd_done, batch_done};
+      err_q <= (err_q & ~((wr && wreg == R_ERR && wr_strb[0]) ? wr_data[1:0] : 2'b00))
+               | {ph_big, cmd_bad || (const_wr && !all_idle)};
+      if (idle_wr) begin
+        if (wreg == R_NE)       ne_q      <= strobe(ne_q, wr_data, wr_strb);
+        if (wreg == R_ALPHA)    alpha_q   <= strobe(alpha_q, wr_data, wr_strb);
+        if (wreg == R_KAPPA)    kappa_q   <= strobe(kappa_q, wr_data, wr_strb);
+        if (wreg == R_N_HIT)    n_hit_q   <= strobe(n_hit_q, wr_data, wr_strb);
+        if (wreg == R_HP_COUNT) hp_cnt_q  <= strobe(hp_cnt_q, wr_data, wr_strb);
+        if (wreg == R_PX_BASE)  px_base_q <= strobe(px_base_q, wr_data, wr_strb);
+        if (wreg == R_PX_COUNT) px_cnt_q  <= strobe(px_cnt_q, wr_data, wr_strb);
+      end
+      if (idle_wr && wreg == R_HP_PTR) hp_ptr_q <= strobe(hp_ptr_q, wr_data, wr_strb);
+      else if (hp_take)                hp_ptr_q <= hp_ptr_q + 32'd1;
+    end
+  end
+
+  // Read data; a counter's high half is latched when its low half is read.
+  wire [9:0] rreg = rd_addr[11:2];
+  wire [7:0] rcnt = rreg[8:1] - 8'h20;    // counter number at byte 0x100 + 8k
+  reg  [CtrW-1:0] cnt_sel;
+  always @* begin : rd_mux
+    integer k;
+    cnt_sel = {CtrW{1'b0}};
+    for (k = 0; k < NCNT; k = k + 1)
+      if (rcnt == k[7:0]) cnt_sel = cnt[k*CtrW +: CtrW];
+    rd_data = 32'd0;
+    if (rreg[9:6] == 4'h1 && {24'd0, rcnt} < NCNT) begin
+      rd_data = rreg[0] ? cnt_hi_q : cnt_sel[31:0];
+    end else begin
+      case (rreg)
+        R_VERSION:    rd_data = PREE_VERSION;
+        R_CONFIG0:    rd_data = {Datapath != 0, 2'b00, IdxAW[4:0], 3'b000, PxAW[4:0], 3'b000,
+                                 HpAW[4:0], NumPreu[7:0]};
+        R_CONFIG1:    rd_data = {PhotonsPerCycle[7:0], 3'b000, CntW[4:0], 3'b000, PxBankW[4:0],
+                                 3'b000, HpBankW[4:0]};
+        R_CTRL:       rd_data = {31'd0, cnt_en_q};
+        R_STATUS:     rd_data = {27'd0, batch_q, state_q != S_IDLE, mode_q, core_idle, all_idle};
+        R_IRQ_EN:     rd_data = {30'd0, irq_en_q};
+        R_IRQ_STATUS: rd_data = {30'd0, irq_q};
+        R_ERR:        rd_data = {30'd0, err_q};
+        R_NE:         rd_data = ne_q;
+        R_ALPHA:      rd_data = alpha_q;
+        R_KAPPA:      rd_data = kappa_q;
+        R_N_HIT:      rd_data = n_hit_q;
+        R_HP_PTR:     rd_data = hp_ptr_q;
+        R_HP_COUNT:   rd_data = hp_cnt_q;
+        R_PX_BASE:    rd_data = px_base_q;
+        R_PX_COUNT:   rd_data = px_cnt_q;
+        R_PH_IN:      rd_data = ph_in_q;
+        R_PH_DONE:    rd_data = core_done;
+        R_CAND_IN:    rd_data = wr_cnt_q;
+        default:      rd_data = 32'd0;
+      endcase
+    end
+  end
+
+  always @(posedge aclk) begin
+    if (rd && rreg[9:6] == 4'h1 && !rreg[0]) cnt_hi_q <= {{(64-CtrW){1'b0}}, cnt_sel[CtrW-1:32]};
+  end
+
+  assign irq_o = |(irq_q & irq_en_q);
+
+  // ===============================================================================================
+  // Photon FIFO: {data, N^P, candidate end S_k + N_k}.
+  reg  [191:0]      phf_data_q [0:PH_DEPTH-1];
+  reg  [CntW-1:0]   phf_n_q    [0:PH_DEPTH-1];
+  reg  [31:0]       phf_end_q  [0:PH_DEPTH-1];
+  reg  [PhFifoAW:0] phf_wp_q, phf_rp_q;
+  reg  [31:0]       ring_q [0:RING-1];     // candidate end of photon g mod RING, given to pree_top
+  reg  [31:0]       given_q, ret_q;        // photons given; candidates retired
+  wire [PhFifoAW-1:0] rp = phf_rp_q[PhFifoAW-1:0];
+  wire phf_empty = phf_wp_q == phf_rp_q;
+  wire phf_full  = phf_wp_q == {~phf_rp_q[PhFifoAW], phf_rp_q[PhFifoAW-1:0]};
+
+  wire [CntW-1:0] ph_in_n = s_axis_ph_tdata[192 +: CntW];
+  wire            ph_take = s_axis_ph_tvalid && s_axis_ph_tready;
+  wire            ph_push = ph_take && ph_in_n != {CntW{1'b0}};
+  assign s_axis_ph_tready = !phf_full && state_q == S_IDLE;
+  assign ph_big = ph_take && {{(32-CntW){1'b0}}, ph_in_n} > IDX_ROOM;
+
+  wire [31:0] head_end = phf_end_q[rp];
+  wire        head_written = wr_cnt_q - head_end < 32'h8000_0000;   // every candidate written
+  wire [31:0] in_flight = given_q - core_done;
+  wire        core_ready;
+  wire        core_valid = !phf_empty && head_written && in_flight < RING - 1 && state_q == S_IDLE;
+  wire        core_take = core_valid && core_ready;
+  wire [RingAW-1:0] last_done = core_done[RingAW-1:0] - {{(RingAW-1){1'b0}}, 1'b1};
+  wire [IdxAW-1:0]  head_p    = -head_end[IdxAW-1:0];   // p_k = -(S_k + N_k)
+
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n) begin
+      phf_wp_q <= {(PhFifoAW+1){1'b0}}; phf_rp_q <= {(PhFifoAW+1){1'b0}};
+      cum_in_q <= 32'd0; ph_in_q <= 32'd0; given_q <= 32'd0; ret_q <= 32'd0; batch_q <= 1'b0;
+    end else begin
+      if (ph_push) phf_wp_q <= phf_wp_q + 1'b1;
+      if (ph_push) cum_in_q <= cum_in_q + {{(32-CntW){1'b0}}, ph_in_n};
+      if (ph_take) ph_in_q <= ph_in_q + 32'd1;
+      if (core_take) phf_rp_q <= phf_rp_q + 1'b1;
+      if (core_take) given_q <= given_q + 32'd1;
+      ret_q <= (core_done == 32'd0) ? 32'd0 : ring_q[last_done];
+      batch_q <= (batch_q && !batch_done) || (ph_take && s_axis_ph_tlast);
+    end
+  end
+
+  always @(posedge aclk) begin
+    if (ph_push) begin
+      phf_data_q[phf_wp_q[PhFifoAW-1:0]] <= s_axis_ph_tdata[191:0];
+      phf_n_q[phf_wp_q[PhFifoAW-1:0]]    <= ph_in_n;
+      phf_end_q[phf_wp_q[PhFifoAW-1:0]]  <= cum_in_q + {{(32-CntW){1'b0}}, ph_in_n};
+    end
+    if (core_take) ring_q[given_q[RingAW-1:0]] <= head_end;
+  end
+
+  // ===============================================================================================
+  // Candidates into the index table: candidate s at entry ~s.
+  reg  [NumPreu-1:0]       idx_we;
+  reg  [NumPreu*IdxAW-1:0] idx_addr;
+  reg  [NumPreu*HpAW-1:0]  idx_data;
+  reg  [31:0]              cand_n;
+  wire [31:0] used = wr_cnt_q - ret_q;
+  assign s_axis_cand_tready = state_q == S_IDLE && used <= IDX_ROOM;
+  wire cand_take = s_axis_cand_tvalid && s_axis_cand_tready;
+
+  always @* begin : cand_lanes
+    integer j;
+    reg [IdxAW-1:0] s;
+    cand_n = 32'd0;
+    for (j = 0; j < NumPreu; j = j + 1) begin
+      s = wr_cnt_q[IdxAW-1:0] + cand_n[IdxAW-1:0];
+      idx_we[j] = cand_take && (&s_axis_cand_tkeep[4*j +: 4]);
+      idx_addr[j*IdxAW +: IdxAW] = ~s;
+      idx_data[j*HpAW +: HpAW] = s_axis_cand_tdata[32*j +: HpAW];
+      if (&s_axis_cand_tkeep[4*j +: 4]) cand_n = cand_n + 32'd1;
+    end
+  end
+
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n)         wr_cnt_q <= 32'd0;
+    else if (cand_take) wr_cnt_q <= wr_cnt_q + cand_n;
+  end
+
+  // ===============================================================================================
+  // Command engine: reads to m_axis (one beat a cycle: the RAM's held output is the first stage,
+  // the m_axis register the second), pixel clears, the radiance pass.
+  reg  [31:0] ci_q;                   // items issued
+  reg         rd_pend_q, rd_last_q;   // a read result waits in the RAM output
+  reg         m_valid_q, m_last_q, m_user_q;
+  reg  [HpRecW-1:0] m_data_q;
+  wire [PxAW+191+StateW:0] hp_rdata;
+  wire [95:0] px_rdata;
+  wire        rd_state = state_q == S_HP_READ || state_q == S_PX_READ;
+  wire [31:0] cmd_n    = state_q == S_HP_READ ? hp_cnt_q : px_cnt_q;
+  wire        more     = ci_q != cmd_n;
+  wire        move     = rd_pend_q && (!m_valid_q || m_axis_tready);
+  wire        issue    = rd_state && more && (!rd_pend_q || move);
+  wire        px_clr   = state_q == S_PX_CLEAR && more;
+  assign hp_take  = s_axis_hp_tvalid && s_axis_hp_tready;
+  assign s_axis_hp_tready = all_idle;
+  assign cmd_done = (rd_state && !more && !rd_pend_q && !m_valid_q) ||
+                    (state_q == S_PX_CLEAR && !more) || (state_q == S_RAD_WAIT && core_idle);
+
+  always @* begin
+    state_d = state_q;
+    case (state_q)
+      S_IDLE:      if (cmd_ok) state_d = wr_data[2:0] == C_RAD     ? S_RAD_START :
+                                         wr_data[2:0] == C_HP_READ ? S_HP_READ :
+                                         wr_data[2:0] == C_PX_READ ? S_PX_READ :
+                                         wr_data[2:0] == C_PX_CLEAR ? S_PX_CLEAR : S_IDLE;
+      S_RAD_START: state_d = S_RAD_WAIT;
+      default:     if (cmd_done) state_d = S_IDLE;
+    endcase
+  end
+
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n) begin
+      state_q <= S_IDLE; mode_q <= 1'b0; ci_q <= 32'd0;
+      rd_pend_q <= 1'b0; rd_last_q <= 1'b0; m_valid_q <= 1'b0; m_last_q <= 1'b0; m_user_q <= 1'b0;
+    end else begin
+      state_q <= state_d;
+      mode_q  <= state_d == S_RAD_START || state_d == S_RAD_WAIT;
+      if (state_q == S_IDLE) ci_q <= 32'd0;
+      else if (issue || px_clr) ci_q <= ci_q + 32'd1;
+      if (issue) rd_last_q <= ci_q + 32'd1 == cmd_n;
+      rd_pend_q <= issue || (rd_pend_q && !move);
+      m_valid_q <= move || (m_valid_q && !m_axis_tready);
+      if (move) begin
+        m_last_q <= rd_last_q;
+        m_user_q <= state_q == S_PX_READ;
+      end
+    end
+  end
+
+  always @(posedge aclk) begin
+    if (move) m_data_q <= state_q == S_PX_READ ? {{(HpRecW-96){1'b0}}, px_rdata}
+                                               : {{(32-PxAW){1'b0}}, hp_rdata};
+  end
+
+  assign m_axis_tdata  = m_data_q;
+  assign m_axis_tuser  = m_user_q;
+  assign m_axis_tlast  = m_last_q;
+  assign m_axis_tvalid = m_valid_q;
+
+  assign all_idle   = core_idle && phf_empty && state_q == S_IDLE && wr_cnt_q == cum_in_q &&
+                      !m_valid_q;
+  assign batch_done = batch_q && all_idle;
+
+  // ===============================================================================================
+  // The engine.
+  wire [31:0] hp_a = hp_ptr_q + (state_q == S_HP_READ ? ci_q : 32'd0);
+  wire [31:0] px_a = px_base_q + ci_q;
+  wire [HpAW-1:0] n_hit = n_hit_q[HpAW-1:0];
+
+  pree_top #(
+    .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
+    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW)
+  ) u_top (
+    .clk_i(aclk), .rst_ni(rst_n),
+    .mode_i(mode_q), .cnt_en_i(cnt_en_q), .ne_i(ne_q), .alpha_i(alpha_q), .kappa_i(kappa_q),
+    .rad_start_i(state_q == S_RAD_START), .n_hit_i(n_hit), .idle_o(core_idle),
+    .ph_valid_i(core_valid), .ph_ready_o(core_ready), .ph_data_i(phf_data_q[rp]),
+    .ph_paddr_i(head_p), .ph_n_i(phf_n_q[rp]), .photons_done_o(core_done),
+    .idx_we_i(idx_we), .idx_addr_i(idx_addr), .idx_data_i(idx_data),
+    .hp_we_i(hp_take), .hp_re_i(issue && state_q == S_HP_READ), .hp_addr_i(hp_a[HpAW-1:0]),
+    .hp_wdata_i(s_axis_hp_tdata[PxAW+191+StateW:0]), .hp_rdata_o(hp_rdata),
+    .px_we_i(px_clr), .px_re_i(issue && state_q == S_PX_READ), .px_addr_i(px_a[PxAW-1:0]),
+    .px_wdata_i(96'd0), .px_rdata_o(px_rdata), .cnt_o(cnt));
+
+  // Bits the engine does not use: the slots' upper bits, the byte offsets, the counts' tops.
+  wire unused_bits = ^{s_axis_ph_tdata[223:192+CntW], s_axis_hp_tdata[HpRecW-1:PxAW+192+StateW],
+                       wr_addr[1:0], rd_addr[1:0], n_hit_q[31:HpAW], hp_a[31:HpAW], px_a[31:PxAW],
+                       cand_unused};
+  reg [NumPreu*(32-HpAW)-1:0] cand_unused;
+  always @* begin : cand_tops
+    integer j;
+    for (j = 0; j < NumPreu; j = j + 1)
+      cand_unused[j*(32-HpAW) +: 32-HpAW] = s_axis_cand_tdata[32*j+HpAW +: 32-HpAW];
+  end
+
+endmodule
+
+`default_nettype wire

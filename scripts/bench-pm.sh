@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+# The photon-map estimator against PPM (docs/photon_map.md): run time against error on cornell3
+# and cornell-teapot, PPM and PM with k = 50, 200, 1000 (clustered search, max radius 4x the PPM
+# initial radius), photons quadrupling from BASE, each against a long PPM reference with photons
+# of its own (--photon-offset). Also the search-phase speedup of the clustered search over the
+# naive one (CPU seconds, one thread) and the tracing/search/frame speedup for 1 and 2 threads
+# with the dynamic and static task schedules. CPU seconds (user + sys) throughout: the machine is
+# shared. Tables in OUTDIR/pm_*.txt, the plot in OUTDIR/pm_bias.png.
+# Usage: bench-pm.sh PREE OUTDIR [--quick]   (--quick: small sizes, for testing the script)
+set -euo pipefail
+pree=$1; out=$2; quick=${3:-}
+mkdir -p "$out"
+if [ "$quick" = --quick ]; then W=48; H=36; base=10000; steps=1; refn=160000; ks="50 200"
+else W=160; H=120; base=100000; steps=2; refn=12800000; ks="50 200 1000"; fi
+cpu_of() { awk '{print $1 + $2}' "$1"; }
+js() { python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))
+for p in sys.argv[2].split("."): v=v[p]
+print(v)' "$1" "$2"; }
+
+bias="$out/pm_bias.txt"
+printf '%-15s %-9s %10s %8s %9s %12s %10s\n' scene estimator photons k cpu_s rmse_linear peak_mib | tee "$bias"
+for scene in cornell3 cornell-teapot; do
+  ref="$out/pm-ref-$scene-${W}x${H}-$refn"
+  if [ ! -f "$ref.exr" ]; then
+    echo "bench-pm: reference $scene, $refn PPM photons from index $refn (once; kept in $out)" >&2
+    "$pree" render scenes/$scene --width $W --height $H --photons $refn --photon-offset $refn --quiet \
+        --out "$ref.exr" --stats "$ref.json"
+  fi
+  r0=$(js "$ref.json" initial_radius)
+  rmax=$(python3 -c "print(4 * $r0)")
+  for step in $(seq 0 $steps); do
+    n=$((base << (2 * step)))
+    for est in ppm $ks; do
+      f="$out/pm-$scene-$est-$n"
+      if [ "$est" = ppm ]; then args=(); k=-; else args=(--estimator pm --k "$est" --max-radius "$rmax"); k=$est; fi
+      /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render scenes/$scene --width $W --height $H --photons $n \
+          "${args[@]}" --quiet --out "$f.exr" --stats "$f.json"
+      rmse=$("$pree" compare "$ref.exr" "$f.exr" | awk '$1=="rmse"{print $2}')
+      mib=$(( $(js "$f.json" peak_rss_kib) / 1024 ))
+      printf '%-15s %-9s %10d %8s %9.2f %12.6g %10d\n' $scene $([ "$est" = ppm ] && echo ppm || echo pm) $n $k \
+          "$(cpu_of "$f.cpu")" "$rmse" $mib | tee -a "$bias"
+    done
+  done
+done
+
+# Search speedup, clustered against naive, one thread, search phase only (CPU seconds).
+speed="$out/pm_search_speedup.txt"
+printf '%-15s %6s %12s %12s %9s %10s\n' scene k naive_cpu_s clust_cpu_s speedup same_bits | tee "$speed"
+n=$((base << (2 * steps)))
+for scene in cornell3 cornell-teapot; do
+  rmax=$(python3 -c "print(4 * $(js "$out/pm-ref-$scene-${W}x${H}-$refn.json" initial_radius))")
+  for k in $ks; do
+    for s in naive clustered; do
+      "$pree" render scenes/$scene --width $W --height $H --photons $n --estimator pm --k $k --max-radius "$rmax" \
+          --knn-search $s --threads 1 --quiet --out "$out/pm-s-$s.exr" --stats "$out/pm-s-$s.json"
+    done
+    a=$(js "$out/pm-s-naive.json" pm.cpu_search); b=$(js "$out/pm-s-clustered.json" pm.cpu_search)
+    same=$([ "$(js "$out/pm-s-naive.json" image_hash)" = "$(js "$out/pm-s-clustered.json" image_hash)" ] && echo yes || echo NO)
+    printf '%-15s %6d %12.2f %12.2f %9.2f %10s\n' $scene $k $a $b "$(python3 -c "print($a / $b)")" $same | tee -a "$speed"
+  done
+done
+
+# Threads and task schedules (paper 001): tracing, search and whole frame; wall seconds (the only
+# measure of parallel speedup), medians of 3, with the CPU seconds beside them.
+thr="$out/pm_threads.txt"
+printf '%-9s %8s %7s %10s %10s %10s %10s\n' schedule task threads trace_s search_s total_s cpu_s | tee "$thr"
+for sched in dynamic static; do
+  for task in 100 1000 10000; do
+    for t in 1 2; do
+      rows=()
+      for rep in 1 2 3; do
+        f="$out/pm-t"
+        /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render scenes/cornell3 --width $W --height $H --photons $n \
+            --estimator pm --task-schedule $sched --task-photons $task --threads $t --quiet --out "$f.exr" --stats "$f.json"
+        rows+=("$(js "$f.json" pm.sec_map) $(js "$f.json" pm.sec_search) $(js "$f.json" seconds.total) $(cpu_of "$f.cpu")")
+      done
+      printf '%s\n' "${rows[@]}" | sort -k3 -g | sed -n 2p | \
+        awk -v s=$sched -v k=$task -v t=$t '{printf "%-9s %8d %7d %10.3f %10.3f %10.3f %10.2f\n", s, k, t, $1, $2, $3, $4}' | tee -a "$thr"
+    done
+  done
+done
+
+for scene in cornell3 cornell-teapot; do
+  awk -v s=$scene 'NR>1 && $1==s && $2=="ppm"{print $5, $6}' "$bias" > "$out/pm-$scene-ppm.dat"
+  for k in $ks; do awk -v s=$scene -v k=$k 'NR>1 && $1==s && $4==k{print $5, $6}' "$bias" > "$out/pm-$scene-k$k.dat"; done
+done
+plots() {
+  local scene=$1 p="plot \"$out/pm-$1-ppm.dat\" using 1:2 with linespoints lw 2 title \"PPM\""
+  for k in $ks; do p="$p, \"$out/pm-$scene-k$k.dat\" using 1:2 with linespoints title \"PM k=$k\""; done
+  echo "set title \"$scene\"; $p"
+}
+gnuplot <<GP
+set terminal pngcairo size 1000,420 font ",10"
+set output "$out/pm_bias.png"
+set multiplot layout 1,2 title "${W}x${H}: RMSE against a $refn-photon PPM reference, photons x4 from $base"
+set logscale xy
+set xlabel "CPU seconds (render, user + sys)"
+set ylabel "RMSE, linear radiance"
+set grid
+$(plots cornell3)
+$(plots cornell-teapot)
+unset multiplot
+GP
+echo "bench-pm: $bias, $speed, $thr, $out/pm_bias.png" >&2

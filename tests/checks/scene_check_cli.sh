@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# `pree check SCENE`: parses, loads meshes and validates without rendering; the report's counts
+# and memory estimate for known scenes; the same one-line errors as render; no file written.
+# level: quick
+. "$(dirname "$0")/../lib/check.sh"
+cd "$TMP"
+"$PREE" check "$ROOT/scenes/cornell3" --width 320 --height 240 > c3.txt || fail "check cornell3 (pree check $ROOT/scenes/cornell3)"
+expect_eq "cornell3 spheres" "$(awk '$1=="spheres"{print $2}' c3.txt)" 9
+expect_eq "cornell3 materials" "$(awk '$1=="materials"{print $2}' c3.txt)" 7
+expect_eq "cornell3 lights" "$(awk '$1=="lights"{print $2}' c3.txt)" 1
+expect_eq "cornell3 triangles" "$(awk '$1=="triangles"{print $2}' c3.txt)" 0
+expect_eq "cornell3 hit points estimate" "$(awk '$1=="hit_points_estimate"{print $2}' c3.txt)" 76800
+# 64 MiB + 76800 pixels * (48 + 640) bytes
+expect_eq "cornell3 memory estimate" "$(awk '$1=="memory_estimate_bytes"{print $2}' c3.txt)" $((67108864 + 76800 * 688))
+"$PREE" check "$ROOT/scenes/cornell-teapot" > tp.txt 2>/dev/null || fail "check cornell-teapot"
+[ "$(awk '$1=="triangles"{print $2}' tp.txt)" -gt 1000 ] || fail "cornell-teapot: no mesh triangles: $(cat tp.txt)"
+echo "ok: cornell-teapot: $(awk '$1=="triangles"' tp.txt)"
+[ -z "$(ls -A | grep -v '\.txt$')" ] || fail "pree check wrote a file: $(ls -A)"
+
+expect_fail() {   # expect_fail NAME PATTERN ARGS...: exit 1, one stderr line matching PATTERN
+  local name=$1 pat=$2; shift 2
+  "$PREE" check "$@" >out.txt 2>err.txt; local rc=$?
+  [ $rc -eq 1 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -qE -e "$pat" err.txt && [ ! -s out.txt ] ||
+    fail "$name: exit $rc, stderr '$(cat err.txt)', want /$pat/ (pree check $*)"
+  echo "ok: $name: $(cat err.txt)"
+}
+expect_fail "/dev/zero" "/dev/zero: not a regular file" /dev/zero
+printf '%s\n' "camera origin 0 0 0 dir 0 0 -1 scale 0.5 near 0" "depth 5 6" > bad.scene
+expect_fail "extra value" "bad.scene:2: depth: unexpected '6'" bad.scene
+expect_fail "memory" "would need about 43.07 GiB .* but --max-memory is 2.00 GiB" "$ROOT/scenes/cornell3" --width 8192 --height 8192 --max-memory 2G
+printf '%s\n' "camera origin 0 0 0 dir 1 0 0 scale 0.5 near 0" "material m diffuse .5 .5 .5" "sphere 1 5 0 0 m" "light point 0 5 0 flux 1 1 1" > x.scene
+expect_fail "camera rays" "camera: the eye rays .* have no direction" x.scene
+"$PREE" check "$ROOT/scenes/cornell3" --bogus 2>err.txt; [ $? -eq 2 ] && grep -q "unknown option '--bogus'" err.txt || fail "unknown option: $(cat err.txt)"
+echo "ok: unknown option: $(cat err.txt)"
