@@ -27,13 +27,15 @@ static const command_t commands[] = {
 
 /* The co-simulation program for the configuration the arguments ask for, next to this one.
  * The last --preu and --datapath (either form: --preu 8, --preu=8) win, as in the program's
- * own parsing; a bad value is left for that program to report. */
+ * own parsing; a bad value is left for that program to report. With --model-only (no RTL is
+ * clocked) any co-simulation program that is built will do when that one is not. */
 static int run_cosim(int argc, char **argv)
 {
     const char *preu = "4", *dp = "paper", *fast = "";
-    int axi = 0;
+    int model_only = 0, axi = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--")) break;
+        if (!strcmp(argv[i], "--model-only")) model_only = 1;
         if (!strcmp(argv[i], "--axi")) axi = 1;
         else if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
         else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
@@ -51,6 +53,11 @@ static int run_cosim(int argc, char **argv)
     if (slash) *slash = '\0';
     snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s%s", self, axi ? "axi-" : "", d, preu, fast);
     execv(path, argv);
+    for (const char *const *o = (const char *const[]){"p4", "p8", "p16", "s4", NULL}; model_only && *o; o++) {
+        char alt[PATH_MAX + 32];
+        snprintf(alt, sizeof alt, "%s/pree-cosim-%s", self, *o);
+        execv(alt, argv);
+    }
     fprintf(stderr, "pree cosim: %s: %s (build it with 'make %s')\n", path, strerror(errno),
             strstr(path, "build/") ? strstr(path, "build/") : path);
     return 1;

@@ -59,7 +59,7 @@ struct cosim_drv {
     cosim_sched_t *sched;
 };
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p);
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p);
 
 static uint64_t next_rand(cosim_drv_t *d)
 {
@@ -284,9 +284,10 @@ static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, u
     d->ph_sent++;
 }
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p)
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p)
 {
     cosim_drv_t *d = user;
+    (void)first;   /* one photon a cycle through the wrapper: every group is one photon */
     send(d, ph, hps, n, 0);
     *p = (uint32_t)(-(int64_t)d->cand_sent) & ((1u << COSIM_IDXAW) - 1);   /* pree_axi's p_k */
     return d->hung ? -1 : 0;

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "cosim_sched.h"
 #include "cosim_shadow.h"
+#include "hp_bank.h"
 
 #define IDX_DEPTH (1u << COSIM_IDXAW)
 #define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
@@ -14,7 +15,12 @@
 #define MAX_CAND  (IDX_DEPTH / 2)      /* candidates of one photon */
 
 typedef struct { uint32_t addr, hp; } idx_entry_t;
-typedef struct { preu_photon_t ph; uint32_t paddr, n; uint64_t widx_end; } photon_entry_t;
+typedef struct {
+    preu_photon_t ph;
+    uint32_t paddr, n;
+    uint64_t widx_end;                 /* the index-queue position after its entries */
+    int first;                         /* it starts a scheduler group (one cycle's photons) */
+} photon_entry_t;
 typedef struct { uint64_t start, end; } alloc_entry_t;
 
 struct cosim_drv {
@@ -32,6 +38,8 @@ struct cosim_drv {
     uint64_t prev_p;                   /* absolute p of the last photon */
     uint32_t retired;                  /* photons_done_o seen so far */
     int ready;                         /* ph_ready_o after the last edge */
+    int ppc;                           /* the model's photon slots (PhotonsPerCycle) */
+    int closed;                        /* the scheduler has sent everything (drain) */
     uint64_t rng;
     uint64_t ops;
     int recent[COSIM_MAX_PREU];        /* hit-point banks of the last NumPreu-1 operations */
@@ -42,7 +50,7 @@ struct cosim_drv {
     int hung;                          /* a wait ran out (stuck): every later call fails */
 };
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p);
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p);
 
 static uint64_t next_rand(cosim_drv_t *d)
 {
@@ -57,14 +65,15 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->cand = malloc(MAX_CAND * sizeof *d->cand);
     if (!d->cand) { free(d); return NULL; }
     d->rtl = rtl;
-    d->in = cosim_rtl_in(rtl);
+    d->in = rtl ? cosim_rtl_in(rtl) : NULL;
     d->opt = *opt;
     d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
-    d->ready = cosim_rtl_ph_ready(rtl);
+    d->ready = rtl ? cosim_rtl_ph_ready(rtl) : 0;
+    d->ppc = rtl ? cosim_rtl_ppc(rtl) : opt->ppc;
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
-                                 .win = cosim_rtl_update_window(rtl),
-                                 .reorder = opt->reorder, .window = opt->window};
+                                 .win = rtl ? cosim_rtl_update_window(rtl) : opt->win,
+                                 .reorder = opt->reorder, .window = opt->window, .ppc = d->ppc};
         d->sched = cosim_sched_new(&so, emit, d);
         if (!d->sched) { cosim_drv_free(d); return NULL; }
     }
@@ -83,6 +92,23 @@ const char *cosim_drv_error(const cosim_drv_t *d) { return d->err; }
 uint64_t cosim_drv_ops_sent(const cosim_drv_t *d) { return d->ops; }
 
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]) { cosim_rtl_counters(d->rtl, cnt); }
+
+/* Photons at the head of the queue to offer in this cycle, their entries written by its end:
+ * up to PhotonsPerCycle consecutive ones; scheduled, exactly the next group of the scheduler
+ * (the photons its model took in one cycle), and only once the group is complete and written. */
+static int offer_count(const cosim_drv_t *d)
+{
+    const uint64_t avail = d->pq_tail - d->pq_head;
+    int k = 0;
+    while (k < d->ppc && (uint64_t)k < avail) {
+        const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)k) & (PQ_CAP - 1)];
+        if (d->sched && k > 0 && p->first) return k;
+        if (p->widx_end > d->iq_head) return d->sched ? 0 : k;
+        k++;
+    }
+    if (d->sched && k < d->ppc && !d->closed) return 0;   /* more of the group may follow */
+    return k;
+}
 
 /* One clock cycle of the update stream: retire, write index entries, offer a photon. */
 static void pump(cosim_drv_t *d)
@@ -110,39 +136,37 @@ static void pump(cosim_drv_t *d)
         d->iq_head++;
     }
     for (int j = nw; j < np; j++) in->idx_we[j] = 0;
-    /* The head photon once its entries are written (by the end of this cycle). */
+    /* The head photons once their entries are written (by the end of this cycle). */
     in->ph_valid = 0;
+    int k = 0;
     if (d->pq_head != d->pq_tail) {
-        const photon_entry_t *p = &d->pq[d->pq_head & (PQ_CAP - 1)];
         int gap = d->opt.gap > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.gap;
         /* Scheduled stream: the first photon waits until every queued entry is written, so that
          * the load port (NumPreu entries a cycle, the RTL's rate at full utilization) starts
-         * with a lead and the RTL then takes each photon in the cycle the scheduler's model
+         * with a lead and the RTL then takes each group in the cycle the scheduler's model
          * took it (a constant offset). */
         int lead = !d->sched || d->started || d->iq_head == d->iq_tail;
-        if (p->widx_end <= d->iq_head && lead && !gap) {
-            d->started = 1;
-            in->ph_valid = 1;
-            memcpy(in->ph_pos, p->ph.pos, sizeof in->ph_pos);
-            memcpy(in->ph_phi, p->ph.phi, sizeof in->ph_phi);
-            in->ph_paddr = p->paddr;
-            in->ph_n = p->n;
+        k = lead && !gap ? offer_count(d) : 0;
+        for (int j = 0; j < d->ppc; j++) {
+            const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)j) & (PQ_CAP - 1)];
+            in->ph_n[j] = j < k ? p->n : 0;
+            if (j >= k) continue;
+            memcpy(in->ph_pos[j], p->ph.pos, sizeof in->ph_pos[j]);
+            memcpy(in->ph_phi[j], p->ph.phi, sizeof in->ph_phi[j]);
+            in->ph_paddr[j] = p->paddr;
         }
+        if (k) { d->started = 1; in->ph_valid = 1; }
     }
     /* ph_ready_o depends on the state only, so the value after the last edge holds now. */
     int take = in->ph_valid && d->ready;
     cosim_rtl_tick(d->rtl);
-    if (take) d->pq_head++;
+    if (take) d->pq_head += (uint64_t)k;
     d->ready = cosim_rtl_ph_ready(d->rtl);
 }
 
 /* Order a photon's candidates: each next one, where possible, in a bank none of the last
  * NumPreu-1 operations used. */
-static int hp_bank(const cosim_drv_t *d, uint32_t a)
-{
-    /* rtl/pree_top.v hp_bank(): the low HpBankW bits XOR the next HpBankW bits. */
-    return (int)((a ^ (a >> d->opt.hp_bank_w)) & ((1u << d->opt.hp_bank_w) - 1));
-}
+static int hp_bank(const cosim_drv_t *d, uint32_t a) { return (int)pree_hp_bank(a, d->opt.hp_bank_w); }
 
 static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
 {
@@ -189,12 +213,18 @@ static int stuck(cosim_drv_t *d, uint64_t *guard, const char *state)
 
 /* Place one photon (candidates in d->cand, in stream order) in the index table, queue its
  * entries and itself, and clock the model while the queues are long. Returns its p. */
-static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
+static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int first)
 {
     const uint32_t np = (uint32_t)d->opt.preu;
     /* Place it: p = prev_p - n (mod NumPreu), at or after the end of the last photon. */
     uint64_t target = (d->prev_p + (uint64_t)np * MAX_CAND - n) % np;
     uint64_t p = d->alloc_end + (target + np - d->alloc_end % np) % np;
+    if (d->opt.model_only) {           /* placed only: the scheduler's model reads it */
+        d->alloc_end = p + n;
+        d->prev_p = p;
+        d->ops += n;
+        return p;
+    }
     /* Wait for index-table space: everything from the oldest unretired photon on is in use. */
     uint64_t guard = 0;
     for (;;) {
@@ -219,6 +249,7 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
     pe->paddr = (uint32_t)(p & (IDX_DEPTH - 1));
     pe->n = (uint32_t)n;
     pe->widx_end = d->iq_tail;
+    pe->first = first;
     d->ops += n;
     d->in->cnt_en = 1;
     guard = 0;
@@ -229,11 +260,11 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n)
 }
 
 /* The scheduler's way out: candidates already in their stream order. */
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, uint32_t *p)
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p)
 {
     cosim_drv_t *d = user;
     memcpy(d->cand, hps, n * sizeof *hps);
-    *p = (uint32_t)(send(d, ph, n) & (IDX_DEPTH - 1));
+    *p = (uint32_t)(send(d, ph, n, first) & (IDX_DEPTH - 1));
     return d->hung ? -1 : 0;
 }
 
@@ -251,7 +282,7 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
         return -1;
     }
     reorder(d, hps, n);
-    send(d, ph, n);
+    send(d, ph, n, 1);
     return d->hung ? -1 : 0;
 }
 
@@ -269,6 +300,8 @@ int cosim_drv_drain(cosim_drv_t *d)
         if (!d->hung) snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
         return -1;
     }
+    d->closed = 1;
+    if (d->opt.model_only) return 0;
     /* Each wait is bounded by the cycles since its last progress (a photon taken). */
     uint64_t guard = 0, taken = d->pq_head;
     while (d->pq_head != d->pq_tail || d->iq_head != d->iq_tail) {

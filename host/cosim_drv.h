@@ -3,7 +3,10 @@
  * runs the radiance pass and reads the memories back.
  *
  * API
- *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory)
+ *   cosim_drv_new(rtl, opt)       a driver for a freshly reset model (NULL when out of memory);
+ *                                 rtl NULL with opt->model_only: only photon placement and the
+ *                                 scheduler run (cosim_drv_photon, cosim_drv_drain,
+ *                                 cosim_drv_sched_stats, cosim_drv_ops_sent)
  *   cosim_drv_free(d)
  *   cosim_drv_load_hp(d, ...)     write n hit points (words + pixel) through the host port
  *   cosim_drv_photon(d, ph, hps, n)  queue one photon hit with its candidate hit points, in
@@ -49,6 +52,10 @@ typedef struct {
                         * and of an idle cycle in the hit-point load (0: none) */
     uint64_t seed;     /* for the gaps and stalls */
     uint64_t wait_limit; /* cycles a wait may last without progress (0: 10 million) */
+    int model_only;    /* 1: the scheduler and its cycle model only, no RTL (rtl = NULL;
+                          needs schedule; the counters are the model's prediction) */
+    int ppc;           /* with model_only: the top's PhotonsPerCycle (else the RTL's) */
+    int win;           /* with model_only: its update hazard window (else the RTL's) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

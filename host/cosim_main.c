@@ -16,6 +16,7 @@
 #include "compare.h"
 #include "cosim_drv.h"
 #include "cosim_report.h"
+#include "cosim_shadow.h"
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
@@ -62,6 +63,8 @@ static void cosim_usage(FILE *f)
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128)\n"
+        "  --model-only           the scheduler's cycle model alone (the RTL not clocked, no\n"
+        "                         comparison): its predicted update pass in the --stats report\n"
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
         "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
         "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
@@ -133,7 +136,7 @@ static void to_float(const double *rgb, size_t n, float *out)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_AXI, OPT_PIPE_FAST };
+       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -145,6 +148,7 @@ static const struct option cosim_longopts[] = {
     {"trace", required_argument, NULL, OPT_TRACE},
     {"out", required_argument, NULL, OPT_OUT},
     {"stats", required_argument, NULL, OPT_STATS},
+    {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
     {"axi", no_argument, NULL, OPT_AXI},
     {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
     {NULL, 0, NULL, 0}
@@ -155,7 +159,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, axi = 0, pipefast = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0, pipefast = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -176,11 +180,13 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_TRACE: trace_path = a.val; break;
         case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
         case OPT_STATS: stats_path = a.val; break;
+        case OPT_MODEL_ONLY: model_only = 1; break;
         case OPT_AXI: axi = 1; break;
         case OPT_PIPE_FAST: pipefast = 1; break;
         }
     }
     if (!(scene_path = cli_scene(&a))) return 2;
+    if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
     if (axi != COSIM_DRV_AXI)
         return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
                                  : "this program drives pree_axi: give --axi");
@@ -192,13 +198,28 @@ int pree_cmd_cosim(int argc, char **argv)
     if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
     const int dp = opt.datapath == DATAPATH_STABLE;
-    cosim_rtl_t *rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
-    if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
     /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
-    cosim_rtl_in(rtl)->alpha = preu_f32(render_alpha(&opt));
-    cosim_rtl_in(rtl)->kappa = preu_kappa(cosim_rtl_in(rtl)->alpha);
-    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
-                              .schedule = schedule, .window = window, .gap = gap, .seed = 1};
+    const uint32_t alpha = preu_f32(render_alpha(&opt));
+    int hp_bank_w = 0, ppc = 0, win = cosim_update_window(dp, pipefast);
+    cosim_rtl_t *rtl = NULL;
+    if (model_only) {          /* no RTL: the configuration the build would have */
+        if (cosim_rtl_config(opt.preu, &hp_bank_w, &ppc)) { scene_free(&scene); return cli_error(&a, "no pree_top configuration with %d PREUs", opt.preu); }
+    } else {
+        rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
+        if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
+        cosim_rtl_in(rtl)->alpha = alpha;
+        cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
+        hp_bank_w = cosim_rtl_hp_bank_w(rtl);
+        ppc = cosim_rtl_ppc(rtl);
+        if (cosim_rtl_update_window(rtl) != win) {   /* the --model-only table against the RTL */
+            fprintf(stderr, "pree cosim: the RTL's update window is %d cycles, the host's table says %d\n",
+                    cosim_rtl_update_window(rtl), win);
+            cosim_rtl_free(rtl); scene_free(&scene); return 1;
+        }
+    }
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = reorder,
+                              .schedule = schedule, .window = window, .gap = gap, .seed = 1,
+                              .model_only = model_only, .ppc = ppc, .win = win};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
@@ -213,7 +234,7 @@ int pree_cmd_cosim(int argc, char **argv)
      * (the candidates that pass the host's tests) go to the RTL after the model applied them. */
     render_session_t *rs = ctx.drv ? render_open(&scene, &opt, &res, err, sizeof err) : NULL;
     if (!ctx.drv) snprintf(err, sizeof err, "out of memory");
-    int rc = rs ? load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err) : -1;
+    int rc = !rs ? -1 : model_only ? 0 : load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err);
     int streamed = 0;
     while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
         if (stream_block(&ctx, render_block_ops(rs), render_hp_address(rs), &abuf, &acap)) { streamed = -1; break; }
@@ -232,10 +253,21 @@ int pree_cmd_cosim(int argc, char **argv)
     double sec_update_rtl = ctx.sec_rtl + (now() - t0);
     double cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
     uint64_t cnt_upd[COSIM_NCNT], cnt_all[COSIM_NCNT];
+    unsigned long long hp_diff = 0, hp_diff_points = 0, img_diff = 0;
+    pree_metrics_t metrics = {0};
+    int have_m = 0;
+    double sec_rad_rtl = 0;
+    if (model_only) {          /* the cycle model's counters stand for the RTL's */
+        cosim_sched_stats_t ss;
+        cosim_drv_sched_stats(ctx.drv, &ss);
+        memcpy(cnt_upd, ss.cnt, sizeof cnt_upd);
+        memcpy(cnt_all, ss.cnt, sizeof cnt_all);
+        reference = 0;
+        goto figures;
+    }
     cosim_drv_counters(ctx.drv, cnt_upd);
 
     /* Hit-point memory against the fp32 model's final state. */
-    unsigned long long hp_diff = 0, hp_diff_points = 0;
     for (size_t i = 0; i < res.hp.n; i++) {
         preu_hpw_t h, m;
         uint32_t px;
@@ -262,14 +294,13 @@ int pree_cmd_cosim(int argc, char **argv)
         fprintf(stderr, "pree cosim: radiance pass: %s\n", cosim_drv_error(ctx.drv));
         goto out;
     }
-    double sec_rad_rtl = now() - t0;
+    sec_rad_rtl = now() - t0;
     cosim_drv_counters(ctx.drv, cnt_all);
     unsigned long long skipped;
     if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, Lm, &skipped)) {
         fprintf(stderr, "pree cosim: out of memory\n");
         goto out;
     }
-    unsigned long long img_diff = 0;
     for (size_t j = 0; j < npix * 3; j++) {
         if (Lr[j] != Lm[j] && img_diff < 5)
             fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
@@ -282,8 +313,6 @@ int pree_cmd_cosim(int argc, char **argv)
     }
 
     /* The double-precision reference render. */
-    pree_metrics_t m = {0};
-    int have_m = 0;
     if (reference) {
         render_options_t ropt = {.width = opt.width, .height = opt.height, .photons = opt.photons,
                                  .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = opt.threads,
@@ -298,21 +327,22 @@ int pree_cmd_cosim(int argc, char **argv)
         }
         to_float(ref.rgb, npix * 3, ia.rgb);
         to_float(rgb, npix * 3, ib.rgb);
-        if (pree_compare(&ia, &ib, &m, err, sizeof err)) fprintf(stderr, "pree cosim: compare: %s\n", err);
+        if (pree_compare(&ia, &ib, &metrics, err, sizeof err)) fprintf(stderr, "pree cosim: compare: %s\n", err);
         else have_m = 1;
         pree_image_free(&ia);
         pree_image_free(&ib);
     }
 
     /* Figures. */
+figures:;
     cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
-                          .preu = opt.preu, .axi = axi, .reorder = reorder, .window = window, .pipe_fast = pipefast,
-                          .update_window = cosim_rtl_update_window(rtl),
+                          .preu = opt.preu, .ppc = ppc, .model_only = model_only, .axi = axi,
+                          .reorder = reorder, .window = window, .pipe_fast = pipefast, .update_window = win,
                           .photons_emitted = res.stats.photons_emitted,
-                          .alpha = (double)fp32_from_bits(cosim_rtl_in(rtl)->alpha), .gap = gap,
+                          .alpha = (double)fp32_from_bits(alpha), .gap = gap,
                           .hit_points = res.hp.n, .photons_sent = ctx.photons_sent, .photons_empty = ctx.photons_empty,
                           .hp_diff = hp_diff, .hp_diff_points = hp_diff_points, .img_diff = img_diff,
-                          .ops_sent = cosim_drv_ops_sent(ctx.drv), .have_metrics = have_m, .m = m,
+                          .ops_sent = cosim_drv_ops_sent(ctx.drv), .have_metrics = have_m, .m = metrics,
                           .sec_engine = sec_engine, .sec_update_rtl = sec_update_rtl,
                           .cpu_update_rtl = cpu_update_rtl, .sec_rad_rtl = sec_rad_rtl, .cpu_process = cpu_now()};
     rep.have_sched = cosim_drv_sched_stats(ctx.drv, &rep.sched) == 0;
@@ -326,12 +356,15 @@ int pree_cmd_cosim(int argc, char **argv)
         fprintf(stderr, "pree cosim: %s\n", err);
         goto out;
     }
-    if (opt.progress)
+    if (opt.progress && model_only)
+        fprintf(stderr, "pree cosim: cycle model, %d PREUs: %llu ops in %llu cycles (utilization %.4f%%)\n",
+                rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd);
+    else if (opt.progress)
         fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
                 "differing words: hit points %llu, image %llu%s\n",
                 rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd,
                 rep.sim_ops_per_cpu_s, hp_diff, img_diff, rep.pass ? "" : " FAIL");
-    status = rep.pass ? 0 : 1;
+    status = rep.pass || model_only ? 0 : 1;
 out:
     free(Lr);
     free(Lm);

@@ -120,12 +120,13 @@ struct cosim_rtl {
     virtual int open_trace(const char *path) = 0;
     virtual int hp_bank_w() = 0;
     virtual int update_window() = 0;
+    virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int DP, int WIN>
+template <class V, int NP, int HPB, int PPC, int DP, int WIN>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
@@ -176,17 +177,19 @@ struct Rtl : cosim_rtl {
         t.kappa_i = in.kappa;
         t.n_hit_i = in.n_hit;
         t.ph_valid_i = in.ph_valid;
-        if (std::memcmp(applied.ph_pos, in.ph_pos, sizeof in.ph_pos) ||
-            std::memcmp(applied.ph_phi, in.ph_phi, sizeof in.ph_phi)) {
-            for (int c = 0; c < 3; c++) {
-                put32(t.ph_data_i, 32 * c, in.ph_pos[c]);
-                put32(t.ph_data_i, 96 + 32 * c, in.ph_phi[c]);
+        for (int k = 0; k < PPC; k++) {
+            if (std::memcmp(applied.ph_pos[k], in.ph_pos[k], sizeof in.ph_pos[k]) ||
+                std::memcmp(applied.ph_phi[k], in.ph_phi[k], sizeof in.ph_phi[k])) {
+                for (int c = 0; c < 3; c++) {
+                    put32(t.ph_data_i, 192 * k + 32 * c, in.ph_pos[k][c]);
+                    put32(t.ph_data_i, 192 * k + 96 + 32 * c, in.ph_phi[k][c]);
+                }
+                std::memcpy(applied.ph_pos[k], in.ph_pos[k], sizeof in.ph_pos[k]);
+                std::memcpy(applied.ph_phi[k], in.ph_phi[k], sizeof in.ph_phi[k]);
             }
-            std::memcpy(applied.ph_pos, in.ph_pos, sizeof in.ph_pos);
-            std::memcpy(applied.ph_phi, in.ph_phi, sizeof in.ph_phi);
+            put(t.ph_paddr_i, k * COSIM_IDXAW, COSIM_IDXAW, in.ph_paddr[k]);
+            put(t.ph_n_i, k * COSIM_CNTW, COSIM_CNTW, in.ph_n[k]);
         }
-        t.ph_paddr_i = in.ph_paddr;
-        t.ph_n_i = in.ph_n;
         uint32_t we = 0;
         for (int j = 0; j < NP; j++) {
             if (!in.idx_we[j]) continue;
@@ -230,6 +233,7 @@ struct Rtl : cosim_rtl {
     }
     int hp_bank_w() override { return HPB; }
     int update_window() override { return WIN; }
+    int ppc() override { return PPC; }
     void set_reset(int on) override
     {
         top->rst_ni = on ? 0 : 1;
@@ -266,7 +270,8 @@ extern "C" {
 
 // One case per model built into this program: PREU count, pipeline configuration, datapath.
 #define COSIM_CASE(tag, np, pf, dp) \
-    case np * 4 + pf * 2 + dp: r = new Rtl<Vpree_top_##tag, np, COSIM_HPB_##np, dp, Vpree_top_##tag##_pree_top::WIN_UPD>; break;
+    case np * 4 + pf * 2 + dp: \
+        r = new Rtl<Vpree_top_##tag, np, COSIM_HPB_##np, COSIM_PPC_##np, dp, Vpree_top_##tag##_pree_top::WIN_UPD>; break;
 
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
@@ -333,6 +338,17 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
+int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
+
+int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)
+{
+    switch (preu) {
+    case 4: *hp_bank_w = COSIM_HPB_4; *ppc = COSIM_PPC_4; return 0;
+    case 8: *hp_bank_w = COSIM_HPB_8; *ppc = COSIM_PPC_8; return 0;
+    case 16: *hp_bank_w = COSIM_HPB_16; *ppc = COSIM_PPC_16; return 0;
+    default: return -1;
+    }
+}
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on) { r->set_reset(on); }
 
 }  // extern "C"

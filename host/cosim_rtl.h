@@ -15,6 +15,10 @@
  *   cosim_rtl_hp_bank_w            the model's HpBankW parameter
  *   cosim_rtl_update_window        its update hazard window (pree_top's WIN_UPD: 1 + the PREU's
  *                                  update latency, which follows from Datapath and PipeFast)
+ *   cosim_rtl_ppc                  the model's PhotonsPerCycle parameter (photon slots of ph_*)
+ *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
+ *                                  preu PREUs, whether or not that model is linked (-1: no such
+ *                                  configuration); what `pree cosim --model-only` needs
  *   cosim_rtl_set_reset(r, on)     hold rst_ni low (on: asynchronous, at once) or release it
  * Inputs hold their values until changed; none of these can fail after cosim_rtl_new. */
 #ifndef PREE_COSIM_RTL_H
@@ -35,6 +39,7 @@ extern "C" {
 #define COSIM_CNTW  16   /* candidates per photon below 65536 */
 #define COSIM_CTRW  48   /* bits of each counter in cnt_o (pree_top's CtrW) */
 #define COSIM_MAX_PREU 16
+#define COSIM_MAX_PPC  4 /* photon slots (PhotonsPerCycle) of the widest model */
 #define COSIM_NCNT (7 + COSIM_MAX_PREU)
 
 /* Counter numbers in pree_top's cnt_o. */
@@ -43,9 +48,9 @@ enum { CNT_CYC_UPD = 0, CNT_CYC_RAD, CNT_HAZ, CNT_DUP, CNT_BANK, CNT_ABANK, CNT_
 typedef struct {
     int mode, cnt_en, rad_start;
     uint32_t ne, n_hit;
-    int ph_valid;
-    uint32_t ph_pos[3], ph_phi[3];
-    uint32_t ph_paddr, ph_n;
+    int ph_valid;                               /* one valid for every slot */
+    uint32_t ph_pos[COSIM_MAX_PPC][3], ph_phi[COSIM_MAX_PPC][3];
+    uint32_t ph_paddr[COSIM_MAX_PPC], ph_n[COSIM_MAX_PPC];   /* ph_n 0: an empty slot */
     int idx_we[COSIM_MAX_PREU];
     uint32_t idx_addr[COSIM_MAX_PREU], idx_data[COSIM_MAX_PREU];
     int hp_we, hp_re;
@@ -70,6 +75,8 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cycles */
+int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
+int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on);
 
 #ifdef __cplusplus

@@ -9,6 +9,7 @@
 #define SCAN_PHOTONS 8                 /* eligible photons scored per choice at most */
 #define SCAN_CANDS  64                 /* candidates tried per position of one photon at most */
 #define NEVER       (-((int64_t)1 << 40))
+#define GROUP_OPS   (1u << (COSIM_IDXAW - 1))   /* candidates of one cycle's photons at most */
 
 typedef struct {
     preu_photon_t ph;
@@ -47,7 +48,9 @@ cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_f
     s->emit = emit;
     s->user = user;
     const size_t nhp = (size_t)1 << COSIM_HPAW, w = (size_t)s->opt.window;
-    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w, opt->win);
+    if (s->opt.ppc < 1) s->opt.ppc = 1;
+    if (s->opt.ppc > COSIM_MAX_PPC) s->opt.ppc = COSIM_MAX_PPC;
+    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w, opt->win, s->opt.ppc);
     s->slot = calloc(w, sizeof *s->slot);
     s->order = malloc(w * sizeof *s->order);
     s->free_slot = malloc(w * sizeof *s->free_slot);
@@ -97,7 +100,7 @@ static int64_t op_cost(const cosim_sched_t *s, uint32_t h, int64_t c, const uint
     int64_t cost = 0, d = c - s->last[h];
     const int64_t W = s->opt.win;
     if (d <= W) cost += np * (d < 0 ? W + 1 : W + 1 - d);
-    uint32_t b = cosim_hp_bank(h, s->opt.hp_bank_w);
+    uint32_t b = pree_hp_bank(h, s->opt.hp_bank_w);
     for (int i = 0; i < ng; i++)
         if (gb[i] == b) { cost += np; break; }
     return cost;
@@ -112,7 +115,7 @@ static int64_t score(cosim_sched_t *s, slot_t *sl, int64_t L, int64_t base)
     int ng = 0;
     /* The last L mod NumPreu operations streamed share the photon's first issue cycle. */
     for (int i = (int)(L % np); i > 0; i--)
-        gb[ng++] = cosim_hp_bank(s->tail[(s->tail_pos + np - i) % np], s->opt.hp_bank_w);
+        gb[ng++] = pree_hp_bank(s->tail[(s->tail_pos + np - i) % np], s->opt.hp_bank_w);
     memcpy(s->ord, sl->hp, sl->n * sizeof *s->ord);
     int64_t cost = 0, max_last = NEVER;
     for (uint32_t k = 0; k < sl->n; k++)
@@ -124,7 +127,7 @@ static int64_t score(cosim_sched_t *s, slot_t *sl, int64_t L, int64_t base)
     uint32_t *bk = s->bk, *mult = s->mult;
     const int crowd = s->opt.reorder && sl->n <= SCAN_CANDS;
     for (uint32_t k = 0; k < sl->n; k++) {
-        bk[k] = cosim_hp_bank(s->ord[k], s->opt.hp_bank_w);
+        bk[k] = pree_hp_bank(s->ord[k], s->opt.hp_bank_w);
         mult[k] = 1;
         if (crowd)
             for (uint32_t j = 0; j < k; j++)
@@ -176,18 +179,21 @@ static int grow_scratch(cosim_sched_t *s, uint32_t n)
     return 0;
 }
 
-/* Choose, send and retire one pending photon; the shadow model is in its combinational phase.
- * Returns 0 or -1; *n_out and *p_out describe the photon taken. */
-static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
+/* Choose a photon of the group (the photons taken in one cycle) behind `queued` operations of
+ * the group's earlier photons, among those with at most `budget` candidates (the oldest eligible
+ * one always fits in the first pick, first = 1), and send it. The shadow model is in its
+ * combinational phase. Returns 1 when taken, 0 when none fits, -1 on failure; *n_out and *p_out
+ * describe the photon taken. */
+static int take_one(cosim_sched_t *s, int64_t queued, uint32_t budget, int first, uint32_t *n_out, uint32_t *p_out)
 {
     const int np = s->opt.preu;
-    const int64_t L = (int64_t)cosim_shadow_leftover(s->sh);
+    const int64_t L = (int64_t)cosim_shadow_leftover(s->sh) + queued;
     const int64_t base = (int64_t)s->sh->t + 2 + s->sh->stall;
     int best = -1, best_scored = 0, scanned = 0;
     int64_t best_cost = 0;
     for (int i = 0; i < s->count; i++) {
         slot_t *sl = &s->slot[s->order[i]];
-        if (sl->deps) continue;
+        if (sl->deps || sl->n > budget) continue;
         /* A hit point issued (or due) within win cycles of the photon's last operation
          * means a hazard whatever the order (last[] only grows): count the least cost unscored. */
         int64_t d = base + (L + (int64_t)sl->n - 1) / np - sl->max_last, cost;
@@ -203,7 +209,7 @@ static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
         }
         if (cost == 0 || ++scanned >= SCAN_PHOTONS) break;
     }
-    /* The oldest pending photon is always eligible, so best >= 0. */
+    if (best < 0) return 0;
     const int si = s->order[best];
     slot_t *sl = &s->slot[si];
     if (!best_scored) {
@@ -211,7 +217,7 @@ static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
         uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t;
     }
     uint32_t p = 0;
-    if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, &p)) return -1;
+    if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, first, &p)) return -1;
     cosim_shadow_write_idx(s->sh, p, s->best_ord, sl->n);
     /* Predicted issue cycles, and the tail of the stream. */
     for (uint32_t k = 0; k < sl->n; k++) {
@@ -236,15 +242,27 @@ static int take_one(cosim_sched_t *s, uint32_t *n_out, uint32_t *p_out)
     s->free_slot[s->nfree++] = si;
     *n_out = sl->n;
     *p_out = p;
-    return 0;
+    return 1;
 }
 
-/* One cycle of the shadow model, taking a pending photon when it is ready. */
+/* One cycle of the shadow model, taking up to PhotonsPerCycle pending photons (a group, which
+ * the host offers in one cycle) when it is ready; a pick that finds no photon within the
+ * group's candidate budget ends the group. */
 static int step(cosim_sched_t *s)
 {
-    uint32_t n = 0, p = 0;
+    uint32_t n[COSIM_MAX_PPC] = {0}, p[COSIM_MAX_PPC] = {0};
     int take = cosim_shadow_eval(s->sh) && s->count > 0;
-    if (take && take_one(s, &n, &p)) return -1;
+    if (take) {
+        int group = s->count < s->opt.ppc ? s->count : s->opt.ppc;
+        int64_t queued = 0;
+        for (int k = 0; k < group; k++) {
+            uint32_t budget = k ? GROUP_OPS - (uint32_t)queued : UINT32_MAX;
+            int r = take_one(s, queued, budget, k == 0, &n[k], &p[k]);
+            if (r < 0) return -1;
+            if (r == 0) break;
+            queued += n[k];
+        }
+    }
     const int64_t t = (int64_t)s->sh->t;
     cosim_shadow_edge(s->sh, take, n, p);
     for (int i = 0; i < s->sh->n_iss; i++)

@@ -9,7 +9,8 @@
  * photon's candidates never matters (they are distinct hit points).
  *
  * How it chooses: a cycle model of the top's issue path (cosim_shadow.h) runs ahead of the RTL
- * on the scheduled stream. In each cycle in which it takes a photon (ph_ready_o), the scheduler
+ * on the scheduled stream. In each cycle in which it takes photons (ph_ready_o; up to
+ * PhotonsPerCycle, each chosen behind the ones already chosen for that cycle), the scheduler
  * predicts where the operations of a candidate photon would issue (behind the operations
  * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
  * hit point issued or predicted within the last win cycles: 11 or 13, 46 or 49 with PipeFast 1),
@@ -17,12 +18,16 @@
  * candidates are ordered greedily
  * against the same costs (ties: the candidate whose bank more of the photon's candidates share
  * goes first). The oldest eligible photon with no cost is taken, else the cheapest of the first
- * few eligible ones.
+ * few eligible ones. A cycle's group holds at most GROUP_OPS candidates (half the index table), so
+ * that the host can always place a whole group before offering it.
  * Everything is integer arithmetic: deterministic.
  *
  * API
- *   cosim_sched_new(opt, emit, user)  emit(user, ph, hps, n, &p) sends one photon (hps in the
- *                            chosen order) and returns 0 with its first index entry in p, or -1
+ *   cosim_sched_new(opt, emit, user)  emit(user, ph, hps, n, first, &p) sends one photon (hps in
+ *                            the chosen order; first: it starts the group of photons the model
+ *                            took in one cycle, which the host must offer together, in one
+ *                            cycle; the group ends where the next one starts or at the flush)
+ *                            and returns 0 with its first index entry in p, or -1
  *   cosim_sched_free(s)
  *   cosim_sched_add(s, ph, hps, n)  one photon hit (n >= 1) in photon order; emits as the window
  *                            fills. Returns 0 or -1 (out of memory, or emit failed).
@@ -41,6 +46,7 @@ typedef struct {
     int win;           /* the top's update hazard window (cosim_rtl_update_window) */
     int reorder;       /* 1: order each photon's candidates too */
     int window;        /* pending photons held (>= 1) */
+    int ppc;           /* the top's PhotonsPerCycle (1 .. COSIM_MAX_PPC) */
 } cosim_sched_opts_t;
 
 typedef struct {
@@ -49,7 +55,7 @@ typedef struct {
 } cosim_sched_stats_t;
 
 typedef int (*cosim_sched_emit_fn)(void *user, const preu_photon_t *ph, const uint32_t *hps,
-                                   uint32_t n, uint32_t *p);
+                                   uint32_t n, int first, uint32_t *p);
 typedef struct cosim_sched cosim_sched_t;
 
 cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_fn emit, void *user);

@@ -7,7 +7,7 @@
 
 #define IDX_MASK ((1u << COSIM_IDXAW) - 1u)
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win)
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc)
 {
     if (win < 1 || win > SHADOW_WIN_MAX) return NULL;   /* the in-flight rows are a fixed array */
     cosim_shadow_t *s = calloc(1, sizeof *s);
@@ -17,6 +17,7 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win)
     s->preu = preu;
     s->hp_bank_w = hp_bank_w;
     s->win = win;
+    aftso_rule_init(&s->buf, preu, 4 * ppc, ppc, 1);
     return s;
 }
 
@@ -36,21 +37,11 @@ int cosim_shadow_eval(cosim_shadow_t *s)
 {
     const int np = s->preu;
     const uint32_t all = (1u << np) - 1u;
-    /* AFTSO-HpUOC offer: lane l takes the l-th hit point of the buffer in photon order, entry
-     * e's t-th with ref_addr = p + rem - 1 - t (tb/ctrl/aftso_model.c, aftso_eval). */
-    uint64_t accu[SHADOW_BUF], sum = 0;
-    for (int e = 0; e < SHADOW_BUF; e++) {
-        if (e < s->count) sum += s->buf_rem[e];
-        accu[e] = sum;
-    }
-    s->total = sum;
-    s->accu0 = accu[0];
-    s->nvalid = sum < (uint64_t)np ? (int)sum : np;
-    for (int l = 0, e = 0; l < s->nvalid; l++) {
-        while (accu[e] <= (uint64_t)l) e++;
-        uint32_t t = (uint32_t)((uint64_t)l - (e ? accu[e - 1] : 0));
-        s->ref[l] = (s->buf_p[e] + s->buf_rem[e] - 1u - t) & IDX_MASK;
-    }
+    /* AFTSO-HpUOC offer: lane l takes the l-th hit point of the buffer in photon order. */
+    aftso_rule_offer(&s->buf, &s->off);
+    s->total = s->off.total;
+    s->nvalid = s->off.nvalid;
+    for (int l = 0; l < s->nvalid; l++) s->ref[l] = s->off.ref[l] & IDX_MASK;
     const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
     /* Stage B (b_issue): a prefix of the pending lanes, each free of hazard, dup and bank. */
     uint32_t iss = 0;
@@ -59,11 +50,11 @@ int cosim_shadow_eval(cosim_shadow_t *s)
         int pend = (s->b_pend >> l) & 1, haz = 0, dup = 0, bcf = 0;
         if (pend) {
             haz = s->inf_cnt[s->b_hp[l]] != 0;
-            uint32_t bl = cosim_hp_bank(s->b_hp[l], s->hp_bank_w);
+            uint32_t bl = pree_hp_bank(s->b_hp[l], s->hp_bank_w);
             for (int m = 0; m < l; m++)
                 if ((s->b_pend >> m) & 1) {
                     if (s->b_hp[m] == s->b_hp[l]) dup = 1;
-                    else if (cosim_hp_bank(s->b_hp[m], s->hp_bank_w) == bl) bcf = 1;
+                    else if (pree_hp_bank(s->b_hp[m], s->hp_bank_w) == bl) bcf = 1;
                 }
         }
         int ok = pend && pre && !haz && !dup && !bcf;
@@ -90,8 +81,8 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     /* Counter cause (stall_cause): the first blocked lane in B, else A's conflict, else starved. */
     if (iss != all && !cause) cause = s->b_short ? CNT_ABANK : CNT_STARVE;
     s->cause = cause;
-    /* AFTSO-HpUOC ready: a free entry, or (EarlyReady) entry 0 leaves whole in this cycle. */
-    s->ready = s->count < SHADOW_BUF || (!s->stall && accu[0] <= (uint64_t)np);
+    /* AFTSO-HpUOC ready: PhotonsPerCycle entries free after this cycle's whole departures. */
+    s->ready = aftso_rule_ready(&s->buf, &s->off, s->stall);
     return s->ready;
 }
 
@@ -100,7 +91,7 @@ uint64_t cosim_shadow_leftover(const cosim_shadow_t *s)
     return s->stall ? s->total : s->total - (uint64_t)s->nvalid;
 }
 
-void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
+void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uint32_t *p)
 {
     const int np = s->preu;
     /* Counters (counters block; the model counts from its first cycle). */
@@ -130,30 +121,15 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p)
         s->b_pend &= ~s->iss;
     }
     s->a_done = s->stall ? s->a_done | s->a_rd : 0;
-    /* AFTSO-HpUOC edge (aftso_step): whole entries leave, the partial one is trimmed, the
-     * taken photon is appended. */
-    if (!s->stall) {
-        uint64_t acc = 0;
-        int nfull = 0;
-        while (nfull < s->count && acc + s->buf_rem[nfull] <= (uint64_t)np) acc += s->buf_rem[nfull++];
-        if (nfull < s->count) s->buf_rem[nfull] -= (uint32_t)((uint64_t)np - acc);
-        for (int e = 0; e + nfull < s->count; e++) {
-            s->buf_p[e] = s->buf_p[e + nfull];
-            s->buf_rem[e] = s->buf_rem[e + nfull];
-        }
-        s->count -= nfull;
-    }
-    if (take && n) {
-        s->buf_p[s->count] = p & IDX_MASK;
-        s->buf_rem[s->count] = n;
-        s->count++;
-    }
+    /* AFTSO-HpUOC edge: whole entries leave, the partial one is trimmed, the taken photons
+     * are appended. */
+    aftso_rule_edge(&s->buf, &s->off, s->stall, take, n, p);
     s->t++;
 }
 
 int cosim_shadow_idle(const cosim_shadow_t *s)
 {
-    if (s->count || s->b_pend) return 0;
+    if (s->buf.count || s->b_pend) return 0;
     for (int r = 0; r < s->win; r++)
         if (s->inf_n[r]) return 0;
     return 1;

@@ -1,6 +1,6 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
- * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4-entry buffer,
- * EarlyReady, the rule of tb/ctrl/aftso_model.c), stage A (index-table reads in lane order, one
+ * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
+ * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
  * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
  * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
@@ -8,15 +8,17 @@
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
- *   cosim_shadow_new(preu, hp_bank_w, win)  a model in reset state (NULL when out of memory
- *                                  or win > SHADOW_WIN_MAX);
- *                                  win: the update hazard window (cosim_rtl_update_window)
+ *   cosim_shadow_new(preu, hp_bank_w, win, ppc)  a model in reset state (NULL when out of
+ *                              memory or win > SHADOW_WIN_MAX); win: the update hazard window
+ *                              (cosim_rtl_update_window, or cosim_update_window without a
+ *                              model); ppc: pree_top's PhotonsPerCycle
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
  *                              operation reads entry p + n - 1 - k, as the host writes them)
- *   cosim_shadow_edge(s, take, n, p)  the rising edge; take: a photon with n operations and
- *                              first index entry p is taken (only when eval returned 1)
+ *   cosim_shadow_edge(s, take, n, p)  the rising edge; take: the ppc photon slots, slot k with
+ *                              n[k] operations (0: empty) and first index entry p[k], are
+ *                              taken (only when eval returned 1)
  *   cosim_shadow_leftover(s)   after eval: operations left in AFTSO-HpUOC after this cycle's
  *                              dispatch (what a photon taken now queues behind)
  *   cosim_shadow_idle(s)       nothing buffered, pending or in flight
@@ -26,18 +28,19 @@
 #define PREE_COSIM_SHADOW_H
 
 #include <stdint.h>
+#include "aftso_rule.h"
 #include "cosim_rtl.h"
+#include "hp_bank.h"
 
-#define SHADOW_BUF   4    /* AFTSO-HpUOC BufDepth in pree_top */
 #define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 46 / 49 */
 
 typedef struct {
     int preu, hp_bank_w;
     int win;                                   /* the update hazard window (WIN_UPD) */
     uint64_t t;                                /* cycles stepped */
-    /* AFTSO-HpUOC buffer: entries 0..count-1, each {first index entry, operations left}. */
-    int count;
-    uint32_t buf_p[SHADOW_BUF], buf_rem[SHADOW_BUF];
+    /* AFTSO-HpUOC buffer (entries {first index entry, operations left}) and its offer. */
+    aftso_rule_t buf;
+    aftso_rule_offer_t off;
     /* Stage A: lanes of the current offer already read; stage B: pending lanes. */
     uint32_t a_done, b_pend;
     int b_short;
@@ -50,25 +53,26 @@ typedef struct {
     /* Combinational values of the current cycle (eval). */
     uint32_t ref[COSIM_MAX_PREU], iss, a_rd, a_valid;
     int nvalid, a_go, stall, ready, cause;
-    uint64_t accu0, total;
+    uint64_t total;
     /* Results of the last edge and counters. */
     uint32_t iss_hp[COSIM_MAX_PREU];
     int n_iss;
     uint64_t cnt[COSIM_NCNT];
 } cosim_shadow_t;
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win);
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc);
+/* The update hazard window of pree_top (its WIN_UPD) for a datapath (0 paper, 1 stable) and
+ * PipeFast, for runs without a Verilated model (--model-only); a run with one takes the model's
+ * (cosim_rtl_update_window) and checks it against this. */
+static inline int cosim_update_window(int datapath, int pipe_fast)
+{
+    return pipe_fast ? (datapath ? 49 : 46) : (datapath ? 13 : 11);
+}
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n);
-void cosim_shadow_edge(cosim_shadow_t *s, int take, uint32_t n, uint32_t p);
+void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uint32_t *p);
 uint64_t cosim_shadow_leftover(const cosim_shadow_t *s);
 int cosim_shadow_idle(const cosim_shadow_t *s);
-
-/* rtl/pree_top.v hp_bank(): the low HpBankW bits XOR the next HpBankW bits. */
-static inline uint32_t cosim_hp_bank(uint32_t a, int w)
-{
-    return (a ^ (a >> w)) & ((1u << w) - 1u);
-}
 
 #endif

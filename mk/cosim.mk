@@ -4,14 +4,16 @@
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
 #   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation for the PREU
-#                      counts in SIM_FULL_PREUS (default 4 8; about 0.5 and 1 CPU minutes; 16 takes
-#                      about 25 on a slower machine) and, with the stable datapath, in
-#                      SIM_FULL_STABLE_PREUS (default 4); figures in $(COSIM_DIR)/full_{p,s}*.json
+#                      counts in SIM_FULL_PREUS (default 4 8) and, with the stable datapath, in
+#                      SIM_FULL_STABLE_PREUS (default 4); 16 PREUs (SIM_FULL_16=1): the cycle
+#                      model's whole frame and the RTL at 160x120 / 200k photons; figures in
+#                      $(COSIM_DIR)/full_{p,s}*.json, a utilization line per run
 #   make wave TEST=t   an FST of one test (picoseconds, 8 ns a cycle) and a GTKWave save file that
 #                      opens on the first photon with markers on the first hazard stall and bank
 #                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
-#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
+#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16, both datapaths, PipeFast 0 and 1,
+#                      PhotonsPerCycle 1 and NumPreu / 4
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
 #
 # `pree cosim` runs build/pree-cosim-<d><n>[f] (d: p paper, s stable; n PREUs; f: PipeFast = 1,
@@ -39,15 +41,21 @@ COSIM_HPB_16 := 8
 COSIM_PXB_4 := 4
 COSIM_PXB_8 := 5
 COSIM_PXB_16 := 6
+# Photons AFTSO-HpUOC takes per cycle (PhotonsPerCycle): NumPreu / 4, so that the intake offers
+# 4 x NumPreu / 4 = NumPreu operations a cycle already at 4 hit points a photon (cornell3
+# averages 5.33 with the default skips; one photon a cycle capped 8 PREUs at 66.6%).
+COSIM_PPC_4 := 1
+COSIM_PPC_8 := 2
+COSIM_PPC_16 := 4
 COSIM_STABLE_PREUS ?= 4
 COSIM_FAST_PREUS ?=
 # $(1): PREU count, $(2): p (paper) or s (stable), with f for PipeFast = 1 (pf, sf); the model's
 # tag (p4, s4, p4f, ...) names its directory, its class and its program.
 cosim_tag     = $(subst f,,$(2))$(1)$(findstring f,$(2))
-COSIM_MDIR    = $(COSIM_DIR)/vl2_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+COSIM_MDIR    = $(COSIM_DIR)/vl2_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
 COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
-                -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GDatapath=$(if $(findstring s,$(2)),1,0) \
-                -GPipeFast=$(if $(findstring f,$(2)),1,0)
+                -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GPhotonsPerCycle=$(COSIM_PPC_$(1)) \
+                -GDatapath=$(if $(findstring s,$(2)),1,0) -GPipeFast=$(if $(findstring f,$(2)),1,0)
 COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PREUS),$(p):s) \
                 $(foreach p,$(COSIM_FAST_PREUS),$(p):pf $(p):sf)
 cosim_n = $(word 1,$(subst :, ,$(1)))
@@ -91,7 +99,7 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench.
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
@@ -137,15 +145,30 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree $(COSIM_PROGS)
 	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_s$$p.json; done
 
 # Whole frame: cornell3 320x240, 768k photons; the paper datapath with SIM_FULL_PREUS PREUs, the
-# stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS).
+# stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS). 16 PREUs: the
+# whole frame by the scheduler's cycle model (--model-only, full_p16_model.json) and the RTL at
+# 160x120 / 200k photons (full_p16_small.json); the whole frame through the 16-PREU RTL takes
+# tens of CPU minutes. Each run prints its update-pass utilization and stall causes.
 SIM_FULL_PREUS ?= 4 8
 SIM_FULL_STABLE_PREUS ?= 4
-sim-full: $(BUILD)/pree $(foreach p,$(SIM_FULL_PREUS),$(BUILD)/pree-cosim-p$(p)) $(foreach p,$(SIM_FULL_STABLE_PREUS),$(BUILD)/pree-cosim-s$(p))
+SIM_FULL_16 ?= 1
+SIM_FULL_SUMMARY = python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); u=d["update"]; \
+  print("%s: %d PREUs, %d photons a cycle: %d cycles, utilization %.4f%%, stalls %s" % (sys.argv[1], d["preu"], \
+  d["photons_per_cycle"], u["cycles"], 100 * u["preu_utilization"], u["short_cycles_by_cause"]))'
+sim-full: $(BUILD)/pree $(foreach p,$(SIM_FULL_PREUS),$(BUILD)/pree-cosim-p$(p)) $(foreach p,$(SIM_FULL_STABLE_PREUS),$(BUILD)/pree-cosim-s$(p)) \
+          $(if $(filter 1,$(SIM_FULL_16)),$(BUILD)/pree-cosim-p16)
 	@set -e; for m in $(SIM_FULL_PREUS:%=%:paper) $(SIM_FULL_STABLE_PREUS:%=%:stable); do \
 	  p=$${m%%:*}; d=$${m##*:}; tag=$${d:0:1}$$p; \
 	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json"; \
 	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --quiet \
-	    --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json; cat $(COSIM_DIR)/full_$$tag.json; done
+	    --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json; cat $(COSIM_DIR)/full_$$tag.json; \
+	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_$$tag.json; done
+	@set -e; if [ "$(SIM_FULL_16)" = 1 ]; then \
+	  $(BUILD)/pree cosim scenes/cornell3 --preu 16 --model-only --quiet --stats $(COSIM_DIR)/full_p16_model.json; \
+	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_p16_model.json; \
+	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu 16 --width 160 --height 120 --photons 200000 \
+	    --quiet --no-reference --stats $(COSIM_DIR)/full_p16_small.json; \
+	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_p16_small.json; fi
 
 # Waveforms: TEST=cosim or a bench scenario; opens with tb/cosim/pree_top.gtkw.
 TEST ?= mixed
@@ -160,8 +183,9 @@ wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 
 lint-top: | $(DEPS_STAMP)
 	@set -e; for f in 0 1; do for d in 0 1; do for p in $(COSIM_PREUS); do \
-	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f $(COSIM_RTL)"; \
-	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f $(COSIM_RTL); done; done; done
+	  ws=1; if [ $$p -gt 4 ]; then ws="1 $$((p / 4))"; fi; for w in $$ws; do \
+	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL)"; \
+	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL); done; done; done; done
 
 synth-top: | $(DEPS_STAMP)
 	@mkdir -p $(COSIM_DIR)

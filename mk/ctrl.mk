@@ -12,8 +12,8 @@
 CTRL_DIR      := $(BUILD)/ctrl
 CTRL_PREUS    := 4 8 16
 CTRL_EARLY    := 0 1
-CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl
-CTRL_HDR      := $(wildcard tb/ctrl/*.h)
+CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel/pree
+CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/pree/aftso_rule.h
 AFTSO_RTL     := rtl/pree_aftso_hpuoc.v
 ADISO_RTL     := rtl/pree_adiso_rec.v
 # Verilator: -O3 and the default output split favour simulation speed (OPT_FAST in the manual);
@@ -21,14 +21,17 @@ ADISO_RTL     := rtl/pree_adiso_rec.v
 # the RTL's simulation-only invariant checks.
 CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique +define+PREE_ASSERT
 
-# AFTSO configurations pP_eE[_bB]: NumPreu P, EarlyReady E, BufDepth B (default 4). The
-# regression runs EarlyReady = 1 (the default) for every NumPreu and the paper's back-pressure
-# (EarlyReady = 0) for NumPreu = 4; ctrl-sim-full adds the rest and an 8-entry buffer.
-CTRL_AFTSO_CFGS     := p4_e0 p4_e1 p8_e1 p16_e1
+# AFTSO configurations pP_eE[_bB][_wW]: NumPreu P, EarlyReady E, BufDepth B (default 4),
+# PhotonsPerCycle W (default 1). The regression runs EarlyReady = 1 (the default) for every
+# NumPreu, the paper's back-pressure (EarlyReady = 0) for NumPreu = 4, and the wide intakes of
+# pree_top's 8- and 16-PREU co-simulation builds (2 photons into 8 entries, 4 into 16);
+# ctrl-sim-full adds the rest and an 8-entry buffer.
+CTRL_AFTSO_CFGS     := p4_e0 p4_e1 p8_e1 p16_e1 p8_e1_b8_w2 p16_e1_b16_w4
 CTRL_AFTSO_STD      := $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),p$(p)_e$(e)))
-CTRL_AFTSO_CFGS_ALL := $(CTRL_AFTSO_STD) p16_e1_b8
+CTRL_AFTSO_CFGS_ALL := $(CTRL_AFTSO_STD) p16_e1_b8 p8_e1_b8_w2 p16_e1_b16_w4 p4_e0_b4_w2
 ctrl_cfg_word = $(patsubst $(2)%,%,$(filter $(2)%,$(subst _, ,$(1))))
 ctrl_cfg_buf  = $(or $(call ctrl_cfg_word,$(1),b),4)
+ctrl_cfg_ppc  = $(or $(call ctrl_cfg_word,$(1),w),1)
 CTRL_AFTSO_BENCHES := $(foreach c,$(CTRL_AFTSO_CFGS),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_AFTSO_BENCHES_ALL := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_ADISO_BENCHES := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/adiso_p$(p)/adiso_bench)
@@ -52,9 +55,13 @@ $(CTRL_DIR)/%.o: tb/ctrl/%.c $(CTRL_HDR)
 	@mkdir -p $(@D)
 	$(CC) $(CTRL_CFLAGS) -c $< -o $@
 
-$(CTRL_DIR)/aftso_util: $(CTRL_DIR)/aftso_util.o $(CTRL_DIR)/aftso_model.o
+$(CTRL_DIR)/aftso_rule.o: model/pree/aftso_rule.c model/pree/aftso_rule.h
+	@mkdir -p $(@D)
+	$(CC) $(CTRL_CFLAGS) -c $< -o $@
+CTRL_AFTSO_OBJ := $(CTRL_DIR)/aftso_model.o $(CTRL_DIR)/aftso_rule.o
+$(CTRL_DIR)/aftso_util: $(CTRL_DIR)/aftso_util.o $(CTRL_AFTSO_OBJ)
 	$(CC) $^ -o $@ -lm
-$(CTRL_DIR)/aftso_vecgen: $(CTRL_DIR)/aftso_vecgen.o $(CTRL_DIR)/aftso_model.o
+$(CTRL_DIR)/aftso_vecgen: $(CTRL_DIR)/aftso_vecgen.o $(CTRL_AFTSO_OBJ)
 	$(CC) $^ -o $@ -lm
 $(CTRL_DIR)/adiso_vecgen: $(CTRL_DIR)/adiso_vecgen.o $(CTRL_DIR)/adiso_model.o
 	$(CC) $^ -o $@ -lm
@@ -63,11 +70,11 @@ $(CTRL_DIR)/adiso_seq: $(CTRL_DIR)/adiso_seq.o $(CTRL_DIR)/adiso_model.o
 
 # Verilator benches, one binary per configuration (the parameters are compile-time).
 define CTRL_AFTSO_RULE
-$(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_DIR)/aftso_model.o $(CTRL_HDR)
-	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) \
-	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -I$(abspath tb/ctrl)" \
+$(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_AFTSO_OBJ) $(CTRL_HDR)
+	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) -GPhotonsPerCycle=$(5) \
+	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model/pree)" \
 	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
-	  $(abspath $(CTRL_DIR)/aftso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
+	  $(abspath $(CTRL_AFTSO_OBJ)) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef
 define CTRL_ADISO_RULE
 $(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(CTRL_DIR)/adiso_model.o $(CTRL_HDR)
@@ -93,7 +100,7 @@ $(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
 	@mkdir -p $$(@D)
 	$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
 endef
-$(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(eval $(call CTRL_AFTSO_RULE,$(c),$(call ctrl_cfg_word,$(c),p),$(call ctrl_cfg_word,$(c),e),$(call ctrl_cfg_buf,$(c)))))
+$(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(eval $(call CTRL_AFTSO_RULE,$(c),$(call ctrl_cfg_word,$(c),p),$(call ctrl_cfg_word,$(c),e),$(call ctrl_cfg_buf,$(c)),$(call ctrl_cfg_ppc,$(c)))))
 $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),$(e)))))
 $(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_RULE,$(p))))
 $(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_ICARUS_RULE,$(p))))
@@ -117,8 +124,11 @@ ctrl-lint:
 	  verilator --lint-only -Wall -GNumPreu=$$p $(ADISO_RTL); done
 	@verilator --lint-only -Wall -GNumPreu=16 -GBufDepth=8 $(AFTSO_RTL)
 	@verilator --lint-only -Wall -GNumPreu=4 -GBufDepth=2 $(AFTSO_RTL)
+	@verilator --lint-only -Wall -GNumPreu=8 -GBufDepth=8 -GPhotonsPerCycle=2 $(AFTSO_RTL)
+	@verilator --lint-only -Wall -GNumPreu=16 -GBufDepth=16 -GPhotonsPerCycle=4 $(AFTSO_RTL)
+	@verilator --lint-only -Wall -GNumPreu=4 -GBufDepth=2 -GPhotonsPerCycle=2 -GEarlyReady=0 $(AFTSO_RTL)
 	@verilator --lint-only -Wall +define+PREE_ASSERT $(AFTSO_RTL)
-	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS) (BufDepth 2, 4, 8)"
+	@echo "ctrl-lint: pree_aftso_hpuoc and pree_adiso_rec clean for NumPreu $(CTRL_PREUS) (BufDepth 2, 4, 8, 16; PhotonsPerCycle 1, 2, 4)"
 
 # Synthesis: one resource line per configuration; fails on a latch or a loop.
 ctrl-synth:

@@ -4,11 +4,12 @@
 // Purpose: turn a stream of photons, each with a candidate list of N^P hit points stored at
 // index-table entries p_addr .. p_addr + N^P - 1, into up to NumPreu hit-point update
 // operations per cycle, mixing the lists of up to BufDepth consecutive photons so that the
-// PREUs stay busy.
+// PREUs stay busy. The intake takes up to PhotonsPerCycle photons a cycle (1 in the paper),
+// so that NumPreu lanes stay fed when photons average fewer than NumPreu hit points.
 //
 // Buffer: BufDepth entries (4 in the paper, for any NumPreu) holding photon data, id, p_addr
 // and rem (hit points not yet dispatched, >= 1). Valid entries are always 0 .. count-1, in
-// arrival (photon) order.
+// arrival (photon) order. The rule is model/pree/aftso_rule.c's (the same in C).
 //
 // Dispatch rule, once per cycle in which stall_i is low:
 //   accuHP_i   = rem_0 + ... + rem_i                      (valid entries only)
@@ -34,13 +35,17 @@
 // order above as photon order, and holds this block with stall_i.
 //
 // Handshake:
-//   in_valid_i/in_ready_o  a photon is taken in a cycle with both high. A photon with
-//                          N^P = 0 is taken and dropped (no entry, no lane).
-//   in_ready_o             EarlyReady = 0: high while an entry is free (busy_o = buffer full,
-//                          as in the paper). EarlyReady = 1: also high when entry 0 leaves
-//                          whole in this cycle and stall_i is low, so a full buffer can take
-//                          a photon every cycle; in_ready_o then depends on stall_i
-//                          combinationally (never on in_valid_i).
+//   in_valid_i/in_ready_o  the PhotonsPerCycle photon slots (slot s in bits [s*W +: W], slot 0
+//                          the oldest) are taken together in a cycle with both high; they
+//                          enter the buffer in slot order. A slot with N^P = 0 is taken and
+//                          dropped (no entry, no lane): a source with fewer photons fills the
+//                          remaining slots with N^P = 0.
+//   in_ready_o             PhotonsPerCycle entries are free after this cycle's departures.
+//                          EarlyReady = 0: free now (PhotonsPerCycle = 1: an entry is free;
+//                          busy_o = buffer full, as in the paper). EarlyReady = 1: the entries
+//                          that leave whole in this cycle count as free when stall_i is low,
+//                          so a full buffer can take photons every cycle; in_ready_o then
+//                          depends on stall_i combinationally (never on in_valid_i).
 //   lane_*_o               an offer, combinational from registers only (not from any input).
 //                          It is taken on every rising edge with stall_i low. While stall_i is
 //                          high the state does not advance; a valid lane keeps its content and
@@ -49,8 +54,9 @@
 // Invalid lanes drive zeros. Latency: a photon taken at edge k is offered from edge k on
 // (in the cycle after it was taken).
 //
-// Parameters: NumPreu >= 1 lanes, BufDepth >= 2 entries, DataW photon data bits, IdW photon id
-// bits, AddrW index-table address bits (ref_addr wraps modulo 2^AddrW), CntW bits of N^P.
+// Parameters: NumPreu >= 1 lanes, BufDepth >= 2 entries, PhotonsPerCycle 1 .. BufDepth photon
+// slots, DataW photon data bits, IdW photon id bits, AddrW index-table address bits (ref_addr
+// wraps modulo 2^AddrW), CntW bits of N^P. PhotonsPerCycle = 1 is the paper's intake.
 `default_nettype none
 
 module pree_aftso_hpuoc #(
@@ -60,17 +66,18 @@ module pree_aftso_hpuoc #(
   parameter IdW        = 32,
   parameter AddrW      = 32,
   parameter CntW       = 32,
-  parameter EarlyReady = 1
+  parameter EarlyReady = 1,
+  parameter PhotonsPerCycle = 1
 ) (
   input  wire                     clk_i,
   input  wire                     rst_ni,
   // Photon stream.
   input  wire                     in_valid_i,
   output wire                     in_ready_o,
-  input  wire [DataW-1:0]         in_data_i,
-  input  wire [IdW-1:0]           in_id_i,
-  input  wire [AddrW-1:0]         in_p_addr_i,
-  input  wire [CntW-1:0]          in_n_i,
+  input  wire [PhotonsPerCycle*DataW-1:0] in_data_i,
+  input  wire [PhotonsPerCycle*IdW-1:0]   in_id_i,
+  input  wire [PhotonsPerCycle*AddrW-1:0] in_p_addr_i,
+  input  wire [PhotonsPerCycle*CntW-1:0]  in_n_i,
   // Operation lanes, lane l in bits [l*W +: W].
   input  wire                     stall_i,
   output wire [NumPreu-1:0]       lane_valid_o,
@@ -86,6 +93,13 @@ module pree_aftso_hpuoc #(
   // Width of accuHP: a sum of BufDepth counts below 2^CntW, and at least wide enough for NumPreu.
   localparam ACC_W0 = CntW + $clog2(BufDepth) + 1;
   localparam ACC_W  = ACC_W0 > $clog2(NumPreu) + 2 ? ACC_W0 : $clog2(NumPreu) + 2;
+  localparam PPC    = PhotonsPerCycle;
+
+  generate
+    if (PPC < 1 || PPC > BufDepth) begin : g_bad_ppc
+      pree_aftso_hpuoc_photonspercycle_must_be_1_to_bufdepth u_fail ();
+    end
+  endgenerate
 
   // ---------------------------------------------------------------------------------------------
   // Buffer registers: valid is a thermometer code (entries 0 .. count-1); the payload loads on
@@ -107,43 +121,23 @@ module pree_aftso_hpuoc #(
   wire [ACC_W-1:0]          preu_acc = acc_of_32(NUM_PREU_32);
 
   // Zero-extend or truncate between the widths in use (all truncations are modulo 2^W on
-  // purpose: ref_addr wraps, and a trimmed rem always fits in CntW bits). The temporaries are
-  // named *_unused, Verilator's default pattern for bits dropped on purpose.
-  function [ACC_W-1:0] acc_of_32;
-    input [31:0] v;
-    reg [ACC_W+31:0] ext_unused;
-    begin
-      ext_unused = {{ACC_W{1'b0}}, v};
-      acc_of_32 = ext_unused[ACC_W-1:0];
-    end
+  // purpose: ref_addr wraps, and a trimmed rem always fits in CntW bits). One definition makes
+  // the four casts: PREE_WIDTH_CAST(name, out width, in width) declares the function `name`,
+  // whose temporary is named *_unused, Verilator's default pattern for bits dropped on purpose.
+`define PREE_WIDTH_CAST(NAME, OW, IW) \
+  function [OW-1:0] NAME; \
+    input [IW-1:0] v; \
+    reg [OW+IW-1:0] ext_unused; \
+    begin \
+      ext_unused = {{OW{1'b0}}, v}; \
+      NAME = ext_unused[OW-1:0]; \
+    end \
   endfunction
-
-  function [AddrW-1:0] addr_of_acc;
-    input [ACC_W-1:0] v;
-    reg [AddrW+ACC_W-1:0] ext_unused;
-    begin
-      ext_unused = {{AddrW{1'b0}}, v};
-      addr_of_acc = ext_unused[AddrW-1:0];
-    end
-  endfunction
-
-  function [AddrW-1:0] addr_of_cnt;
-    input [CntW-1:0] v;
-    reg [AddrW+CntW-1:0] ext_unused;
-    begin
-      ext_unused = {{AddrW{1'b0}}, v};
-      addr_of_cnt = ext_unused[AddrW-1:0];
-    end
-  endfunction
-
-  function [CntW-1:0] cnt_of_acc;
-    input [ACC_W-1:0] v;
-    reg [CntW+ACC_W-1:0] ext_unused;
-    begin
-      ext_unused = {{CntW{1'b0}}, v};
-      cnt_of_acc = ext_unused[CntW-1:0];
-    end
-  endfunction
+  `PREE_WIDTH_CAST(acc_of_32,   ACC_W, 32)
+  `PREE_WIDTH_CAST(addr_of_acc, AddrW, ACC_W)
+  `PREE_WIDTH_CAST(addr_of_cnt, AddrW, CntW)
+  `PREE_WIDTH_CAST(cnt_of_acc,  CntW,  ACC_W)
+`undef PREE_WIDTH_CAST
 
   integer i;
   reg [ACC_W-1:0] sum;
@@ -213,11 +207,20 @@ module pree_aftso_hpuoc #(
   endgenerate
 
   // ---------------------------------------------------------------------------------------------
-  // Back-pressure and input acceptance.
-  wire has_free = ~valid_q[BufDepth-1];
-  wire ready    = has_free || (EarlyReady != 0 && !stall_i && whole[0]);
+  // Back-pressure and input acceptance: PPC entries free once the w entries that leave whole
+  // in this cycle (EarlyReady, not stalled) are gone, for some w in 0 .. PPC; with a thermometer
+  // valid_q, "BufDepth - PPC + w entries free" is "entry BufDepth - PPC + w invalid".
+  wire [BufDepth-1:0] early_leave = (EarlyReady != 0 && !stall_i) ? whole : {BufDepth{1'b0}};
+  reg  ready;
+  integer w;
+  always @* begin
+    ready = 1'b0;
+    for (w = 0; w <= PPC; w = w + 1)
+      if ((w == 0 || early_leave[(w == 0) ? 0 : w-1]) &&
+          (BufDepth - PPC + w >= BufDepth || !valid_q[(BufDepth - PPC + w < BufDepth) ? BufDepth - PPC + w : 0]))
+        ready = 1'b1;
+  end
   wire accept   = in_valid_i && ready;
-  wire append   = accept && (in_n_i != {CntW{1'b0}});
 
   assign in_ready_o = ready;
   assign busy_o     = ~ready;
@@ -243,7 +246,8 @@ module pree_aftso_hpuoc #(
 
   // rem of the entry that becomes entry 0 when it was dispatched in part: accuHP - NumPreu.
   reg [ACC_W-1:0] trimmed;
-  integer s, k;
+  integer s, k, j;
+  reg     placed;
   always @* begin
     trimmed = {ACC_W{1'b0}};
     for (s = 0; s < BufDepth; s = s + 1)
@@ -271,15 +275,20 @@ module pree_aftso_hpuoc #(
     end
     // The partial entry (not stalled, entry 0 after the shift still valid) loses what left.
     if (!stall_i && valid_sh[0]) rem_d[0 +: CntW] = cnt_of_acc(trimmed);
-    // Append behind the last remaining entry.
+    // Append the slots with N^P > 0, in slot order, each behind the last valid entry.
     valid_d = valid_sh;
-    for (k = 0; k < BufDepth; k = k + 1) begin
-      if (append && !valid_sh[k] && (k == 0 || valid_sh[(k == 0) ? 0 : k-1])) begin
-        valid_d[k]               = 1'b1;
-        data_d[k*DataW +: DataW] = in_data_i;
-        id_d[k*IdW +: IdW]       = in_id_i;
-        paddr_d[k*AddrW +: AddrW] = in_p_addr_i;
-        rem_d[k*CntW +: CntW]    = in_n_i;
+    for (j = 0; j < PPC; j = j + 1) begin
+      placed = 1'b0;
+      for (k = 0; k < BufDepth; k = k + 1) begin
+        if (accept && in_n_i[j*CntW +: CntW] != {CntW{1'b0}} && !placed && !valid_d[k] &&
+            (k == 0 || valid_d[(k == 0) ? 0 : k-1])) begin
+          placed                    = 1'b1;
+          valid_d[k]                = 1'b1;
+          data_d[k*DataW +: DataW]  = in_data_i[j*DataW +: DataW];
+          id_d[k*IdW +: IdW]        = in_id_i[j*IdW +: IdW];
+          paddr_d[k*AddrW +: AddrW] = in_p_addr_i[j*AddrW +: AddrW];
+          rem_d[k*CntW +: CntW]     = in_n_i[j*CntW +: CntW];
+        end
       end
     end
   end

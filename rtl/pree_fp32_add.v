@@ -25,11 +25,12 @@
 //   C  add or subtract: a 28-bit unnormalised sum                                    -> seam 4
 //   D  leading-zero count of the sum, limited to exponent - 1 (so that the exponent never
 //      falls below 1: the result is then an exact subnormal): when seam 5 is registered by a
-//      sentinel bit that B places at bit 27 - exponent, else by a compare; zero test -> seam 5
+//      sentinel bit that B places at bit 27 - exponent, else by a compare; zero test: an
+//      exact zero sum, which packs as a zero, gets the sign of a zero sum            -> seam 5
 //   E  normalise: one right shift on a carry out (the lost bit becomes sticky), else the
 //      left shift                                                                    -> seam 6
-//   F  round to nearest even (pree_fp32_round, Denorm = 0), final mux with the special
-//      result and the signed zero                                                    -> seam 7
+//   F  round to nearest even and final mux with the special result (pree_fp32_final)
+//                                                                                    -> seam 7
 // Stage plan (registered seams per Stages; the last seam is always the output register):
 //   Stages 1: 7 | 2: 4 7 | 3: 3 5 7 | 4: 3 5 6 7 | 5: 2 3 5 6 7 | 6: 2 3 4 5 6 7 | 7: all
 // Stages = 2 is the paper's split (stage 1 = A1 A2 B C, stage 2 = D E F).
@@ -54,22 +55,14 @@ module pree_fp32_add #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 7;
 
-  // Registers at seam s (1 .. 7) under the stage plan above.
+  // Registers at seam s (1 .. 7) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 7 .. 1, left to right).
+  localparam [7*7-1:0] PLANS = {7'b1111111, 7'b1111110, 7'b1110110, 7'b1110100,
+                                7'b1010100, 7'b1001000, 7'b1000000};
   function integer seam_regs;
     input integer s;
-    reg [6:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 7'b1000000;
-        2:       plan = 7'b1001000;
-        3:       plan = 7'b1010100;
-        4:       plan = 7'b1110100;
-        5:       plan = 7'b1110110;
-        6:       plan = 7'b1111110;
-        default: plan = 7'b1111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // D's count limited by a sentinel bit (set in B) when D ends with a register.
@@ -77,44 +70,43 @@ module pree_fp32_add #(
   // B's sticky bit from a mask when B lies between two registers.
   localparam ALIGN_MASK = (seam_regs(2) != 0) && (seam_regs(3) != 0);
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_add: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_add"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A1: classify, compare
   wire       sign_a = a_i[31];
   wire       sign_b = b_i[31] ^ sub_i;          // effective sign of the second operand
   wire [7:0] exp_a  = a_i[30:23];
   wire [7:0] exp_b  = b_i[30:23];
-  wire       nan_a  = (exp_a == 8'hFF) && (a_i[22:0] != 23'd0);
-  wire       nan_b  = (exp_b == 8'hFF) && (b_i[22:0] != 23'd0);
-  wire       inf_a  = (exp_a == 8'hFF) && (a_i[22:0] == 23'd0);
-  wire       inf_b  = (exp_b == 8'hFF) && (b_i[22:0] == 23'd0);
+  wire       expz_a, expz_b, zero_a_unused, zero_b_unused, inf_a, inf_b, nan_a, nan_b;
 
-  // Special result: NaN rule first, then infinities.
-  reg        special_d;
-  reg [31:0] special_y_d;
-  always @* begin
-    special_d   = 1'b1;
-    special_y_d = {sign_a, 8'hFF, 23'd0};
-    if (nan_a)                          special_y_d = a_i | 32'h0040_0000;
-    else if (nan_b)                     special_y_d = b_i | 32'h0040_0000;
-    else if (inf_a && inf_b && (sign_a != sign_b)) special_y_d = 32'hFFC0_0000;
-    else if (inf_a)                     special_y_d = {sign_a, 8'hFF, 23'd0};
-    else if (inf_b)                     special_y_d = {sign_b, 8'hFF, 23'd0};
-    else                                special_d   = 1'b0;
-  end
+  pree_fp32_class u_class_a (
+    .x_i (a_i[30:0]), .exp_zero_o (expz_a), .zero_o (zero_a_unused), .inf_o (inf_a),
+    .nan_o (nan_a)
+  );
+  pree_fp32_class u_class_b (
+    .x_i (b_i[30:0]), .exp_zero_o (expz_b), .zero_o (zero_b_unused), .inf_o (inf_b),
+    .nan_o (nan_b)
+  );
+
+  // Special result (pree_fp32_special): NaN rule first, then inf - inf, then infinities.
+  wire        special_d;
+  wire [31:0] special_y_d;
+
+  pree_fp32_special u_special (
+    .a_i (a_i), .b_i (b_i), .nan_a_i (nan_a), .nan_b_i (nan_b),
+    .invalid_i (inf_a & inf_b & (sign_a != sign_b)), .inf_i (inf_a | inf_b), .zero_i (1'b0),
+    .sign_i (inf_a ? sign_a : sign_b),
+    .special_o (special_d), .y_o (special_y_d)
+  );
 
   // Order by magnitude (L the larger or equal operand, S the smaller) and the alignment
   // shift, exp_l - exp_s clamped to 31: both differences are formed beside the magnitude
   // comparison, and the comparison picks one in A2, so no subtraction follows the compare.
   wire        swap    = (b_i[30:0] > a_i[30:0]);
-  wire [7:0]  exp_a1  = (exp_a == 8'd0) ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
-  wire [7:0]  exp_b1  = (exp_b == 8'd0) ? 8'd1 : exp_b;
+  wire [7:0]  exp_a1  = expz_a ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
+  wire [7:0]  exp_b1  = expz_b ? 8'd1 : exp_b;
   wire [7:0]  diff_ab = exp_a1 - exp_b1;
   wire [7:0]  diff_ba = exp_b1 - exp_a1;
   wire [4:0]  sh_ab   = (diff_ab[7:5] != 3'd0) ? 5'd31 : diff_ab[4:0];
@@ -126,23 +118,24 @@ module pree_fp32_add #(
   wire          s1_valid;
   wire [WS-1:0] s1_special;
   wire          s1_sign_a, s1_sign_b, s1_swap;
+  wire          s1_expz_a, s1_expz_b;             // the classes: exponent field 0
   wire [4:0]    s1_sh_ab, s1_sh_ba;
   wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
 
-  pree_fp32_pipe #(.Width(WS + 3 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
+  pree_fp32_pipe #(.Width(WS + 5 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, sh_ab, sh_ba, a_i[30:0], b_i[30:0]}),
+    .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, expz_a, expz_b, sh_ab, sh_ba,
+             a_i[30:0], b_i[30:0]}),
     .valid_o (s1_valid),
-    .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_sh_ab, s1_sh_ba, s1_a, s1_b})
+    .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_expz_a, s1_expz_b, s1_sh_ab,
+             s1_sh_ba, s1_a, s1_b})
   );
 
   // ---------------------------------------------------------------- A2: order the operands
-  wire [7:0]  s1_exp_a = s1_a[30:23];
-  wire [7:0]  s1_exp_b = s1_b[30:23];
-  wire [23:0] man_a    = {s1_exp_a != 8'd0, s1_a[22:0]};
-  wire [23:0] man_b    = {s1_exp_b != 8'd0, s1_b[22:0]};
-  wire [7:0]  exp_a1_q = (s1_exp_a == 8'd0) ? 8'd1 : s1_exp_a;
-  wire [7:0]  exp_b1_q = (s1_exp_b == 8'd0) ? 8'd1 : s1_exp_b;
+  wire [23:0] man_a    = {~s1_expz_a, s1_a[22:0]};
+  wire [23:0] man_b    = {~s1_expz_b, s1_b[22:0]};
+  wire [7:0]  exp_a1_q = s1_expz_a ? 8'd1 : s1_a[30:23];
+  wire [7:0]  exp_b1_q = s1_expz_b ? 8'd1 : s1_b[30:23];
   wire        sign_l   = s1_swap ? s1_sign_b : s1_sign_a;
   wire        sign_s   = s1_swap ? s1_sign_a : s1_sign_b;
   wire [7:0]  exp_l    = s1_swap ? exp_b1_q  : exp_a1_q;
@@ -234,19 +227,23 @@ module pree_fp32_add #(
   wire [7:0] exp_m1 = s4_exp - 8'd1;
   wire [4:0] lshift = (!SENTINEL && ({3'd0, lz} > exp_m1)) ? exp_m1[4:0] : lz;
 
-  wire       sum_zero = (s4_sum == 28'd0);
+  // An exact zero sum normalises to a zero significand, which rounds and packs as a zero of
+  // the result's sign; so its sign (zero_sign) replaces the larger operand's here, and no zero
+  // case reaches the final mux. From here on the carried bits are the special result and the
+  // sign (WS + 1).
+  wire          sum_zero = (s4_sum == 28'd0);
+  wire [WS:0]   keep_e   = {s4_keep[WK-1:2], sum_zero ? s4_keep[0] : s4_keep[1]};
 
   wire          s5_valid;
-  wire [WK-1:0] s5_keep;
+  wire [WS:0]   s5_keep;
   wire [7:0]    s5_exp;
   wire [27:0]   s5_sum;
   wire [4:0]    s5_lshift;
-  wire          s5_zero;
 
-  pree_fp32_pipe #(.Width(WK + 8 + 28 + 5 + 1), .Regs(seam_regs(5))) u_seam5 (
+  pree_fp32_pipe #(.Width(WS + 1 + 8 + 28 + 5), .Regs(seam_regs(5))) u_seam5 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
-    .d_i   ({s4_keep, s4_exp, s4_sum, lshift, sum_zero}),
-    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_sum, s5_lshift, s5_zero})
+    .d_i   ({keep_e, s4_exp, s4_sum, lshift}),
+    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_sum, s5_lshift})
   );
 
   // ---------------------------------------------------------------- E: normalise
@@ -258,39 +255,23 @@ module pree_fp32_add #(
                                   : ({2'b00, s5_exp} - {5'd0, s5_lshift});
 
   wire          s6_valid;
-  wire [WK-1:0] s6_keep;
-  wire          s6_zero;
+  wire [WS:0]   s6_keep;
   wire [9:0]    s6_exp;
   wire [26:0]   s6_man;
   wire          s6_sticky;
 
-  pree_fp32_pipe #(.Width(WK + 1 + 10 + 27 + 1), .Regs(seam_regs(6))) u_seam6 (
+  pree_fp32_pipe #(.Width(WS + 1 + 10 + 27 + 1), .Regs(seam_regs(6))) u_seam6 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
-    .d_i   ({s5_keep, s5_zero, norm_exp, norm_man, norm_sticky}),
-    .valid_o (s6_valid), .q_o ({s6_keep, s6_zero, s6_exp, s6_man, s6_sticky})
+    .d_i   ({s5_keep, norm_exp, norm_man, norm_sticky}),
+    .valid_o (s6_valid), .q_o ({s6_keep, s6_exp, s6_man, s6_sticky})
   );
 
   // ---------------------------------------------------------------- F: round, final mux
-  wire        special, sign, zero_sign;
-  wire [31:0] special_y;
-  assign {special, special_y, sign, zero_sign} = s6_keep;
-
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (sign),
-    .exp_i    (s6_exp),
-    .man_i    (s6_man),
-    .sticky_i (s6_sticky),
-    .y_o      (rounded)
-  );
-
-  wire [31:0] y_d = special ? special_y
-                  : s6_zero ? {zero_sign, 31'd0}
-                  :           rounded;
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(7))) u_seam7 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid), .d_i (y_d),
-    .valid_o (valid_o), .q_o (y_o)
+  pree_fp32_final #(.Regs(seam_regs(7))) u_final (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
+    .special_i (s6_keep[WS]), .special_y_i (s6_keep[WS-1:1]), .sign_i (s6_keep[0]),
+    .exp_i (s6_exp), .man_i (s6_man), .sticky_i (s6_sticky),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

@@ -21,9 +21,19 @@ module pree_fp32_cmp (
   localparam LATENCY = 0;
   /* verilator lint_on UNUSEDPARAM */
 
-  wire nan_a     = (a_i[30:23] == 8'hFF) && (a_i[22:0] != 23'd0);
-  wire nan_b     = (b_i[30:23] == 8'hFF) && (b_i[22:0] != 23'd0);
-  wire both_zero = (a_i[30:0] == 31'd0) && (b_i[30:0] == 31'd0);
+  wire expz_a_unused, expz_b_unused, inf_a_unused, inf_b_unused;
+  wire zero_a, zero_b, nan_a, nan_b;
+
+  pree_fp32_class u_class_a (
+    .x_i (a_i[30:0]), .exp_zero_o (expz_a_unused), .zero_o (zero_a), .inf_o (inf_a_unused),
+    .nan_o (nan_a)
+  );
+  pree_fp32_class u_class_b (
+    .x_i (b_i[30:0]), .exp_zero_o (expz_b_unused), .zero_o (zero_b), .inf_o (inf_b_unused),
+    .nan_o (nan_b)
+  );
+
+  wire both_zero = zero_a & zero_b;
   wire mag_lt    = (a_i[30:0] < b_i[30:0]);
   wire mag_eq    = (a_i[30:0] == b_i[30:0]);
   wire sign_a    = a_i[31];

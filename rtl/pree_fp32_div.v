@@ -83,61 +83,26 @@ module pree_fp32_div #(
     end
   endfunction
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < MIN_STAGES || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_div: Stages = %0d (PipeFast = %0d), supported %0d .. %0d", Stages,
-             PipeFast, MIN_STAGES, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_div"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (MIN_STAGES),
+    .Max (MAX_STAGES)
+  ) u_stages ();
 
-  // ---------------------------------------------------------------- item 1, U1: classify, count
-  wire        zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
-  wire [4:0]  lz_a, lz_b;
-
-  pree_fp32_unpack_lz u_lz_a (
-    .x_i (a_i[30:0]), .lz_o (lz_a), .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
-  );
-  pree_fp32_unpack_lz u_lz_b (
-    .x_i (b_i[30:0]), .lz_o (lz_b), .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
-  );
-
-  wire sign_y = a_i[31] ^ b_i[31];
-
-  // Special result: NaN rule first, then invalid operations, infinities and zeros.
-  reg        special_d;
-  reg [31:0] special_y_d;
-  always @* begin
-    special_d   = 1'b1;
-    special_y_d = {sign_y, 31'd0};
-    if (nan_a)                                       special_y_d = a_i | 32'h0040_0000;
-    else if (nan_b)                                  special_y_d = b_i | 32'h0040_0000;
-    else if ((zero_a && zero_b) || (inf_a && inf_b)) special_y_d = 32'hFFC0_0000;
-    else if (inf_a || zero_b)                        special_y_d = {sign_y, 8'hFF, 23'd0};
-    else if (zero_a || inf_b)                        special_y_d = {sign_y, 31'd0};
-    else                                             special_d   = 1'b0;
-  end
-
-  // Carried to the end: the special result and the sign.
+  // ---------------------------------------------------------------- items 1, 2: unpack
+  // Classify both operands, the special result (carried to the end with the sign: WK bits),
+  // seam 1, normalise the significands (pree_fp32_unpack).
   localparam WK = 1 + 32 + 1;
 
   wire          s1_valid;
   wire [WK-1:0] s1_keep;
-  wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
-  wire [4:0]    s1_lz_a, s1_lz_b;
+  wire [9:0]    exp_a, exp_b;
+  wire [23:0]   man_a, man_b;
 
-  pree_fp32_pipe #(.Width(WK + 62 + 10), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, sign_y, a_i[30:0], b_i[30:0], lz_a, lz_b}),
-    .valid_o (s1_valid), .q_o ({s1_keep, s1_a, s1_b, s1_lz_a, s1_lz_b})
+  pree_fp32_unpack #(.Div(1), .Regs(seam_regs(1))) u_unpack (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .a_i (a_i), .b_i (b_i),
+    .valid_o (s1_valid), .keep_o (s1_keep),
+    .exp_a_o (exp_a), .man_a_o (man_a), .exp_b_o (exp_b), .man_b_o (man_b)
   );
-
-  // ---------------------------------------------------------------- item 2, U2: normalise
-  wire [9:0]  exp_a, exp_b;
-  wire [23:0] man_a, man_b;
-
-  pree_fp32_unpack_norm u_norm_a (.x_i (s1_a), .lz_i (s1_lz_a), .exp_o (exp_a), .man_o (man_a));
-  pree_fp32_unpack_norm u_norm_b (.x_i (s1_b), .lz_i (s1_lz_b), .exp_o (exp_b), .man_o (man_b));
 
   wire [9:0] exp_d = exp_a - exp_b + 10'd127;   // biased exponent of quotient bit 2^0
 
@@ -183,9 +148,7 @@ module pree_fp32_div #(
   wire [QW-1:0] quo    = word[QW][W-26 -: QW];
   wire [9:0]    exp_q  = word[QW][10+WK-1 -: 10];
   wire [WK-1:0] keep_q = word[QW][WK-1:0];
-  /* verilator lint_off UNUSEDSIGNAL */
-  wire [23:0]   den_q  = word[QW][W-26-QW -: 24];    // the divisor is not needed after the steps
-  /* verilator lint_on UNUSEDSIGNAL */
+  wire [23:0]   den_unused = word[QW][W-26-QW -: 24];    // the divisor: not needed after the steps
 
   // Quotient in [1, 2): bits 25..2 significant, bit 1 guard; in (1/2, 1): bits 24..1, 0.
   wire        top         = quo[QW-1];
@@ -193,23 +156,17 @@ module pree_fp32_div #(
   wire        norm_sticky = (rem != 25'd0) | (top & quo[0]);
   wire [9:0]  norm_exp    = exp_q - {9'd0, ~top};
 
-  // The denormalising shift amount. With a register after N it is formed for either binade
-  // and picked by the quotient's top bit; otherwise from the normalised exponent (fewer LUTs).
+  // The denormalising shift amount: for either binade, picked by the quotient's top bit, when a
+  // register follows N; otherwise from the normalised exponent (fewer LUTs).
+  localparam BOTH = (seam_regs(STEP0 + QW + 1) != 0);
+
   wire       norm_tiny;
   wire [4:0] norm_sh;
 
-  generate
-    if (seam_regs(STEP0 + QW + 1) != 0) begin : g_amt_both
-      wire       tiny_0, tiny_1;
-      wire [4:0] sh_0, sh_1;
-      pree_fp32_denorm_amt u_amt_0 (.exp_i (exp_q - 10'd1), .tiny_o (tiny_0), .sh_o (sh_0));
-      pree_fp32_denorm_amt u_amt_1 (.exp_i (exp_q),         .tiny_o (tiny_1), .sh_o (sh_1));
-      assign norm_tiny = top ? tiny_1 : tiny_0;
-      assign norm_sh   = top ? sh_1 : sh_0;
-    end else begin : g_amt_one
-      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
-    end
-  endgenerate
+  pree_fp32_denorm_sel #(.Both(BOTH)) u_amt (
+    .top_i (top), .exp_i (norm_exp), .exp_lo_i (exp_q - 10'd1), .exp_hi_i (exp_q),
+    .tiny_o (norm_tiny), .sh_o (norm_sh)
+  );
 
   wire          n_valid;
   wire [WK-1:0] n_keep;
@@ -224,45 +181,14 @@ module pree_fp32_div #(
     .valid_o (n_valid), .q_o ({n_keep, n_exp, n_man, n_sticky, n_tiny, n_sh})
   );
 
-  // ---------------------------------------------------------------- item 30, D: denormalise
-  wire [26:0] den_man;
-  wire        den_sticky;
-
-  pree_fp32_denorm #(.MaskSticky(seam_regs(STEP0 + QW + 1))) u_denorm (
-    .tiny_i (n_tiny), .sh_i (n_sh), .man_i (n_man), .sticky_i (n_sticky),
-    .man_o (den_man), .sticky_o (den_sticky)
-  );
-
-  wire          d_valid;
-  wire [WK-1:0] d_keep;
-  wire [9:0]    d_exp;
-  wire [26:0]   d_man;
-  wire          d_sticky;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(STEP0 + QW + 2))) u_seam_d (
+  // ---------------------------------------------------------------- items 30, 31, D R: the tail
+  pree_fp32_tail #(
+    .MaskSticky (BOTH), .RegsDen (seam_regs(STEP0 + QW + 2)), .RegsOut (seam_regs(ITEMS))
+  ) u_tail (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (n_valid),
-    .d_i   ({n_keep, n_exp, den_man, den_sticky}),
-    .valid_o (d_valid), .q_o ({d_keep, d_exp, d_man, d_sticky})
-  );
-
-  // ---------------------------------------------------------------- item 31, R: round
-  wire        special, sign;
-  wire [31:0] special_y;
-  assign {special, special_y, sign} = d_keep;
-
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (sign),
-    .exp_i    (d_exp),
-    .man_i    (d_man),
-    .sticky_i (d_sticky),
-    .y_o      (rounded)
-  );
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(ITEMS))) u_seam_r (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (d_valid),
-    .d_i   (special ? special_y : rounded),
-    .valid_o (valid_o), .q_o (y_o)
+    .keep_i (n_keep), .exp_i (n_exp), .man_i (n_man), .sticky_i (n_sticky),
+    .tiny_i (n_tiny), .sh_i (n_sh),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

@@ -60,87 +60,38 @@ module pree_fp32_mul #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 8;
 
-  // Registers at seam s (1 .. 8) under the stage plan above.
+  // Registers at seam s (1 .. 8) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 8 .. 1, left to right).
+  localparam [8*8-1:0] PLANS = {8'b11111111, 8'b11110111, 8'b11110110, 8'b11010110,
+                                8'b11010010, 8'b10010010, 8'b10010000, 8'b10000000};
   function integer seam_regs;
     input integer s;
-    reg [7:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 8'b10000000;
-        2:       plan = 8'b10010000;
-        3:       plan = 8'b10010010;
-        4:       plan = 8'b11010010;
-        5:       plan = 8'b11010110;
-        6:       plan = 8'b11110110;
-        7:       plan = 8'b11110111;
-        default: plan = 8'b11111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
-  // The denormalising shift amount formed for both binades when the normalisation ends with a
-  // register (seam 6).
-  localparam AMT_BOTH = (seam_regs(6) != 0);
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_mul"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_mul: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
-
-  // ---------------------------------------------------------------- A1: classify, count
-  wire        zero_a, zero_b, inf_a, inf_b, nan_a, nan_b;
-  wire [4:0]  lz_a, lz_b;
-
-  pree_fp32_unpack_lz u_lz_a (
-    .x_i (a_i[30:0]), .lz_o (lz_a), .zero_o (zero_a), .inf_o (inf_a), .nan_o (nan_a)
-  );
-  pree_fp32_unpack_lz u_lz_b (
-    .x_i (b_i[30:0]), .lz_o (lz_b), .zero_o (zero_b), .inf_o (inf_b), .nan_o (nan_b)
-  );
-
-  wire        sign_y = a_i[31] ^ b_i[31];
-
-  // Special result: NaN rule first, then infinities and zeros.
-  reg        special_d;
-  reg [31:0] special_y_d;
-  always @* begin
-    special_d   = 1'b1;
-    special_y_d = {sign_y, 31'd0};
-    if (nan_a)                                     special_y_d = a_i | 32'h0040_0000;
-    else if (nan_b)                                special_y_d = b_i | 32'h0040_0000;
-    else if ((inf_a && zero_b) || (zero_a && inf_b)) special_y_d = 32'hFFC0_0000;
-    else if (inf_a || inf_b)                       special_y_d = {sign_y, 8'hFF, 23'd0};
-    else if (zero_a || zero_b)                     special_y_d = {sign_y, 31'd0};
-    else                                           special_d   = 1'b0;
-  end
-
-  // Carried to the end: the special result and the sign.
+  // ---------------------------------------------------------------- A1, A2: unpack
+  // Classify both operands, the special result (carried to the end with the sign: WK bits),
+  // seam 1, normalise the significands (pree_fp32_unpack).
   localparam WK = 1 + 32 + 1;
 
   wire          s1_valid;
   wire [WK-1:0] s1_keep;
-  wire [30:0]   s1_a, s1_b;        // the operands' magnitudes
-  wire [4:0]    s1_lz_a, s1_lz_b;
+  wire [9:0]    exp_a, exp_b;
+  wire [23:0]   man_a, man_b;
 
-  pree_fp32_pipe #(.Width(WK + 62 + 10), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, sign_y, a_i[30:0], b_i[30:0], lz_a, lz_b}),
-    .valid_o (s1_valid), .q_o ({s1_keep, s1_a, s1_b, s1_lz_a, s1_lz_b})
+  pree_fp32_unpack #(.Div(0), .Regs(seam_regs(1))) u_unpack (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .a_i (a_i), .b_i (b_i),
+    .valid_o (s1_valid), .keep_o (s1_keep),
+    .exp_a_o (exp_a), .man_a_o (man_a), .exp_b_o (exp_b), .man_b_o (man_b)
   );
-
-  // ---------------------------------------------------------------- A2: normalise operands
-  wire [9:0]  exp_a, exp_b;
-  wire [23:0] man_a, man_b;
-
-  pree_fp32_unpack_norm u_norm_a (.x_i (s1_a), .lz_i (s1_lz_a), .exp_o (exp_a), .man_o (man_a));
-  pree_fp32_unpack_norm u_norm_b (.x_i (s1_b), .lz_i (s1_lz_b), .exp_o (exp_b), .man_o (man_b));
 
   wire [9:0]  exp_d = exp_a + exp_b - 10'd127;   // biased exponent of product bit 46
 
@@ -222,84 +173,13 @@ module pree_fp32_mul #(
     .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_prod})
   );
 
-  // ---------------------------------------------------------------- E: normalise
-  wire        top         = s5_prod[47];
-  wire [26:0] norm_man    = top ? s5_prod[47:21] : s5_prod[46:20];
-  wire        norm_sticky = top ? (s5_prod[20:0] != 21'd0) : (s5_prod[19:0] != 20'd0);
-  wire [9:0]  norm_exp    = s5_exp + {9'd0, top};
-
-  // The denormalising shift amount. With a register after this stage (AMT_BOTH) it is formed
-  // for either binade beside the normalisation and picked by it; otherwise from the
-  // normalised exponent (fewer LUTs, measured).
-  wire       norm_tiny;
-  wire [4:0] norm_sh;
-
-  generate
-    if (AMT_BOTH) begin : g_amt_both
-      wire       tiny_0, tiny_1;
-      wire [4:0] sh_0, sh_1;
-      pree_fp32_denorm_amt u_amt_0 (.exp_i (s5_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
-      pree_fp32_denorm_amt u_amt_1 (.exp_i (s5_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
-      assign norm_tiny = top ? tiny_1 : tiny_0;
-      assign norm_sh   = top ? sh_1 : sh_0;
-    end else begin : g_amt_one
-      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
-    end
-  endgenerate
-
-  wire          s6_valid;
-  wire [WK-1:0] s6_keep;
-  wire [9:0]    s6_exp;
-  wire [26:0]   s6_man;
-  wire          s6_sticky;
-  wire          s6_tiny;
-  wire [4:0]    s6_sh;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(6))) u_seam6 (
+  // ---------------------------------------------------------------- E, F, G: the back end
+  pree_fp32_mul_back #(
+    .RegsNorm (seam_regs(6)), .RegsDen (seam_regs(7)), .RegsOut (seam_regs(8))
+  ) u_back (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
-    .d_i   ({s5_keep, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
-    .valid_o (s6_valid), .q_o ({s6_keep, s6_exp, s6_man, s6_sticky, s6_tiny, s6_sh})
-  );
-
-  // ---------------------------------------------------------------- F: denormalise
-  wire [26:0] den_man;
-  wire        den_sticky;
-
-  pree_fp32_denorm #(.MaskSticky(AMT_BOTH)) u_denorm (
-    .tiny_i (s6_tiny), .sh_i (s6_sh), .man_i (s6_man), .sticky_i (s6_sticky),
-    .man_o (den_man), .sticky_o (den_sticky)
-  );
-
-  wire          s7_valid;
-  wire [WK-1:0] s7_keep;
-  wire [9:0]    s7_exp;
-  wire [26:0]   s7_man;
-  wire          s7_sticky;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(7))) u_seam7 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s6_valid),
-    .d_i   ({s6_keep, s6_exp, den_man, den_sticky}),
-    .valid_o (s7_valid), .q_o ({s7_keep, s7_exp, s7_man, s7_sticky})
-  );
-
-  // ---------------------------------------------------------------- G: round, final mux
-  wire        special, sign;
-  wire [31:0] special_y;
-  assign {special, special_y, sign} = s7_keep;
-
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (sign),
-    .exp_i    (s7_exp),
-    .man_i    (s7_man),
-    .sticky_i (s7_sticky),
-    .y_o      (rounded)
-  );
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(8))) u_seam8 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s7_valid),
-    .d_i   (special ? special_y : rounded),
-    .valid_o (valid_o), .q_o (y_o)
+    .keep_i (s5_keep), .exp_i (s5_exp), .prod_i (s5_prod),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

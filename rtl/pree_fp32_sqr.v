@@ -54,52 +54,45 @@ module pree_fp32_sqr #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 6;
 
-  // Registers at seam s (1 .. 6) under the stage plan above.
+  // Registers at seam s (1 .. 6) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 6 .. 1, left to right).
+  localparam [6*6-1:0] PLANS = {6'b111111, 6'b110111, 6'b110110, 6'b110100,
+                                6'b100100, 6'b100000};
   function integer seam_regs;
     input integer s;
-    reg [5:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 6'b100000;
-        2:       plan = 6'b100100;
-        3:       plan = 6'b110100;
-        4:       plan = 6'b110110;
-        5:       plan = 6'b110111;
-        default: plan = 6'b111111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
   // All three products as `*` when they are registered.
   localparam SPLIT = (seam_regs(2) != 0);
 
-  // The denormalising shift amount formed for both binades when the normalisation ends with a
-  // register (seam 4).
-  localparam AMT_BOTH = (seam_regs(4) != 0);
-
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_fp32_sqr: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_fp32_sqr"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A: classify
-  wire [7:0]  exp_a   = a_i[30:23];
-  wire        exp_low = (exp_a == 8'd0);             // zero or subnormal: the square is +0
-  wire        inf_a   = (exp_a == 8'hFF) && (a_i[22:0] == 23'd0);
-  wire        nan_a   = (exp_a == 8'hFF) && (a_i[22:0] != 23'd0);
-  wire [9:0]  exp_d   = {1'b0, exp_a, 1'b0} - 10'd127;   // biased exponent of product bit 46
+  wire        exp_low, zero_unused, inf_a, nan_a;   // exp_low: zero or subnormal, square +0
 
-  wire        special_d   = exp_low | inf_a | nan_a;
-  wire [31:0] special_y_d = nan_a ? (a_i | 32'h0040_0000)
-                          : inf_a ? 32'h7F80_0000
-                          :         32'h0000_0000;
+  pree_fp32_class u_class (
+    .x_i (a_i[30:0]), .exp_zero_o (exp_low), .zero_o (zero_unused), .inf_o (inf_a),
+    .nan_o (nan_a)
+  );
 
-  // Carried to the end: the special result; beside it the exponent.
-  localparam WK = 1 + 32;
+  wire [9:0]  exp_d = {1'b0, a_i[30:23], 1'b0} - 10'd127;   // biased exponent of product bit 46
+
+  // Special result (pree_fp32_special): a NaN quieted, +inf, +0; the square is never negative.
+  wire        special_d;
+  wire [31:0] special_y_d;
+
+  pree_fp32_special u_special (
+    .a_i (a_i), .b_i (a_i), .nan_a_i (nan_a), .nan_b_i (1'b0),
+    .invalid_i (1'b0), .inf_i (inf_a), .zero_i (exp_low), .sign_i (1'b0),
+    .special_o (special_d), .y_o (special_y_d)
+  );
+
+  // Carried to the end: the special result and the sign (+); beside it the exponent.
+  localparam WK = 1 + 32 + 1;
 
   wire          s1_valid;
   wire [WK-1:0] s1_keep;
@@ -108,7 +101,7 @@ module pree_fp32_sqr #(
 
   pree_fp32_pipe #(.Width(WK + 10 + 24), .Regs(seam_regs(1))) u_seam1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, exp_d, 1'b1, a_i[22:0]}),
+    .d_i   ({special_d, special_y_d, 1'b0, exp_d, 1'b1, a_i[22:0]}),
     .valid_o (s1_valid), .q_o ({s1_keep, s1_exp, s1_man})
   );
 
@@ -171,84 +164,13 @@ module pree_fp32_sqr #(
     .valid_o (s3_valid), .q_o ({s3_keep, s3_exp, s3_prod})
   );
 
-  // ---------------------------------------------------------------- D: normalise
-  wire        top         = s3_prod[47];
-  wire [26:0] norm_man    = top ? s3_prod[47:21] : s3_prod[46:20];
-  wire        norm_sticky = top ? (s3_prod[20:0] != 21'd0) : (s3_prod[19:0] != 20'd0);
-  wire [9:0]  norm_exp    = s3_exp + {9'd0, top};
-
-  // The denormalising shift amount. With a register after this stage (AMT_BOTH) it is formed
-  // for either binade beside the normalisation and picked by it; otherwise from the
-  // normalised exponent (fewer LUTs, measured).
-  wire       norm_tiny;
-  wire [4:0] norm_sh;
-
-  generate
-    if (AMT_BOTH) begin : g_amt_both
-      wire       tiny_0, tiny_1;
-      wire [4:0] sh_0, sh_1;
-      pree_fp32_denorm_amt u_amt_0 (.exp_i (s3_exp),         .tiny_o (tiny_0), .sh_o (sh_0));
-      pree_fp32_denorm_amt u_amt_1 (.exp_i (s3_exp + 10'd1), .tiny_o (tiny_1), .sh_o (sh_1));
-      assign norm_tiny = top ? tiny_1 : tiny_0;
-      assign norm_sh   = top ? sh_1 : sh_0;
-    end else begin : g_amt_one
-      pree_fp32_denorm_amt u_amt (.exp_i (norm_exp), .tiny_o (norm_tiny), .sh_o (norm_sh));
-    end
-  endgenerate
-
-  wire          s4_valid;
-  wire [WK-1:0] s4_keep;
-  wire [9:0]    s4_exp;
-  wire [26:0]   s4_man;
-  wire          s4_sticky;
-  wire          s4_tiny;
-  wire [4:0]    s4_sh;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1 + 6), .Regs(seam_regs(4))) u_seam4 (
+  // ---------------------------------------------------------------- D, E, F: the back end
+  pree_fp32_mul_back #(
+    .RegsNorm (seam_regs(4)), .RegsDen (seam_regs(5)), .RegsOut (seam_regs(6))
+  ) u_back (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s3_valid),
-    .d_i   ({s3_keep, norm_exp, norm_man, norm_sticky, norm_tiny, norm_sh}),
-    .valid_o (s4_valid), .q_o ({s4_keep, s4_exp, s4_man, s4_sticky, s4_tiny, s4_sh})
-  );
-
-  // ---------------------------------------------------------------- E: denormalise
-  wire [26:0] den_man;
-  wire        den_sticky;
-
-  pree_fp32_denorm #(.MaskSticky(AMT_BOTH)) u_denorm (
-    .tiny_i (s4_tiny), .sh_i (s4_sh), .man_i (s4_man), .sticky_i (s4_sticky),
-    .man_o (den_man), .sticky_o (den_sticky)
-  );
-
-  wire          s5_valid;
-  wire [WK-1:0] s5_keep;
-  wire [9:0]    s5_exp;
-  wire [26:0]   s5_man;
-  wire          s5_sticky;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 27 + 1), .Regs(seam_regs(5))) u_seam5 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
-    .d_i   ({s4_keep, s4_exp, den_man, den_sticky}),
-    .valid_o (s5_valid), .q_o ({s5_keep, s5_exp, s5_man, s5_sticky})
-  );
-
-  // ---------------------------------------------------------------- F: round, final mux
-  wire        special;
-  wire [31:0] special_y;
-  assign {special, special_y} = s5_keep;
-
-  wire [31:0] rounded;
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (1'b0),
-    .exp_i    (s5_exp),
-    .man_i    (s5_man),
-    .sticky_i (s5_sticky),
-    .y_o      (rounded)
-  );
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(6))) u_seam6 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s5_valid),
-    .d_i   (special ? special_y : rounded),
-    .valid_o (valid_o), .q_o (y_o)
+    .keep_i (s3_keep), .exp_i (s3_exp), .prod_i (s3_prod),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

@@ -1,5 +1,5 @@
 // pree_fp32_unpack_lz: the first half of pree_fp32_unpack, combinational: classify a binary32
-// operand and count the leading zeros that normalise its significand.
+// operand (pree_fp32_class) and count the leading zeros that normalise its significand.
 //
 // lz_o is the leading-zero count of {hidden bit, fraction} (0 for a normal operand, 1 .. 23
 // for a subnormal, 24 for zero). pree_fp32_unpack_norm finishes the unpacking from x_i and
@@ -14,19 +14,15 @@ module pree_fp32_unpack_lz (
   output wire        nan_o
 );
 
-  wire [7:0]  exp_field = x_i[30:23];
-  wire [22:0] frac      = x_i[22:0];
-  wire        exp_zero  = (exp_field == 8'd0);
-  wire        exp_ones  = (exp_field == 8'hFF);
-  wire        frac_zero = (frac == 23'd0);
+  wire exp_zero;
 
-  pree_fp32_lzc #(.Width(24), .CntWidth(5)) u_lzc (
-    .x_i   ({~exp_zero, frac}),
-    .cnt_o (lz_o)
+  pree_fp32_class u_class (
+    .x_i (x_i), .exp_zero_o (exp_zero), .zero_o (zero_o), .inf_o (inf_o), .nan_o (nan_o)
   );
 
-  assign zero_o = exp_zero & frac_zero;
-  assign inf_o  = exp_ones & frac_zero;
-  assign nan_o  = exp_ones & ~frac_zero;
+  pree_fp32_lzc #(.Width(24), .CntWidth(5)) u_lzc (
+    .x_i   ({~exp_zero, x_i[22:0]}),
+    .cnt_o (lz_o)
+  );
 
 endmodule

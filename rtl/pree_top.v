@@ -5,10 +5,12 @@
 // interfaces, timing diagrams, memory organisation, hazards, the radiance order.
 //
 // Modes (mode_i; change it only while idle_o is high):
-//   0 update:   photons come in on ph_* (valid/ready). Photon k's candidate list is N^P
-//               hit-point addresses held in the index table at p_addr .. p_addr + N^P - 1,
-//               written beforehand (or in the same cycle) through idx_*. AFTSO-HpUOC turns the
-//               photons into up to NumPreu hit-point update operations per cycle.
+//   0 update:   photons come in on ph_* (valid/ready), up to PhotonsPerCycle side by side
+//               (slot s in bits [s*W +: W], slot 0 the oldest; a slot with N^P = 0 is empty).
+//               Photon k's candidate list is N^P hit-point addresses held in the index table
+//               at p_addr .. p_addr + N^P - 1, written beforehand (or in the same cycle) through
+//               idx_*. AFTSO-HpUOC (a buffer of 4 x PhotonsPerCycle entries) turns the photons
+//               into up to NumPreu hit-point update operations per cycle.
 //   1 radiance: a pulse on rad_start_i with n_hit_i = N starts one pass: ADISO-REC hands every
 //               hit-point address in [0, N) to a PREU once, and each adds its flux to its pixel.
 //
@@ -48,7 +50,8 @@
 //   pixels        2^PxBankW banks of 96-bit {b, g, r} sums; bank = low bits of the pixel
 // Host ports (hp_*, px_*): use them only while idle_o is high; read data comes one cycle after
 // the read enable. The index load port writes up to NumPreu entries per cycle, which must lie
-// in distinct banks (distinct addresses mod NumPreu).
+// in distinct banks (distinct addresses mod NumPreu): the rate at which the PREUs consume
+// entries at full utilization, whatever PhotonsPerCycle.
 //
 // Counters (cnt_o, CtrW bits each, counting only while cnt_en_i is high), in order:
 //   0 update cycles, 1 radiance cycles, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve (cycles in
@@ -72,6 +75,7 @@ module pree_top #(
   // The PREU units' stages, passed on (pree_preu; 0: the unit's default); the windows follow.
   parameter AddStages  = 0,
   parameter MulStages  = 0, SqrStages = 0, DivStages = 0, U2fStages = 0, WaccStages = 0,
+  parameter PhotonsPerCycle = 1, // photons AFTSO-HpUOC takes per cycle (1 .. 8; 1 = the paper)
   parameter StateW  = (Datapath != 0) ? 320 : 160  // do not override: set by Datapath
 ) (
   input  wire                       clk_i,
@@ -85,12 +89,13 @@ module pree_top #(
   input  wire                       rad_start_i,
   input  wire [HpAW-1:0]            n_hit_i,
   output wire                       idle_o,
-  // Photon stream (update mode). ph_data_i = {phi b, g, r, pos z, y, x}.
+  // Photon stream (update mode), PhotonsPerCycle slots side by side, one valid/ready for all;
+  // a slot's ph_data_i = {phi b, g, r, pos z, y, x}.
   input  wire                       ph_valid_i,
   output wire                       ph_ready_o,
-  input  wire [191:0]               ph_data_i,
-  input  wire [IdxAW-1:0]           ph_paddr_i,
-  input  wire [CntW-1:0]            ph_n_i,
+  input  wire [PhotonsPerCycle*192-1:0]   ph_data_i,
+  input  wire [PhotonsPerCycle*IdxAW-1:0] ph_paddr_i,
+  input  wire [PhotonsPerCycle*CntW-1:0]  ph_n_i,
   output wire [31:0]                photons_done_o,
   // Index-table load port: entry j in bits [j*W +: W].
   input  wire [NumPreu-1:0]         idx_we_i,
@@ -183,13 +188,14 @@ module pree_top #(
   wire [NumPreu-1:0]        af_id_unused;
   wire                      af_ready, af_busy_unused, af_empty;
 
+  // The buffer: 4 entries per photon taken a cycle (the paper's 4 for one photon a cycle).
   pree_aftso_hpuoc #(
-    .NumPreu(NumPreu), .BufDepth(4), .DataW(PH_W), .IdW(1), .AddrW(IdxAW), .CntW(CntW),
-    .EarlyReady(1)
+    .NumPreu(NumPreu), .BufDepth(4 * PhotonsPerCycle), .DataW(PH_W), .IdW(1), .AddrW(IdxAW),
+    .CntW(CntW), .EarlyReady(1), .PhotonsPerCycle(PhotonsPerCycle)
   ) u_aftso (
     .clk_i(clk_i), .rst_ni(rst_ni),
     .in_valid_i(ph_valid_i & ~mode_i), .in_ready_o(af_ready), .in_data_i(ph_data_i),
-    .in_id_i(1'b0), .in_p_addr_i(ph_paddr_i), .in_n_i(ph_n_i),
+    .in_id_i({PhotonsPerCycle{1'b0}}), .in_p_addr_i(ph_paddr_i), .in_n_i(ph_n_i),
     .stall_i(mode_i | ~a_all), .lane_valid_o(af_valid), .lane_ref_addr_o(af_ref),
     .lane_data_o(af_data), .lane_id_o(af_id_unused), .lane_last_o(af_last),
     .busy_o(af_busy_unused), .empty_o(af_empty));

@@ -23,8 +23,8 @@
 //   B1 the normalising left shift by whole bytes (lz[5:3])                          -> seam 3
 //   B2 the shift by lz[2:0] (the leading one to bit 63); the top 27 bits and the OR of the 37
 //      below (sticky); exponent 63 - lz + 127                                       -> seam 4
-//   C  pree_fp32_round (Denorm = 0: the exponent is at least 127, so no subnormal and no
-//      overflow can occur) rounds to nearest even and packs                        -> seam 5
+//   C  pree_fp32_final, no special result (round, Denorm = 0: the exponent is at least 127, so no
+//      subnormal and no overflow can occur) rounds to nearest even and packs       -> seam 5
 //   Zero needs no special case: its normalised word is 0, which packs as +0.
 // Stage plan (registered seams per Stages; the last seam is always the output register):
 //   Stages 1: 5 | 2: 2 5 | 3: 2 4 5 | 4: 1 2 4 5 | 5: all
@@ -48,29 +48,19 @@ module pree_u64_to_f32 #(
   localparam LATENCY    = Stages;
   localparam MAX_STAGES = 5;
 
-  // Registers at seam s (1 .. 5) under the stage plan above.
+  // Registers at seam s (1 .. 5) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 5 .. 1, left to right).
+  localparam [5*5-1:0] PLANS = {5'b11111, 5'b11011, 5'b11010, 5'b10010,
+                                5'b10000};
   function integer seam_regs;
     input integer s;
-    reg [4:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 5'b10000;
-        2:       plan = 5'b10010;
-        3:       plan = 5'b11010;
-        4:       plan = 5'b11011;
-        default: plan = 5'b11111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_u64_to_f32: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_u64_to_f32"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A1: per-byte counts
   // Byte 7 is the most significant (a_i[63:56]).
@@ -153,19 +143,12 @@ module pree_u64_to_f32 #(
   );
 
   // ---------------------------------------------------------------- C: round and pack
-  wire [31:0] y_d;
-
-  pree_fp32_round #(.Denorm(0)) u_round (
-    .sign_i   (1'b0),
-    .exp_i    (s4_exp),
-    .man_i    (s4_man),
-    .sticky_i (s4_sticky),
-    .y_o      (y_d)
-  );
-
-  pree_fp32_pipe #(.Width(32), .Regs(seam_regs(5))) u_seam5 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid), .d_i (y_d),
-    .valid_o (valid_o), .q_o (y_o)
+  // (pree_fp32_final with no special result: a count has none.)
+  pree_fp32_final #(.Regs(seam_regs(5))) u_final (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s4_valid),
+    .special_i (1'b0), .special_y_i (32'd0), .sign_i (1'b0),
+    .exp_i (s4_exp), .man_i (s4_man), .sticky_i (s4_sticky),
+    .valid_o (valid_o), .y_o (y_o)
   );
 
 endmodule

@@ -63,29 +63,19 @@ module pree_wacc #(
   localparam [63:0] WIDE_NAN = 64'hFF40_0000_0000_0000;
   localparam [63:0] WIDE_MAX = 64'hFEFF_FFFF_FFFF_FFFF;
 
-  // Registers at seam s (1 .. 5) under the stage plan above.
+  // Registers at seam s (1 .. 5) under the stage plan above: bit s-1 of row Stages of PLANS
+  // (rows Stages = 5 .. 1, left to right).
+  localparam [5*5-1:0] PLANS = {5'b11111, 5'b11101, 5'b11100, 5'b10100,
+                                5'b10000};
   function integer seam_regs;
     input integer s;
-    reg [4:0] plan;    // bit s-1: seam s registered
-    begin
-      case (Stages)
-        1:       plan = 5'b10000;
-        2:       plan = 5'b10100;
-        3:       plan = 5'b11100;
-        4:       plan = 5'b11101;
-        default: plan = 5'b11111;
-      endcase
-      seam_regs = plan[s-1] ? 1 : 0;
-    end
+    seam_regs = PLANS[((Stages < 1) ? 0 : (Stages > MAX_STAGES) ? MAX_STAGES - 1 : Stages - 1)
+                      * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-`ifndef SYNTHESIS
-  initial begin
-    if (LATENCY < 1 || LATENCY > MAX_STAGES)
-      $fatal(1, "pree_wacc: Stages = %0d (PipeFast = %0d), supported 1 .. %0d", Stages,
-             PipeFast, MAX_STAGES);
-  end
-`endif
+  pree_fp32_stages #(
+    .Unit ("pree_wacc"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
+  ) u_stages ();
 
   // ---------------------------------------------------------------- A: classify, compare
   wire [7:0]  exp_a  = a_i[63:56];
@@ -94,8 +84,12 @@ module pree_wacc #(
   wire        sign_t = t_i[31];
   wire        nan_a  = (exp_a == 8'hFF) && (man_a != 56'd0);
   wire        inf_a  = (exp_a == 8'hFF) && (man_a == 56'd0);
-  wire        nan_t  = (exp_t == 8'hFF) && (t_i[22:0] != 23'd0);
-  wire        inf_t  = (exp_t == 8'hFF) && (t_i[22:0] == 23'd0);
+  wire        expz_t, zero_t_unused, inf_t, nan_t;
+
+  pree_fp32_class u_class_t (
+    .x_i (t_i[30:0]), .exp_zero_o (expz_t), .zero_o (zero_t_unused), .inf_o (inf_t),
+    .nan_o (nan_t)
+  );
 
   // Special results (priority as in wide_add): pass = the result is A.
   wire pass_d = nan_a | (~nan_t & (inf_a | sign_t));
@@ -104,7 +98,7 @@ module pree_wacc #(
 
   // Effective exponents; the operand with the larger one is "big" (on a tie, A; for pass, A).
   wire [7:0]  exp_a1  = (exp_a == 8'd0) ? 8'd1 : exp_a;
-  wire [7:0]  exp_t1  = (exp_t == 8'd0) ? 8'd1 : exp_t;
+  wire [7:0]  exp_t1  = expz_t ? 8'd1 : exp_t;
   wire        swap    = (exp_t1 > exp_a1) & ~pass_d;
   wire [7:0]  diff_at = exp_a1 - exp_t1;
   wire [7:0]  diff_ta = exp_t1 - exp_a1;
@@ -121,7 +115,7 @@ module pree_wacc #(
 
   pree_fp32_pipe #(.Width(64 + 24 + 8 + 6 + 12), .Regs(seam_regs(1))) u_seam1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({a_i, exp_t != 8'd0, t_i[22:0], exp_t1, pass_d, nan_d, max_d, swap,
+    .d_i   ({a_i, ~expz_t, t_i[22:0], exp_t1, pass_d, nan_d, max_d, swap,
              gone_at, gone_ta, diff_at[5:0], diff_ta[5:0]}),
     .valid_o (s1_valid),
     .q_o   ({s1_a, s1_t, s1_exp_t1, s1_pass, s1_nan, s1_max, s1_swap,

@@ -124,10 +124,11 @@ static int misplaced_stream(cosim_rtl_t *rtl, const mis_stream_t *m, int preu, d
         }
         for (int j = nw; j < preu; j++) in->idx_we[j] = 0;
         in->ph_valid = m->p_eend[p] <= e && !(gap > 0 && (double)rnd() / 2147483648.0 < gap);
-        memcpy(in->ph_pos, m->ph[p].pos, sizeof in->ph_pos);
-        memcpy(in->ph_phi, m->ph[p].phi, sizeof in->ph_phi);
-        in->ph_paddr = m->p_addr[p];
-        in->ph_n = m->p_n[p];
+        memcpy(in->ph_pos[0], m->ph[p].pos, sizeof in->ph_pos[0]);
+        memcpy(in->ph_phi[0], m->ph[p].phi, sizeof in->ph_phi[0]);
+        in->ph_paddr[0] = m->p_addr[p];
+        in->ph_n[0] = m->p_n[p];
+        for (int j = 1; j < COSIM_MAX_PPC; j++) in->ph_n[j] = 0;   /* one photon a cycle */
         int take = in->ph_valid && ready;   /* ph_ready_o depends on the state only */
         cosim_rtl_tick(rtl);
         ready = cosim_rtl_ph_ready(rtl);

@@ -10,7 +10,9 @@
 // Usage: aftso_bench [--seed S] [--scale K] [--np-file FILE]
 //   --scale K       photons per scenario x K (default 1)
 //   --np-file FILE  only measure utilization on these N^P values (one per line)
-// Build defines: NUM_PREU, EARLY_READY, BUF_DEPTH (must match the -G parameters). Exit 0 on pass.
+// Build defines: NUM_PREU, EARLY_READY, BUF_DEPTH, PPC (PhotonsPerCycle; must match the -G
+// parameters). With PPC > 1 the source offers up to PPC photons side by side (fewer when it has
+// fewer ready; the other slots N^P = 0). Exit 0 on pass.
 #include "Vpree_aftso_hpuoc.h"
 #include "verilated.h"
 
@@ -37,11 +39,23 @@ extern "C" {
 #ifndef BUF_DEPTH
 #define BUF_DEPTH 4
 #endif
+#ifndef PPC
+#define PPC 1
+#endif
 
 static const int kWords = 6;  // DataW = 192
 static const int kBuf = BUF_DEPTH;
 
 namespace {
+
+// Word w (32 bits) of a port of any width: IData, QData or VlWide.
+void set_word(uint32_t &port, int w, uint32_t v) { if (w == 0) port = v; }
+void set_word(uint64_t &port, int w, uint32_t v) {
+  const unsigned sh = 32u * (unsigned)w;
+  port = (port & ~(0xffffffffull << sh)) | ((uint64_t)v << sh);
+}
+template <std::size_t N>
+void set_word(VlWide<N> &port, int w, uint32_t v) { port[w] = v; }
 
 struct Scenario {
   const char *name;
@@ -72,7 +86,7 @@ class Bench {
 
   // Reset the RTL and the model.
   void reset() {
-    aftso_init(&model_, NUM_PREU, kBuf, kWords, EARLY_READY);
+    aftso_init(&model_, NUM_PREU, kBuf, PPC, kWords, EARLY_READY);
     sb_.clear();
     top_->rst_ni = 0;
     top_->in_valid_i = 0;
@@ -83,19 +97,23 @@ class Bench {
     top_->eval();
   }
 
-  // One cycle with the given input and stall; returns whether the photon was accepted.
-  bool cycle(const Photon *p, bool stall, const char *scen) {
+  // One cycle with the given input (np photons in slots 0..np-1, np <= PPC; np = 0: none) and
+  // stall; returns whether the photons were accepted.
+  bool cycle(const Photon *p, int np, bool stall, const char *scen) {
     aftso_in in;
     std::memset(&in, 0, sizeof in);
-    if (p) {
-      in.valid = 1; in.n = p->n; in.p_addr = p->p_addr; in.id = p->id;
-      std::memcpy(in.data, p->data, sizeof p->data);
+    in.valid = np > 0;
+    for (int k = 0; k < np; k++) {
+      in.ph[k].n = p[k].n; in.ph[k].p_addr = p[k].p_addr; in.ph[k].id = p[k].id;
+      std::memcpy(in.ph[k].data, p[k].data, sizeof p[k].data);
     }
     top_->in_valid_i = in.valid;
-    top_->in_n_i = in.n;
-    top_->in_p_addr_i = in.p_addr;
-    top_->in_id_i = in.id;
-    for (int w = 0; w < kWords; w++) top_->in_data_i[w] = in.data[w];
+    for (int k = 0; k < PPC; k++) {
+      set_word(top_->in_n_i, k, in.ph[k].n);
+      set_word(top_->in_p_addr_i, k, in.ph[k].p_addr);
+      set_word(top_->in_id_i, k, in.ph[k].id);
+      for (int w = 0; w < kWords; w++) top_->in_data_i[k * kWords + w] = in.ph[k].data[w];
+    }
     top_->stall_i = stall;
     top_->eval();
 
@@ -103,7 +121,8 @@ class Bench {
     aftso_eval(&model_, stall, &exp);
     compare(exp, scen);
     bool accepted = in.valid && top_->in_ready_o;
-    if (accepted && in.n) sb_.push_back(Pending{in.id, in.p_addr + in.n - 1u, in.n});
+    for (int k = 0; accepted && k < np; k++)
+      if (in.ph[k].n) sb_.push_back(Pending{in.ph[k].id, in.ph[k].p_addr + in.ph[k].n - 1u, in.ph[k].n});
     if (!stall) scoreboard(scen);
 
     top_->clk_i = 1; top_->eval();
@@ -203,18 +222,20 @@ double run(Bench &b, const Scenario &s, const std::vector<uint32_t> *np_list, ui
   uint64_t rng = seed;
   b.reset();
   long n_phot = np_list ? (long)np_list->size() : s.photons;
-  long next = 0, c0 = b.cycles, o0 = b.ops;
-  bool have = false;
-  Photon cur;
+  long next = 0, made = 0, c0 = b.cycles, o0 = b.ops;
+  int have = 0;
+  Photon cur[PPC];
   long guard = 0;
   while (next < n_phot || (s.drain && !b.empty())) {
-    if (!have && next < n_phot && ctrl_rng_unit(&rng) >= s.gap) {
-      cur = make_photon(s.kind, &rng, (uint32_t)next);
-      if (np_list) cur.n = (*np_list)[next];
-      have = true;
+    // Fill the free slots, each with probability 1 - gap (a source that is not always ready).
+    while (have < PPC && made < n_phot && ctrl_rng_unit(&rng) >= s.gap) {
+      cur[have] = make_photon(s.kind, &rng, (uint32_t)made);
+      if (np_list) cur[have].n = (*np_list)[made];
+      have++;
+      made++;
     }
     bool stall = ctrl_rng_unit(&rng) < s.stall;
-    if (b.cycle(have ? &cur : nullptr, stall, s.name)) { have = false; next++; }
+    if (b.cycle(cur, have, stall, s.name)) { next += have; have = 0; }
     if (++guard > 200000000L || b.errors > 100) break;
     if (!s.drain && b.cycles - c0 >= 3000) break;  // huge counts never drain: check a window
   }
@@ -263,8 +284,8 @@ int main(int argc, char **argv) {
     std::vector<uint32_t> np = read_np(np_file);
     Scenario s{"np-file", 0, 0.0, 0.0, 0, true};
     double u = run(b, s, &np, seed);
-    std::printf("aftso rtl np-file=%s preu=%d buf=%d early_ready=%d photons=%zu ops=%ld cycles=%ld utilization=%.6f%% checks=%ld errors=%ld\n",
-                np_file, NUM_PREU, BUF_DEPTH, EARLY_READY, np.size(), b.ops, b.cycles, 100.0 * u, b.checks, b.errors);
+    std::printf("aftso rtl np-file=%s preu=%d buf=%d ppc=%d early_ready=%d photons=%zu ops=%ld cycles=%ld utilization=%.6f%% checks=%ld errors=%ld\n",
+                np_file, NUM_PREU, BUF_DEPTH, PPC, EARLY_READY, np.size(), b.ops, b.cycles, 100.0 * u, b.checks, b.errors);
     return b.errors ? 1 : 0;
   }
 
@@ -289,8 +310,8 @@ int main(int argc, char **argv) {
     if (i == 0) util_geo = u;
     std::printf("  %-20s cycles=%-8ld ops=%-8ld utilization=%.4f%%\n", s.name, b.cycles - c0, b.ops - o0, 100.0 * u);
   }
-  std::printf("aftso rtl-vs-model preu=%d buf=%d early_ready=%d seed=%" PRIu64 " cycles=%ld ops=%ld checks=%ld errors=%ld geo32_utilization=%.4f%% %s\n",
-              NUM_PREU, BUF_DEPTH, EARLY_READY, seed, b.cycles, b.ops, b.checks, b.errors, 100.0 * util_geo,
+  std::printf("aftso rtl-vs-model preu=%d buf=%d ppc=%d early_ready=%d seed=%" PRIu64 " cycles=%ld ops=%ld checks=%ld errors=%ld geo32_utilization=%.4f%% %s\n",
+              NUM_PREU, BUF_DEPTH, PPC, EARLY_READY, seed, b.cycles, b.ops, b.checks, b.errors, 100.0 * util_geo,
               b.errors ? "FAIL" : "PASS");
   return b.errors ? 1 : 0;
 }

@@ -1,6 +1,6 @@
 /* aftso_util.c: PREU utilization of the AFTSO-HpUOC dispatch rule on a stream of photons.
  *
- * Usage: aftso_util [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S]
+ * Usage: aftso_util [--preu N] [--buf D] [--early-ready 0|1] [--ppc K] [--np-file FILE | --geo MEAN --photons K] [--seed S]
  *   --np-file FILE   N^P values, one per line (blank lines and '#' comments skipped)
  *   --early-ready B  the RTL's EarlyReady parameter (default 1)
  *   --geo MEAN       synthetic geometric N^P on {0,1,...} with this mean (default 32)
@@ -49,21 +49,25 @@ static void print_cycle(uint64_t cycle, const aftso_model *m, const aftso_out *o
 {
   uint64_t accu = 0;
   printf("cycle %3llu | buffer", (unsigned long long)cycle);
-  for (int i = 0; i < m->buf_depth; i++) {
-    if (i < m->count) printf(" P%u:%u", m->buf[i].id, m->buf[i].rem);
+  for (int i = 0; i < m->rule.buf_depth; i++) {
+    if (i < m->rule.count) printf(" P%u:%u", m->id[m->rule.e[i].seq % AFTSO_MAX_BUF], m->rule.e[i].rem);
     else printf(" -");
   }
   printf(" | accuHP");
-  for (int i = 0; i < m->count; i++) { accu += m->buf[i].rem; printf(" %llu", (unsigned long long)accu); }
+  for (int i = 0; i < m->rule.count; i++) { accu += m->rule.e[i].rem; printf(" %llu", (unsigned long long)accu); }
   printf(" | lanes");
   for (int l = 0; l < out->nvalid; l++) printf(" P%u:%u%s", out->id[l], out->ref_addr[l], out->last[l] ? "*" : "");
-  if (in->valid) printf(" | in P%u N=%u %s", in->id, in->n, out->ready ? "taken" : "held");
+  if (in->valid) {
+    printf(" | in");
+    for (int k = 0; k < m->rule.ppc; k++) printf(" P%u N=%u", in->ph[k].id, in->ph[k].n);
+    printf(" %s", out->ready ? "taken" : "held");
+  }
   printf("\n");
 }
 
 int main(int argc, char **argv)
 {
-  int preu = 4, depth = 4, early = 1;
+  int preu = 4, depth = 4, early = 1, ppc = 1;
   long photons = 1000000;
   double mean = 32.0;
   uint64_t seed = 1;
@@ -73,16 +77,18 @@ int main(int argc, char **argv)
     if (!strcmp(argv[i], "--preu") && i + 1 < argc) preu = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--buf") && i + 1 < argc) depth = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--early-ready") && i + 1 < argc) early = atoi(argv[++i]);
+    else if (!strcmp(argv[i], "--ppc") && i + 1 < argc) ppc = atoi(argv[++i]);
     else if (!strcmp(argv[i], "--np-file") && i + 1 < argc) file = argv[++i];
     else if (!strcmp(argv[i], "--trace")) trace = 1;
     else if (!strcmp(argv[i], "--write-np") && i + 1 < argc) write_np = argv[++i];
     else if (!strcmp(argv[i], "--geo") && i + 1 < argc) mean = atof(argv[++i]);
     else if (!strcmp(argv[i], "--photons") && i + 1 < argc) photons = atol(argv[++i]);
     else if (!strcmp(argv[i], "--seed") && i + 1 < argc) seed = strtoull(argv[++i], NULL, 0);
-    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--np-file FILE | --geo MEAN --photons K] [--seed S] [--trace] [--write-np FILE]\n", argv[0]); return 2; }
+    else { fprintf(stderr, "usage: %s [--preu N] [--buf D] [--early-ready 0|1] [--ppc K] [--np-file FILE | --geo MEAN --photons K] [--seed S] [--trace] [--write-np FILE]\n", argv[0]); return 2; }
   }
-  if (preu < 1 || preu > AFTSO_MAX_PREU || depth < 1 || depth > AFTSO_MAX_BUF || photons < 0) {
-    fprintf(stderr, "aftso_util: --preu 1..%d, --buf 1..%d\n", AFTSO_MAX_PREU, AFTSO_MAX_BUF);
+  if (preu < 1 || preu > AFTSO_MAX_PREU || depth < 1 || depth > AFTSO_MAX_BUF || photons < 0 ||
+      ppc < 1 || ppc > AFTSO_MAX_PPC || ppc > depth) {
+    fprintf(stderr, "aftso_util: --preu 1..%d, --buf 1..%d, --ppc 1..min(%d, buf)\n", AFTSO_MAX_PREU, AFTSO_MAX_BUF, AFTSO_MAX_PPC);
     return 2;
   }
   uint32_t *np = NULL;
@@ -105,20 +111,24 @@ int main(int argc, char **argv)
   aftso_model m;
   aftso_out out;
   aftso_in in;
-  aftso_init(&m, preu, depth, 1, early);
+  aftso_init(&m, preu, depth, ppc, 1, early);
   memset(&in, 0, sizeof in);
   size_t next = 0;
   uint64_t ops = 0, cycles = 0, full_cycles = 0, busy_cycles = 0, want = 0;
   for (size_t i = 0; i < nphot; i++) want += np[i];
   /* Clock until every photon is in and the buffer has drained. */
-  while (next < nphot || m.count) {
+  while (next < nphot || m.rule.count) {
     aftso_eval(&m, 0, &out);
+    /* Up to ppc photons side by side, the rest of the slots empty. */
     in.valid = next < nphot;
-    in.n = in.valid ? np[next] : 0;
-    in.p_addr = 100u * (uint32_t)next;
-    in.id = (uint32_t)next;
+    for (int k = 0; k < ppc; k++) {
+      size_t i = next + (size_t)k;
+      in.ph[k].n = i < nphot ? np[i] : 0;
+      in.ph[k].p_addr = 100u * (uint32_t)i;
+      in.ph[k].id = (uint32_t)i;
+    }
     if (trace) print_cycle(cycles, &m, &out, &in);
-    if (in.valid && out.ready) next++;
+    if (in.valid && out.ready) next = next + (size_t)ppc < nphot ? next + (size_t)ppc : nphot;
     if (!out.ready) busy_cycles++;
     ops += (uint64_t)out.nvalid;
     if (out.nvalid == preu) full_cycles++;

@@ -54,7 +54,7 @@ int main(int argc, char **argv)
   aftso_model m;
   aftso_out out;
   aftso_in in;
-  aftso_init(&m, preu, 4, WORDS, early);
+  aftso_init(&m, preu, 4, 1, WORDS, early);
   memset(&in, 0, sizeof in);
   uint64_t rng = seed;
   uint32_t next_id = 0;
@@ -64,19 +64,19 @@ int main(int argc, char **argv)
     int feeding = rst_n && (c < total * 6 / 10 || c >= total * 8 / 10);
     if (!in.valid && feeding && ctrl_rng_unit(&rng) >= 0.25) {
       in.valid = 1;
-      in.n = draw_n(&rng, preu, c >= total * 8 / 10);
-      in.p_addr = ctrl_rng_below(&rng, 4) ? (uint32_t)ctrl_rng_next(&rng) : 0xfffffff0u;
-      in.id = next_id++;
-      for (int w = 0; w < WORDS; w++) in.data[w] = (uint32_t)ctrl_rng_next(&rng);
+      in.ph[0].n = draw_n(&rng, preu, c >= total * 8 / 10);
+      in.ph[0].p_addr = ctrl_rng_below(&rng, 4) ? (uint32_t)ctrl_rng_next(&rng) : 0xfffffff0u;
+      in.ph[0].id = next_id++;
+      for (int w = 0; w < WORDS; w++) in.ph[0].data[w] = (uint32_t)ctrl_rng_next(&rng);
     }
     int stall = rst_n && ctrl_rng_unit(&rng) < 0.2;
     aftso_eval(&m, stall, &out);
 
     hex_field(fs, (uint64_t)(rst_n << 3 | in.valid << 2 | stall << 1), 1);
-    hex_field(fs, in.n, 8);
-    hex_field(fs, in.p_addr, 8);
-    hex_field(fs, in.id, 8);
-    for (int w = WORDS - 1; w >= 0; w--) hex_field(fs, in.data[w], 8);
+    hex_field(fs, in.ph[0].n, 8);
+    hex_field(fs, in.ph[0].p_addr, 8);
+    hex_field(fs, in.ph[0].id, 8);
+    for (int w = WORDS - 1; w >= 0; w--) hex_field(fs, in.ph[0].data[w], 8);
     fputc('\n', fs);
 
     unsigned valid = 0, last = 0;

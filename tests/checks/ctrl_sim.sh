@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Controllers in simulation: the Verilator benches compare pree_aftso_hpuoc and pree_adiso_rec
 # cycle by cycle with their C models (plus an operation scoreboard and exactly-once address
-# coverage for N = 0..2000), the Icarus benches replay the C models' vectors; NumPreu 4/8/16.
+# coverage for N = 0..2000), the Icarus benches replay the C models' vectors; NumPreu 4/8/16,
+# and the wide intakes of pree_top's 8- and 16-PREU builds (PhotonsPerCycle 2 into 8 entries,
+# 4 into 16) against the same model (model/aftso_rule.c).
 # level: quick
 set -u
 cd "$(dirname "$0")/../.."
 aftso=(build/ctrl/aftso_p4_e0/aftso_bench build/ctrl/aftso_p4_e1/aftso_bench
-       build/ctrl/aftso_p8_e1/aftso_bench build/ctrl/aftso_p16_e1/aftso_bench)
+       build/ctrl/aftso_p8_e1/aftso_bench build/ctrl/aftso_p16_e1/aftso_bench
+       build/ctrl/aftso_p8_e1_b8_w2/aftso_bench build/ctrl/aftso_p16_e1_b16_w4/aftso_bench)
 adiso=(build/ctrl/adiso_p4/adiso_bench build/ctrl/adiso_p8/adiso_bench build/ctrl/adiso_p16/adiso_bench)
 vvps=()
 for c in p4_e0 p4_e1 p8_e0 p8_e1 p16_e0 p16_e1; do vvps+=(build/ctrl/icarus/aftso_$c); done

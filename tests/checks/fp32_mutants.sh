@@ -17,8 +17,8 @@ fail=0
 mutants=(
   "mul@pree_fp32_round.v@s/wire inc   = guard \& (rest | lsb);/wire inc   = guard;/@ties away from zero"
   "add@pree_fp32_add.v@s/{s1_special, sign_l, sign_l \& sign_s}/{s1_special, sign_l, sign_l}/@x - x = -0 for negative x"
-  "div@pree_fp32_div.v@s/if (nan_a) /if (nan_a \&\& !nan_b) /@NaN priority a before b"
-  "sqr@pree_fp32_sqr.v@s/.Regs(seam_regs(6))) u_seam6/.Regs(seam_regs(6) - 1)) u_seam6/@latency 1 instead of 2"
+  "div@pree_fp32_special.v@s/assign y_o       = nan_a_i   ?/assign y_o       = (nan_a_i \&\& !nan_b_i) ?/@NaN priority a before b"
+  "sqr@pree_fp32_sqr.v@s/.RegsOut (seam_regs(6))/.RegsOut (seam_regs(6) - 1)/@latency 1 instead of 2"
   "cmp@pree_fp32_cmp.v@s/wire eq_num    = both_zero | /wire eq_num    = /@-0 == +0"
   "wacc@pree_wacc.v@s/carry ? sum\[56:1\] : sum\[55:0\];/carry ? sum[56:1] + {55'd0, sum[0]} : sum[55:0];/@carry normalisation rounds instead of truncating"
   "wacc@pree_wacc.v@s/wire        sat   = carry \& s4_exp_top;/wire        sat   = 1'b0;/@no saturation to WIDE_MAX"

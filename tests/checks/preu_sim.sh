@@ -5,12 +5,15 @@
 # scoreboard) and the Verilog bench over 4,000 vectors each under Icarus and Verilator --binary
 # (each datapath with one cycle count in both simulators), and a run that switches modes with
 # operations in flight, which the RTL's PREE_ASSERT check must stop. PipeFast 1 (the deep plans:
-# update 45 / 48 stages, radiance 59), at a reduced size: the Verilator bench (50,000) and the
-# Verilog bench under Icarus (1,000). Fails on any mismatch, latency or protocol error.
+# update 45 / 48 stages, radiance 59), at a reduced size: the Verilator bench (50,000 operations
+# each). The deep configurations' Verilog bench under Icarus is not run here: its time is in
+# elaborating the deep units, not in the vectors (PipeFast 1 paper, 100 vectors, 630 cycles: 449 s
+# wall on the shared 2-core machine; 1,000 vectors of both ran over 60 minutes); run it with
+# make sim-preu-iv PREU_CFGS=0f_1f PREU_IV_N=100. Fails on any mismatch, latency or protocol error.
 set -u
 cd "$(dirname "$0")/../.."
 fail=0
-# $1: configurations, $2: simulators of the Verilog bench (1 Icarus, 2 and Verilator), $3: the
+# $1: configurations, $2: simulators of the Verilog bench (0 none, 1 Icarus, 2 and Verilator), $3: the
 # make command. The tb_preu lines come as Icarus per configuration, then Verilator per configuration.
 run() {
   local n=$(echo $1 | wc -w) rc
@@ -32,6 +35,6 @@ run "0 1" 2 "make -s sim-preu PREU_CFGS=0_1 PREU_N=200000 PREU_IV_N=4000 PREU_SE
 if ! echo "$out" | grep -q 'mode-switch assertion fired'; then
   echo "preu_sim: FAIL: the mode-switch assertion did not fire"; fail=1
 fi
-run "0f 1f" 1 "make -s sim-preu-vl sim-preu-iv PREU_CFGS=0f_1f PREU_N=50000 PREU_IV_N=1000 PREU_SEED=1"
+run "0f 1f" 0 "make -s sim-preu-vl PREU_CFGS=0f_1f PREU_N=50000 PREU_SEED=1"
 if [ $fail -eq 0 ]; then echo "preu_sim: ok"; fi
 exit $fail
