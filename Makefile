@@ -50,6 +50,10 @@ $(DEPS_STAMP): scripts/install-deps.sh
 	@scripts/install-deps.sh
 	@mkdir -p $(@D) && touch $@
 
+# The Verilator harness of every bench and of the co-simulation host (C++, header-only).
+VHARNESS     := tb/lib/vharness.h
+VHARNESS_INC := -I$(CURDIR)/tb/lib
+
 # Each fragment owns one area and appends to TEST_PREREQS, LINT_TARGETS, SYNTH_TARGETS,
 # SIM_TARGETS; its regression checks live in tests/checks/*.sh.
 include mk/model.mk

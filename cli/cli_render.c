@@ -99,16 +99,19 @@ static const struct option render_longopts[] = {
     {NULL, 0, NULL, 0}
 };
 
-int pree_cmd_render(int argc, char **argv)
-{
-    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
-                            .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    const char *scene_path, *stats_path = NULL;
+/* What the command line asks for besides the render options. */
+typedef struct {
+    const char *scene_path, *stats_path;
     const char *outs[MAX_OUTPUTS];
-    int nout = 0;
-    char err[1024];
+    int nout;
+    char default_out[600];
+} render_job_t;
+
+/* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
+static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t *j)
+{
     cli_args_t a;
-    cli_begin(&a, argc, argv, "render", render_longopts, &opt, 1);
+    cli_begin(&a, argc, argv, "render", render_longopts, opt, 1);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         int k;
@@ -117,57 +120,120 @@ int pree_cmd_render(int argc, char **argv)
         case CLI_HELP: render_usage(stdout); return 0;
         case OPT_PHOTON_OFFSET:
             if (cli_int(&a, 0, 10000000000LL, &v)) return 2;
-            opt.photon_offset = (uint64_t)v;
+            opt->photon_offset = (uint64_t)v;
             break;
         case OPT_PRECISION: {
             static const char *const names[] = {"double", "fp32"};
             if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
-            opt.precision = k ? PRECISION_FP32 : PRECISION_DOUBLE;
+            opt->precision = k ? PRECISION_FP32 : PRECISION_DOUBLE;
             break;
         }
         case OPT_SCAN: {
             static const char *const names[] = {"bucket", "photon"};
             if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
-            opt.scan = k ? SCAN_PHOTON : SCAN_BUCKET;
+            opt->scan = k ? SCAN_PHOTON : SCAN_BUCKET;
             break;
         }
         case OPT_OUT:
-            if (nout == MAX_OUTPUTS) return cli_error(&a, "--out: at most %d outputs", MAX_OUTPUTS);
+            if (j->nout == MAX_OUTPUTS) return cli_error(&a, "--out: at most %d outputs", MAX_OUTPUTS);
             if (cli_image_ext(&a, a.val)) return 2;
-            outs[nout++] = a.val;
+            j->outs[j->nout++] = a.val;
             break;
-        case OPT_STATS: stats_path = a.val; break;
-        case OPT_MAX_MEMORY: if (cli_size(&a, &opt.max_memory)) return 2; break;
-        case OPT_CHECKPOINT: opt.checkpoint = a.val; break;
-        case OPT_RESUME: opt.resume = a.val; break;
+        case OPT_STATS: j->stats_path = a.val; break;
+        case OPT_MAX_MEMORY: if (cli_size(&a, &opt->max_memory)) return 2; break;
+        case OPT_CHECKPOINT: opt->checkpoint = a.val; break;
+        case OPT_RESUME: opt->resume = a.val; break;
         case OPT_CHECKPOINT_EVERY:
             if (cli_int(&a, 1000, 1000000000000LL, &v)) return 2;
-            opt.checkpoint_every = (uint64_t)v;
+            opt->checkpoint_every = (uint64_t)v;
             break;
-        case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt.time_limit)) return 2; break;
-        default: if (cli_pm_option(&a, id, &opt)) return 2;
+        case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt->time_limit)) return 2; break;
+        default: if (cli_pm_option(&a, id, opt)) return 2;
         }
     }
-    if (!(scene_path = cli_scene(&a)) || cli_pm_check(&a, &opt)) return 2;
-    if (opt.datapath == DATAPATH_STABLE && opt.precision != PRECISION_FP32)
+    if (!(j->scene_path = cli_scene(&a)) || cli_pm_check(&a, opt)) return 2;
+    if (opt->datapath == DATAPATH_STABLE && opt->precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
-    if ((uint64_t)opt.width * (uint64_t)opt.height > 64ull * 1024 * 1024)
-        return cli_error(&a, "%dx%d is more than 64 Mpixels", opt.width, opt.height);
-    char default_out[600];
-    if (nout == 0) {
-        const char *base = strrchr(scene_path, '/');
-        base = base ? base + 1 : scene_path;
-        snprintf(default_out, sizeof default_out, "%s.png", base);
-        outs[nout++] = default_out;
+    if ((uint64_t)opt->width * (uint64_t)opt->height > 64ull * 1024 * 1024)
+        return cli_error(&a, "%dx%d is more than 64 Mpixels", opt->width, opt->height);
+    if (j->nout == 0) {
+        const char *base = strrchr(j->scene_path, '/');
+        base = base ? base + 1 : j->scene_path;
+        snprintf(j->default_out, sizeof j->default_out, "%s.png", base);
+        j->outs[j->nout++] = j->default_out;
     }
+    return -1;
+}
 
-    cli_file_t in = {"the scene", scene_path}, out[MAX_OUTPUTS + 1];
-    for (int k = 0; k < nout; k++) out[k] = (cli_file_t){"--out", outs[k]};
-    if (stats_path) out[nout] = (cli_file_t){"--stats", stats_path};
-    if (cli_outputs_check("render", &in, 1, out, nout + (stats_path != NULL))) return 1;
+/* Every output checked before any work starts (see cli_outputs.h): 0, or 1 with the error printed. */
+static int check_outputs(const render_job_t *j)
+{
+    cli_file_t in = {"the scene", j->scene_path}, out[MAX_OUTPUTS + 1];
+    for (int k = 0; k < j->nout; k++) out[k] = (cli_file_t){"--out", j->outs[k]};
+    if (j->stats_path) out[j->nout] = (cli_file_t){"--stats", j->stats_path};
+    return cli_outputs_check("render", &in, 1, out, j->nout + (j->stats_path != NULL)) ? 1 : 0;
+}
 
+static void catch_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_sigint;
+    sa.sa_flags = SA_RESETHAND;   /* a second signal ends the process at once */
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
+}
+
+/* What the user should know about a finished render (rc as render_run's). */
+static void warn_result(const render_job_t *j, const render_options_t *opt, const render_stats_t *st, int rc)
+{
+    /* A black image is a correct answer here, but rarely the one intended. */
+    if (st->hit_points == 0)
+        fprintf(stderr, "pree render: warning: %s: no eye ray reaches a diffuse surface; the image is black\n", j->scene_path);
+    else if (st->photon_hits == 0)
+        fprintf(stderr, "pree render: warning: %s: no photon reaches a diffuse surface; the image is black\n", j->scene_path);
+    if (st->hit_points_saturated)
+        fprintf(stderr, "pree render: warning: %s: %llu hit points reached the stable datapath's wide-format limit "
+                "(1/r2 or tau/r2 beyond binary32's range: the radius stopped shrinking there; docs/numerics.md)\n",
+                j->scene_path, st->hit_points_saturated);
+    if (rc == 1)
+        fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
+                (unsigned long long)st->photons_emitted);
+    if (st->time_limited)
+        fprintf(stderr, "pree render: time limit of %g s reached after %llu photons; writing what was made\n",
+                opt->time_limit, (unsigned long long)st->photons_emitted);
+}
+
+/* The images and the statistics: 0, or 1 when one of them could not be written (printed). */
+static int write_outputs(const render_job_t *j, const render_options_t *opt, const render_result_t *res, int rc)
+{
+    char err[1024];
+    int status = 0;
+    for (int k = 0; k < j->nout; k++) {
+        if (write_image(j->outs[k], j->scene_path, opt, res, err, sizeof err)) {
+            fprintf(stderr, "pree render: %s\n", err);
+            status = 1;
+        }
+    }
+    if (j->stats_path && stats_json_write(j->stats_path, j->scene_path, opt, &res->stats, rc == 1, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        status = 1;
+    }
+    return status;
+}
+
+int pree_cmd_render(int argc, char **argv)
+{
+    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
+                            .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
+    render_job_t j = {0};
+    char err[1024];
+    int status = parse_args(argc, argv, &opt, &j);
+    if (status >= 0) return status;
+    if (check_outputs(&j)) return 1;
     scene_t scene;
-    if (scene_load(scene_path, &scene, err, sizeof err)) {
+    if (scene_load(j.scene_path, &scene, err, sizeof err)) {
         fprintf(stderr, "pree render: %s\n", err);
         return 1;
     }
@@ -176,60 +242,26 @@ int pree_cmd_render(int argc, char **argv)
         scene_free(&scene);
         return 1;
     }
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_sigint;
-    sa.sa_flags = SA_RESETHAND;   /* a second signal ends the process at once */
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    signal(SIGPIPE, SIG_IGN);
+    catch_signals();
     render_result_t res;
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
-    if (rc < 0) {
-        fprintf(stderr, "pree render: %s: %s%s\n", scene_path, err, interrupted ? "; nothing written" : "");
-        render_result_free(&res);
-        scene_free(&scene);
-        return interrupted ? 130 : 1;
-    }
     size_t nonfinite = 0;
-    for (size_t i = 0; i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
-    if (nonfinite) {   /* never an image of inf or NaN with status 0 */
+    for (size_t i = 0; rc >= 0 && i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
+    if (rc < 0) {
+        fprintf(stderr, "pree render: %s: %s%s\n", j.scene_path, err, interrupted ? "; nothing written" : "");
+        status = interrupted ? 130 : 1;
+    } else if (nonfinite) {   /* never an image of inf or NaN with status 0 */
         fprintf(stderr, "pree render: %s: %zu pixel values are not finite (a light's power beyond the %s range?); "
-                "nothing written\n", scene_path, nonfinite, opt.precision == PRECISION_FP32 ? "binary32" : "double");
-        render_result_free(&res);
-        scene_free(&scene);
-        return 1;
-    }
-    int status = rc == 1 ? 130 : 0;
-    /* A black image is a correct answer here, but rarely the one intended. */
-    if (res.stats.hit_points == 0)
-        fprintf(stderr, "pree render: warning: %s: no eye ray reaches a diffuse surface; the image is black\n", scene_path);
-    else if (res.stats.photon_hits == 0)
-        fprintf(stderr, "pree render: warning: %s: no photon reaches a diffuse surface; the image is black\n", scene_path);
-    if (res.stats.hit_points_saturated)
-        fprintf(stderr, "pree render: warning: %s: %llu hit points reached the stable datapath's wide-format limit "
-                "(1/r2 or tau/r2 beyond binary32's range: the radius stopped shrinking there; docs/numerics.md)\n",
-                scene_path, res.stats.hit_points_saturated);
-    if (rc == 1)
-        fprintf(stderr, "pree render: interrupted after %llu photons; writing what was made\n",
-                (unsigned long long)res.stats.photons_emitted);
-    if (res.stats.time_limited)
-        fprintf(stderr, "pree render: time limit of %g s reached after %llu photons; writing what was made\n",
-                opt.time_limit, (unsigned long long)res.stats.photons_emitted);
-    for (int k = 0; k < nout; k++) {
-        if (write_image(outs[k], scene_path, &opt, &res, err, sizeof err)) {
-            fprintf(stderr, "pree render: %s\n", err);
-            status = 1;
-        }
-    }
-    if (stats_path && stats_json_write(stats_path, scene_path, &opt, &res.stats, rc == 1, err, sizeof err)) {
-        fprintf(stderr, "pree render: %s\n", err);
+                "nothing written\n", j.scene_path, nonfinite, opt.precision == PRECISION_FP32 ? "binary32" : "double");
         status = 1;
+    } else {
+        warn_result(&j, &opt, &res.stats, rc);
+        status = write_outputs(&j, &opt, &res, rc) ? 1 : rc == 1 ? 130 : 0;
+        if (opt.progress)
+            fprintf(stderr, "pree render: %llu hit points, %llu photons, %llu candidates, %llu accepted, %.3f s\n",
+                    res.stats.hit_points, res.stats.photons_emitted, res.stats.upd.candidates,
+                    res.stats.upd.accepted, res.stats.sec_total);
     }
-    if (opt.progress)
-        fprintf(stderr, "pree render: %llu hit points, %llu photons, %llu candidates, %llu accepted, %.3f s\n",
-                res.stats.hit_points, res.stats.photons_emitted, res.stats.upd.candidates,
-                res.stats.upd.accepted, res.stats.sec_total);
     render_result_free(&res);
     scene_free(&scene);
     return status;

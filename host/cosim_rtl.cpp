@@ -1,62 +1,18 @@
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
-// Verilator's models are C++ classes; one template serves the 4-, 8- and 16-PREU models of both
-// datapaths and both pipeline configurations (PipeFast 0, 1: the f models). Each model's update
-// hazard window is its pree_top's public WIN_UPD.
+// Verilator's models are C++ classes; one template, clocked by the bench harness
+// (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header
+// (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath,
+// PipeFast) each: the one list of configurations. Each model's update hazard window is its
+// pree_top's public WIN_UPD.
 #include "cosim_rtl.h"
 
 #include <cstdio>
 #include <cstring>
-#include <memory>
 
-#include "verilated.h"
-#include "verilated_fst_c.h"
-#ifdef COSIM_HAVE_P4
-#include "Vpree_top_p4.h"
-#include "Vpree_top_p4_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_P8
-#include "Vpree_top_p8.h"
-#include "Vpree_top_p8_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_P16
-#include "Vpree_top_p16.h"
-#include "Vpree_top_p16_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S4
-#include "Vpree_top_s4.h"
-#include "Vpree_top_s4_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S8
-#include "Vpree_top_s8.h"
-#include "Vpree_top_s8_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S16
-#include "Vpree_top_s16.h"
-#include "Vpree_top_s16_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_P4F
-#include "Vpree_top_p4f.h"
-#include "Vpree_top_p4f_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_P8F
-#include "Vpree_top_p8f.h"
-#include "Vpree_top_p8f_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_P16F
-#include "Vpree_top_p16f.h"
-#include "Vpree_top_p16f_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S4F
-#include "Vpree_top_s4f.h"
-#include "Vpree_top_s4f_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S8F
-#include "Vpree_top_s8f.h"
-#include "Vpree_top_s8f_pree_top.h"
-#endif
-#ifdef COSIM_HAVE_S16F
-#include "Vpree_top_s16f.h"
-#include "Vpree_top_s16f_pree_top.h"
+#include "vharness.h"
+
+#ifndef COSIM_MODELS
+#error "COSIM_MODELS (the build's pree_top models) comes from mk/cosim.mk"
 #endif
 
 namespace {
@@ -117,7 +73,7 @@ struct cosim_rtl {
     virtual void hp_rdata(preu_hpw_t *hp, uint32_t *pixel) = 0;
     virtual void px_rdata(uint32_t L[3]) = 0;
     virtual void counters(uint64_t *cnt) = 0;
-    virtual int open_trace(const char *path) = 0;
+    virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
     virtual int update_window() = 0;
     virtual int ppc() = 0;
@@ -129,46 +85,23 @@ namespace {
 template <class V, int NP, int HPB, int PPC, int DP, int WIN>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
-    std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
-    std::unique_ptr<V> top;
-    std::unique_ptr<VerilatedFstC> tfp;
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
     // cycle, so a waveform viewer shows real times; cycle n's rising edge is at (8n + 4) ns.
     static constexpr uint64_t HALF_PERIOD_PS = 4000;
-    uint64_t time = 0;
+    VHarness<V> top;      // the model, its clock and its trace (fst: a file or NULL)
     cosim_in_t applied;   // the inputs last written to the model (only changes are copied)
 
-    Rtl()
+    explicit Rtl(const char *fst) : top(0, nullptr, fst, HALF_PERIOD_PS)
     {
-        // Tracing is compiled in; traceEverOn lets open_trace attach a trace later.
-        ctx->traceEverOn(true);
-        top.reset(new V{ctx.get()});
         std::memset(&in, 0, sizeof in);
         std::memset(&applied, 0xff, sizeof applied);
-        top->clk_i = 0;
-        top->rst_ni = 0;
         apply();
-        top->eval();
-        for (int i = 0; i < 2; i++) { top->clk_i = 1; top->eval(); top->clk_i = 0; top->eval(); }
-        top->rst_ni = 1;
-        top->eval();
+        top.reset(2);
     }
-    ~Rtl() override
-    {
-        if (tfp) tfp->close();
-        top->final();
-    }
-    int open_trace(const char *path) override
-    {
-        tfp.reset(new VerilatedFstC);
-        top->trace(tfp.get(), 99);
-        tfp->open(path);
-        if (!tfp->isOpen()) { tfp.reset(); return -1; }
-        return 0;
-    }
+    const char *trace_error() override { return top.trace_error(); }
     void apply()
     {
-        V &t = *top;
+        V &t = top.dut();
         t.mode_i = in.mode;
         t.cnt_en_i = in.cnt_en;
         t.rad_start_i = in.rad_start;
@@ -216,20 +149,11 @@ struct Rtl : cosim_rtl {
         if (in.px_we)
             for (int c = 0; c < 3; c++) put32(t.px_wdata_i, 32 * c, in.px_wdata[c]);
     }
-    // One cycle, traced or not, through Verilator's public interface only: clock low with the
-    // new inputs (evaluated, dumped), then the rising edge (evaluated, dumped). The clock stays
-    // high until the next tick, which is harmless (nothing in pree_top uses the falling edge).
+    // One cycle with the new inputs, traced or not (the harness evaluates once per edge).
     void tick() override
     {
         apply();
-        top->clk_i = 0;
-        top->eval();
-        if (tfp) tfp->dump(time);
-        time += HALF_PERIOD_PS;
-        top->clk_i = 1;
-        top->eval();
-        if (tfp) tfp->dump(time);
-        time += HALF_PERIOD_PS;
+        top.tick();
     }
     int hp_bank_w() override { return HPB; }
     int update_window() override { return WIN; }
@@ -268,59 +192,22 @@ struct Rtl : cosim_rtl {
 
 extern "C" {
 
-// One case per model built into this program: PREU count, pipeline configuration, datapath.
-#define COSIM_CASE(tag, np, pf, dp) \
-    case np * 4 + pf * 2 + dp: \
-        r = new Rtl<Vpree_top_##tag, np, COSIM_HPB_##np, COSIM_PPC_##np, dp, Vpree_top_##tag##_pree_top::WIN_UPD>; break;
-
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
     cosim_rtl_t *r = nullptr;
-    switch (preu * 4 + (pipefast != 0) * 2 + (datapath != 0)) {
-#ifdef COSIM_HAVE_P4
-    COSIM_CASE(p4, 4, 0, 0)
-#endif
-#ifdef COSIM_HAVE_P8
-    COSIM_CASE(p8, 8, 0, 0)
-#endif
-#ifdef COSIM_HAVE_P16
-    COSIM_CASE(p16, 16, 0, 0)
-#endif
-#ifdef COSIM_HAVE_S4
-    COSIM_CASE(s4, 4, 0, 1)
-#endif
-#ifdef COSIM_HAVE_S8
-    COSIM_CASE(s8, 8, 0, 1)
-#endif
-#ifdef COSIM_HAVE_S16
-    COSIM_CASE(s16, 16, 0, 1)
-#endif
-#ifdef COSIM_HAVE_P4F
-    COSIM_CASE(p4f, 4, 1, 0)
-#endif
-#ifdef COSIM_HAVE_P8F
-    COSIM_CASE(p8f, 8, 1, 0)
-#endif
-#ifdef COSIM_HAVE_P16F
-    COSIM_CASE(p16f, 16, 1, 0)
-#endif
-#ifdef COSIM_HAVE_S4F
-    COSIM_CASE(s4f, 4, 1, 1)
-#endif
-#ifdef COSIM_HAVE_S8F
-    COSIM_CASE(s8f, 8, 1, 1)
-#endif
-#ifdef COSIM_HAVE_S16F
-    COSIM_CASE(s16f, 16, 1, 1)
-#endif
-    default:
+#define X(V, NP, DP, PF) \
+    if (!r && preu == (NP) && (datapath != 0) == (DP) && (pipefast != 0) == (PF)) \
+        r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP, V##_pree_top::WIN_UPD>(fst);
+    COSIM_MODELS
+#undef X
+    if (!r) {
         std::snprintf(err, errlen, "no pree_top model with %d PREUs, the %s datapath and PipeFast %d in this build%s",
                       preu, datapath ? "stable" : "paper", pipefast != 0,
                       datapath || pipefast ? " (make COSIM_STABLE_PREUS=\"4 8 16\" COSIM_FAST_PREUS=\"4 8 16\" builds them all)" : "");
         return nullptr;
     }
-    if (fst && r->open_trace(fst)) {
-        std::snprintf(err, errlen, "%s: cannot open the FST trace", fst);
+    if (r->trace_error()) {
+        std::snprintf(err, errlen, "%s", r->trace_error());
         delete r;
         return nullptr;
     }

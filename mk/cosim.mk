@@ -71,7 +71,13 @@ HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/c
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
 COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mtag,$(m)))
-cosim_have   = -DCOSIM_HAVE_$(shell echo $(1) | tr a-z A-Z)
+# host/cosim_rtl.cpp with the models $(1) (N:d words): their headers (with the pree_top scope's,
+# which holds the public WIN_UPD), and COSIM_MODELS, the list the host instantiates its template
+# from, X(class, PREU count, datapath, PipeFast) each.
+cosim_cls    = Vpree_top_$(call cosim_mtag,$(1))
+cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) \
+                 -include $(call cosim_cls,$(m)).h -include $(call cosim_cls,$(m))_pree_top.h) \
+               '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(findstring s,$(call cosim_d,$(m))),1,0),$(if $(findstring f,$(call cosim_d,$(m))),1,0)))'
 
 TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS)
 SIM_TARGETS   += sim-top
@@ -99,11 +105,11 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench.
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call COSIM_MDIR,$(1),$(2)) $(call cosim_have,$(call cosim_tag,$(1),$(2))) -c $$< -o $$@
+	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
 $(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o \
                           $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
@@ -113,9 +119,7 @@ $(foreach p,4 8 16,$(foreach d,p s pf sf,$(if $(filter $(p):$(d),$(COSIM_MODELS)
 
 $(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_LIBS)
 	@mkdir -p $(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) \
-	  $(foreach m,$(COSIM_MODELS),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) $(call cosim_have,$(call cosim_mtag,$(m)))) \
-	  -c $< -o $@
+	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(COSIM_MODELS)) -c $< -o $@
 $(HOST_DIR)/%.o: host/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@

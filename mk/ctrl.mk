@@ -70,16 +70,16 @@ $(CTRL_DIR)/adiso_seq: $(CTRL_DIR)/adiso_seq.o $(CTRL_DIR)/adiso_model.o
 
 # Verilator benches, one binary per configuration (the parameters are compile-time).
 define CTRL_AFTSO_RULE
-$(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(CTRL_AFTSO_OBJ) $(CTRL_HDR)
+$(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(VHARNESS) $(CTRL_AFTSO_OBJ) $(CTRL_HDR)
 	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) -GPhotonsPerCycle=$(5) \
-	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model/pree)" \
+	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model/pree) $(VHARNESS_INC)" \
 	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
 	  $(abspath $(CTRL_AFTSO_OBJ)) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef
 define CTRL_ADISO_RULE
-$(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(CTRL_DIR)/adiso_model.o $(CTRL_HDR)
+$(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(VHARNESS) $(CTRL_DIR)/adiso_model.o $(CTRL_HDR)
 	$(CTRL_VERILATE) -GNumPreu=$(1) -GPipeDepth=12 \
-	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DPIPE_DEPTH=12 -I$(abspath tb/ctrl)" \
+	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DPIPE_DEPTH=12 -I$(abspath tb/ctrl) $(VHARNESS_INC)" \
 	  --Mdir $$(@D) -o adiso_bench $(ADISO_RTL) $(abspath tb/ctrl/adiso_bench.cpp) \
 	  $(abspath $(CTRL_DIR)/adiso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef

@@ -73,12 +73,12 @@ $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN
 # Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation, quick and
 # full runs. --x-assign/--x-initial unique: no reliance on X or initial values.
 define FP32_UNIT_RULES
-$(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
+$(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(VHARNESS) $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
 	  -Mdir $(FP32_DIR)/vl_$(1) --top-module $(call fp32_top,$(2)) -y rtl rtl/$(call fp32_top,$(2)).v \
 	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
-	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model)" \
+	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model) $(VHARNESS_INC)" \
 	  -o fp32_bench_$(1) > $(FP32_DIR)/vl_$(1).build.log 2>&1 \
 	  || { tail -30 $(FP32_DIR)/vl_$(1).build.log; exit 1; }
 

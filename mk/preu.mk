@@ -68,11 +68,11 @@ $(PREU_DIR)/preu_vec_bad.hex: $(PREU_DIR)/preu_vecgen
 # assertions on), the Icarus vectors and simulation, and the same Verilog bench under Verilator
 # --binary --timing (the two simulators must give the same verdict and cycle count).
 define PREU_DP_RULES
-$(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(PREU_HDRS) $(PREU_C_OBJ) | $(DEPS_STAMP)
+$(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(VHARNESS) $(PREU_HDRS) $(PREU_C_OBJ) | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
-	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) $(patsubst -I%,-I$(CURDIR)/%,$(MODEL_INC)) -I$(CURDIR)/tb/preu" \
+	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) $(patsubst -I%,-I$(CURDIR)/%,$(MODEL_INC)) -I$(CURDIR)/tb/preu $(VHARNESS_INC)" \
 	  $(PREU_SRCS) $(CURDIR)/tb/preu/preu_bench.cpp $(abspath $(PREU_C_OBJ)) >$(PREU_DIR)/vl-build-dp$(1).log 2>&1 \
 	  || { tail -30 $(PREU_DIR)/vl-build-dp$(1).log; exit 1; }
 

@@ -7,6 +7,8 @@
 # with the dynamic and static task schedules. CPU seconds (user + sys) throughout: the machine is
 # shared. Tables in OUTDIR/pm_*.txt, the plot in OUTDIR/pm_bias.png.
 # Usage: bench-pm.sh PREE OUTDIR [--quick]   (--quick: small sizes, for testing the script)
+# PM_SECTIONS="bias speedup threads" (the default) picks the parts to run; the speedup part
+# reads the bias part's references.
 set -euo pipefail
 pree=$1; out=$2; quick=${3:-}
 mkdir -p "$out"
@@ -17,7 +19,10 @@ js() { python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))
 for p in sys.argv[2].split("."): v=v[p]
 print(v)' "$1" "$2"; }
 
+sections=${PM_SECTIONS:-bias speedup threads}
+has() { [[ " $sections " == *" $1 "* ]]; }
 bias="$out/pm_bias.txt"
+if has bias; then
 printf '%-15s %-9s %10s %8s %9s %12s %10s\n' scene estimator photons k cpu_s rmse_linear peak_mib | tee "$bias"
 for scene in cornell3 cornell-teapot; do
   ref="$out/pm-ref-$scene-${W}x${H}-$refn"
@@ -43,10 +48,13 @@ for scene in cornell3 cornell-teapot; do
   done
 done
 
+fi
+
 # Search speedup, clustered against naive, one thread, search phase only (CPU seconds).
 speed="$out/pm_search_speedup.txt"
-printf '%-15s %6s %12s %12s %9s %10s\n' scene k naive_cpu_s clust_cpu_s speedup same_bits | tee "$speed"
 n=$((base << (2 * steps)))
+if has speedup; then
+printf '%-15s %6s %12s %12s %9s %10s\n' scene k naive_cpu_s clust_cpu_s speedup same_bits | tee "$speed"
 for scene in cornell3 cornell-teapot; do
   rmax=$(python3 -c "print(4 * $(js "$out/pm-ref-$scene-${W}x${H}-$refn.json" initial_radius))")
   for k in $ks; do
@@ -60,9 +68,14 @@ for scene in cornell3 cornell-teapot; do
   done
 done
 
+fi
+
 # Threads and task schedules (paper 001): tracing, search and whole frame; wall seconds (the only
-# measure of parallel speedup), medians of 3, with the CPU seconds beside them.
+# measure of parallel speedup), medians of 3, with the CPU seconds beside them; at a quarter of
+# the largest photon count.
 thr="$out/pm_threads.txt"
+n=$((base << (2 * steps - 2)))
+if has threads; then
 printf '%-9s %8s %7s %10s %10s %10s %10s\n' schedule task threads trace_s search_s total_s cpu_s | tee "$thr"
 for sched in dynamic static; do
   for task in 100 1000 10000; do
@@ -80,6 +93,9 @@ for sched in dynamic static; do
   done
 done
 
+fi
+
+has bias || exit 0
 for scene in cornell3 cornell-teapot; do
   awk -v s=$scene 'NR>1 && $1==s && $2=="ppm"{print $5, $6}' "$bias" > "$out/pm-$scene-ppm.dat"
   for k in $ks; do awk -v s=$scene -v k=$k 'NR>1 && $1==s && $4==k{print $5, $6}' "$bias" > "$out/pm-$scene-k$k.dat"; done

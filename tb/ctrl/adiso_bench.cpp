@@ -13,13 +13,12 @@
 //   --stall P   stall probability for every other pass (default 0.2)
 // Build defines: NUM_PREU, PIPE_DEPTH (must match the -G parameters). Exit 0 on pass.
 #include "Vpree_adiso_rec.h"
-#include "verilated.h"
+#include "vharness.h"
 
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <memory>
 #include <vector>
 
 extern "C" {
@@ -38,17 +37,14 @@ namespace {
 
 class Bench {
  public:
-  explicit Bench(VerilatedContext *ctx) : top_(new Vpree_adiso_rec{ctx}) {
+  Bench(int argc, char **argv) : top_(argc, argv) {
     adiso_init(&model_, NUM_PREU, PIPE_DEPTH);
-    top_->rst_ni = 0;
     top_->start_i = 0;
     top_->stall_i = 0;
     top_->n_hit_i = 0;
-    for (int i = 0; i < 3; i++) tick();
-    top_->rst_ni = 1;
-    top_->eval();
+    top_.reset(3);
   }
-  ~Bench() { top_->final(); }
+  const char *trace_error() const { return top_.trace_error(); }
 
   long errors = 0, checks = 0, cycles = 0, passes = 0, addresses = 0;
 
@@ -79,14 +75,8 @@ class Bench {
   }
 
  private:
-  std::unique_ptr<Vpree_adiso_rec> top_;
+  VHarness<Vpree_adiso_rec> top_;
   adiso_model model_;
-
-  void tick() {
-    top_->clk_i = 0; top_->eval();
-    top_->clk_i = 1; top_->eval();
-    top_->clk_i = 0; top_->eval();
-  }
 
   bool model_busy() {
     adiso_out o;
@@ -111,7 +101,7 @@ class Bench {
     top_->n_hit_i = n;
     top_->stall_i = 0;
     top_->eval();
-    tick();
+    top_.tick();
     adiso_step(&model_, 1, n, 0);
     top_->start_i = 0;
     top_->eval();
@@ -137,7 +127,7 @@ class Bench {
         }
       }
     }
-    tick();
+    top_.tick();
     adiso_step(&model_, 0, n, stall);
     cycles++;
   }
@@ -157,10 +147,8 @@ int main(int argc, char **argv) {
     else if (argv[i][0] == '+') continue;
     else { std::fprintf(stderr, "usage: %s [--nmax M] [--random K] [--seed S] [--stall P]\n", argv[0]); return 2; }
   }
-  // The context owns time and plusargs; the model is created on it.
-  auto ctx = std::make_unique<VerilatedContext>();
-  ctx->commandArgs(argc, argv);
-  Bench b(ctx.get());
+  Bench b(argc, argv);  // the harness takes the plusargs
+  if (b.trace_error()) { std::fprintf(stderr, "adiso_bench: %s\n", b.trace_error()); return 2; }
   uint64_t rng = seed;
 
   // Exhaustive small N, stalls on every other pass, an abort now and then.

@@ -14,14 +14,13 @@
 // parameters). With PPC > 1 the source offers up to PPC photons side by side (fewer when it has
 // fewer ready; the other slots N^P = 0). Exit 0 on pass.
 #include "Vpree_aftso_hpuoc.h"
-#include "verilated.h"
+#include "vharness.h"
 
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <memory>
 #include <vector>
 
 extern "C" {
@@ -79,8 +78,8 @@ struct Pending {
 
 class Bench {
  public:
-  explicit Bench(VerilatedContext *ctx) : top_(new Vpree_aftso_hpuoc{ctx}) {}
-  ~Bench() { top_->final(); }
+  Bench(int argc, char **argv) : top_(argc, argv) {}
+  const char *trace_error() const { return top_.trace_error(); }
 
   long errors = 0, checks = 0, cycles = 0, ops = 0;
 
@@ -88,13 +87,9 @@ class Bench {
   void reset() {
     aftso_init(&model_, NUM_PREU, kBuf, PPC, kWords, EARLY_READY);
     sb_.clear();
-    top_->rst_ni = 0;
     top_->in_valid_i = 0;
     top_->stall_i = 0;
-    for (int i = 0; i < 3; i++) { top_->clk_i = 0; top_->eval(); top_->clk_i = 1; top_->eval(); }
-    top_->clk_i = 0;
-    top_->rst_ni = 1;
-    top_->eval();
+    top_.reset(3);
   }
 
   // One cycle with the given input (np photons in slots 0..np-1, np <= PPC; np = 0: none) and
@@ -125,8 +120,7 @@ class Bench {
       if (in.ph[k].n) sb_.push_back(Pending{in.ph[k].id, in.ph[k].p_addr + in.ph[k].n - 1u, in.ph[k].n});
     if (!stall) scoreboard(scen);
 
-    top_->clk_i = 1; top_->eval();
-    top_->clk_i = 0; top_->eval();
+    top_.tick();
     aftso_step(&model_, &in, stall);
     cycles++;
     return accepted;
@@ -137,7 +131,7 @@ class Bench {
   int lanes_valid() const { return __builtin_popcount((unsigned)top_->lane_valid_o); }
 
  private:
-  std::unique_ptr<Vpree_aftso_hpuoc> top_;
+  VHarness<Vpree_aftso_hpuoc> top_;
   aftso_model model_;
   std::deque<Pending> sb_;
 
@@ -275,10 +269,8 @@ int main(int argc, char **argv) {
     else if (argv[i][0] == '+') continue;  // Verilator plusargs
     else { std::fprintf(stderr, "usage: %s [--seed S] [--scale K] [--np-file FILE]\n", argv[0]); return 2; }
   }
-  // The context owns time and plusargs; the model is created on it.
-  auto ctx = std::make_unique<VerilatedContext>();
-  ctx->commandArgs(argc, argv);
-  Bench b(ctx.get());
+  Bench b(argc, argv);  // the harness takes the plusargs
+  if (b.trace_error()) { std::fprintf(stderr, "aftso_bench: %s\n", b.trace_error()); return 2; }
 
   if (np_file) {
     std::vector<uint32_t> np = read_np(np_file);

@@ -17,11 +17,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
-#include <memory>
 #include <string>
 
-#include "verilated.h"
 #include "fp32_gen.h"
+#include "vharness.h"
 
 // Per unit: the model, the module name and the latency; then the hex digits of a and y in reports.
 #ifdef FP32_LATENCY
@@ -147,24 +146,18 @@ void drive(Dut &dut, const fp32_case_t &c)
 }
 
 // Clocked units: random valid gaps, handshake-keyed scoreboard, exact latency check.
-int run(Dut &dut, Source &src, Scoreboard &sb)
+int run(VHarness<Dut> &h, Source &src, Scoreboard &sb)
 {
+    Dut &dut = h.dut();
     std::deque<Pending> queue;
-    uint64_t cycle = 0;
     uint32_t density = 16;   // valid_i probability in 1/16 steps, changed every burst
 
-    auto tick = [&]() {
-        dut.clk_i = 0; dut.eval();
-        dut.clk_i = 1; dut.eval();
-        cycle++;
-    };
-
-    dut.rst_ni = 0; dut.valid_i = 0; dut.clk_i = 0;
-    for (int i = 0; i < 3; i++) tick();
-    dut.rst_ni = 1;
-    tick();
+    dut.valid_i = 0;
+    h.reset(3);
+    h.tick();
 
     while (!src.done() || !queue.empty()) {
+        const uint64_t cycle = h.cycles();
         if (cycle % 256 == 0) {
             static const uint32_t densities[] = { 16, 16, 15, 12, 8, 4, 1 };
             density = densities[fp32_rng_next(&src.rng) % 7];
@@ -180,10 +173,10 @@ int run(Dut &dut, Source &src, Scoreboard &sb)
             drive(dut, junk);
         }
         dut.valid_i = issue;
-        tick();
+        h.tick();
 
         // After this edge, an operation issued LATENCY cycles ago must be on the output.
-        bool due = !queue.empty() && queue.front().issue_cycle + LATENCY == cycle;
+        bool due = !queue.empty() && queue.front().issue_cycle + LATENCY == h.cycles();
         if (dut.valid_o && !due) {
             fp32_case_t none = {};
             sb.fail(none, dut.y_o, "valid_o without an operation due");
@@ -202,8 +195,9 @@ int run(Dut &dut, Source &src, Scoreboard &sb)
 }
 #else
 // The comparator is combinational: drive, settle, compare the four flags.
-int run(Dut &dut, Source &src, Scoreboard &sb)
+int run(VHarness<Dut> &h, Source &src, Scoreboard &sb)
 {
+    Dut &dut = h.dut();
     while (!src.done()) {
         fp32_case_t c = src.take();
         dut.a_i = c.a; dut.b_i = c.b;
@@ -223,16 +217,13 @@ int main(int argc, char **argv)
     uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 0) : 1;
     bool sweep = argc > 3 && std::string(argv[3]) == "sweep";
 
-    // One context per simulation; the model is owned by a smart pointer so that it is
-    // finalised on every return path.
-    const std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
-    ctx->commandArgs(argc, argv);
-    const std::unique_ptr<Dut> dut{new Dut{ctx.get()}};
+    // The harness owns the model and finalises it on every return path.
+    VHarness<Dut> h(argc, argv);
+    if (h.trace_error()) { std::fprintf(stderr, "fp32_bench: %s\n", h.trace_error()); return 2; }
 
     Source src(count, seed, sweep);
     Scoreboard sb;
-    int protocol_error = run(*dut, src, sb);
-    dut->final();
+    int protocol_error = run(h, src, sb);
 
     std::printf("%s (latency %d): %zu directed + %zu sweep + %" PRIu64 " random "
                 "(seed %" PRIu64 "): %" PRIu64 " checked, %" PRIu64 " mismatches%s\n",

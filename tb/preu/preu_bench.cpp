@@ -23,13 +23,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <memory>
 #include <vector>
 
-#include "verilated.h"
-#include "verilated_fst_c.h"
 #include "Vpree_preu.h"
 #include "Vpree_preu_pree_preu.h"   // the PREU's public latencies
+#include "vharness.h"
 #include "preu_vec.h"
 
 namespace {
@@ -78,9 +76,10 @@ template <std::size_t N> bool eq(const VlWide<N> &port, const uint32_t *w)
 
 // One hit point at distance 0 from every photon (all accepted), constant flux, state written
 // back after each result: the RTL must equal the model word for word at every step.
-int chain(Vpree_preu *dut, uint64_t n, double alpha)
+int chain(VHarness<Vpree_preu> &h, uint64_t n, double alpha)
 {
-    auto tick = [dut]() { dut->clk_i = 1; dut->eval(); dut->clk_i = 0; dut->eval(); };
+    Vpree_preu *const dut = &h.dut();
+    auto tick = [&h]() { h.tick(); };
     const uint32_t a32 = preu_f32(alpha), k32 = preu_kappa(a32);
     preu_hpw_t hw;
     std::memset(&hw, 0, sizeof hw);
@@ -141,12 +140,11 @@ int main(int argc, char **argv)
         const uint64_t n = std::strtoull(argv[2], nullptr, 0);
         const double alpha = argc >= 4 ? std::atof(argv[3]) : 0.7;
         if (n < 1 || !(alpha > 0 && alpha <= 1)) { std::fprintf(stderr, "preu_bench: bad --chain arguments\n"); return 2; }
-        const std::unique_ptr<VerilatedContext> cctx{new VerilatedContext};
-        const std::unique_ptr<Vpree_preu> d{new Vpree_preu{cctx.get()}};
-        d->clk_i = 0; d->rst_ni = 0; d->valid_i = 0; d->eval();
-        for (int i = 0; i < 2; i++) { d->clk_i = 1; d->eval(); d->clk_i = 0; d->eval(); }
-        d->rst_ni = 1; d->eval();
-        return chain(d.get(), n, alpha);
+        VHarness<Vpree_preu> h(argc, argv);
+        if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
+        h->valid_i = 0;
+        h.reset(2);
+        return chain(h, n, alpha);
     }
     std::vector<const char *> pos;
     for (int i = 1; i < argc; i++) if (argv[i][0] != '+') pos.push_back(argv[i]);
@@ -154,39 +152,18 @@ int main(int argc, char **argv)
     uint64_t seed = pos.size() > 1 ? std::strtoull(pos[1], nullptr, 0) : 1;
     if (count < 1) { std::fprintf(stderr, "preu_bench: count must be >= 1\n"); return 2; }
 
-    // The context holds simulation time and the command-line plusargs for the model.
-    const std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
-    ctx->commandArgs(argc, argv);
-    // Tracing is compiled in but off unless +trace=FILE is given; it must be enabled before
-    // the model is built.
-    const char *trace_arg = ctx->commandArgsPlusMatch("trace=");
-    const bool tracing = trace_arg && trace_arg[0];
-    if (tracing) ctx->traceEverOn(true);
-    const std::unique_ptr<Vpree_preu> dut{new Vpree_preu{ctx.get()}};
-    std::unique_ptr<VerilatedFstC> tfp;
-    if (tracing) {
-        tfp.reset(new VerilatedFstC);
-        dut->trace(tfp.get(), 99);
-        tfp->open(trace_arg + std::strlen("+trace="));
-    }
-    uint64_t t = 0;
-    // One half clock period: drive clk, evaluate, dump the trace.
-    auto edge = [&](int clk) {
-        dut->clk_i = clk;
-        dut->eval();
-        if (tfp) tfp->dump(t);
-        t += 5;
-    };
+    // The harness holds the plusargs for the model; tracing is compiled in but off unless
+    // +trace=FILE is given.
+    VHarness<Vpree_preu> h(argc, argv);
+    if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
+    Vpree_preu *const dut = &h.dut();
 
     std::vector<preu_vec_t> seq(count);
     preu_seq_gen(seq.data(), count, seed, DP);
 
     // Reset: two cycles with rst_ni low, inputs idle.
-    dut->clk_i = 0; dut->rst_ni = 0; dut->valid_i = 0; dut->mode_i = 0;
-    dut->eval();
-    for (int i = 0; i < 2; i++) { edge(1); edge(0); }
-    dut->rst_ni = 1;
-    dut->eval();
+    dut->valid_i = 0; dut->mode_i = 0;
+    h.reset(2);
 
     std::deque<Pending> results, lreqs;
     uint32_t junk_state = 12345;
@@ -292,12 +269,9 @@ int main(int argc, char **argv)
             results.pop_front();
         }
 
-        edge(1);
-        edge(0);
+        h.tick();
         cycle++;
     }
-    dut->final();
-    if (tfp) tfp->close();
 
     bool ok = errors == 0 && checked == (uint64_t)count && results.empty();
     std::printf("preu_bench: %s datapath, seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "

@@ -1,0 +1,121 @@
+// vharness.h: the one Verilator harness of every bench (tb/) and of the co-simulation host
+// (host/cosim_rtl.cpp), in the shape of ZipCPU's testb.h. It owns the context, the model, the
+// optional FST trace and the cycle counter. tick() is one clock cycle evaluated once per edge
+// through Verilator's public API only: clk_i low, eval, dump; clk_i high, eval, dump. A traced
+// run does exactly the evaluations of an untraced one, plus the dumps (tests/checks/vharness_trace.sh).
+// C++ and header-only because Verilated models are C++ classes of the bench's choosing.
+//
+//   VHarness<Vtop> h(argc, argv);   plusargs for the model; +trace=FILE opens an FST trace
+//   VHarness<Vtop> h(0, 0, path, hp);  a trace into path (NULL: none), hp time units per edge
+//   h.trace_error()                 NULL, or "FILE: why the requested trace is not written"
+//   h->port = v; h.eval();          settle new inputs without an edge (read combinational outputs)
+//   h.tick();                       one cycle; h.cycles() counts them (reset cycles included)
+//   h.reset(n);                     rst_ni low for n cycles, then high and settled; these
+//                                   cycles are neither dumped nor timed, so the trace starts at
+//                                   time 0 with the first cycle after reset
+// The clock rests high between ticks. Every module here uses the rising edge only (and
+// asynchronous active-low resets), so inputs changed between ticks are sampled at the next
+// rising edge, whichever edge the bench's previous clocking rested on. The trace's time advances
+// half_period units per edge (default 1; the context's time, which $time in the RTL reads).
+#ifndef PREE_VHARNESS_H
+#define PREE_VHARNESS_H
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+#include "verilated.h"
+#if VM_TRACE_FST
+#include "verilated_fst_c.h"
+#endif
+
+template <class V>
+class VHarness {
+ public:
+    explicit VHarness(int argc = 0, char **argv = nullptr, const char *trace = nullptr, uint64_t half_period = 1)
+        : ctx_(new VerilatedContext), half_period_(half_period)
+    {
+        if (argc > 0) ctx_->commandArgs(argc, argv);
+        if (!trace && argc > 0) {
+            const char *m = ctx_->commandArgsPlusMatch("trace=");
+            if (m && m[0]) trace = m + 7;   // past "+trace="
+        }
+        if (trace) ctx_->traceEverOn(true);   // must precede the model's construction
+        top_.reset(new V{ctx_.get()});
+        if (trace) open_trace(trace);
+    }
+    ~VHarness()
+    {
+#if VM_TRACE_FST
+        if (tfp_) tfp_->close();
+#endif
+        top_->final();
+    }
+    VHarness(const VHarness &) = delete;
+    VHarness &operator=(const VHarness &) = delete;
+
+    V *operator->() { return top_.get(); }
+    const V *operator->() const { return top_.get(); }
+    V &dut() { return *top_; }
+    const char *trace_error() const { return trace_error_.empty() ? nullptr : trace_error_.c_str(); }
+    uint64_t cycles() const { return cycles_; }
+
+    void eval() { top_->eval(); }
+
+    void tick()
+    {
+        top_->clk_i = 0;
+        top_->eval();
+        dump();
+        top_->clk_i = 1;
+        top_->eval();
+        dump();
+        cycles_++;
+    }
+
+    void reset(int n)
+    {
+        top_->rst_ni = 0;
+        in_reset_ = true;
+        for (int i = 0; i < n; i++) tick();
+        in_reset_ = false;
+        top_->rst_ni = 1;
+        top_->eval();
+    }
+
+ private:
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<V> top_;
+    uint64_t half_period_;
+    uint64_t cycles_ = 0;
+    bool in_reset_ = false;
+    std::string trace_error_;
+#if VM_TRACE_FST
+    std::unique_ptr<VerilatedFstC> tfp_;
+
+    void open_trace(const char *path)
+    {
+        tfp_.reset(new VerilatedFstC);
+        top_->trace(tfp_.get(), 99);
+        tfp_->open(path);
+        if (!tfp_->isOpen()) {
+            tfp_.reset();
+            trace_error_ = std::string(path) + ": cannot open the FST trace";
+        }
+    }
+    void dump()
+    {
+        if (in_reset_) return;
+        if (tfp_) tfp_->dump(ctx_->time());
+        ctx_->timeInc(half_period_);
+    }
+#else
+    void open_trace(const char *path) { trace_error_ = std::string(path) + ": this model is built without --trace-fst"; }
+    void dump()
+    {
+        if (!in_reset_) ctx_->timeInc(half_period_);
+    }
+#endif
+};
+
+#endif
