@@ -82,11 +82,51 @@ static double refine(const double *d2, size_t n, int l, size_t k, double b2)
     return hi;
 }
 
+/* One pass over a scope of radius rs + far (rs <= r0): the neighbours of every member within r0
+ * among the scope's photons. Returns 0, or -1 when out of memory; *exact is set when every
+ * member's result is certain: the scope holds every photon within rs + far - d_l of member l,
+ * so a result is certain when rs = r0, or when k were found and the k-th lies within that. */
+static int scope_pass(const kdtree_t *t, const photon_map_t *map, const lanes_t *L, const double c[3], double far,
+                      const double *d, int m, double rs, double r0, size_t k, double cos_min, knn_scratch_t *s,
+                      knn_cand_t *out, size_t *counts, knn_cluster_stats_t *st, int *exact)
+{
+    const double R0 = rs + far;
+    s->scope_n = 0;
+    if (kdtree_range(t, c, R0, &s->scope, &s->scope_n, &s->scope_cap) == (size_t)-1) return -1;
+    const size_t n = s->scope_n;
+    if (grow_array((void **)&s->d2, &s->d2_cap, n * KNN_LANES + 1, sizeof *s->d2)) return -1;
+    if (__builtin_cpu_supports("avx2")) matrix_avx2(t, map, L, cos_min, s->scope, n, s->d2);
+    else matrix_portable(t, map, L, cos_min, s->scope, n, s->d2);
+    const double Kc = (R0 / rs) * (R0 / rs) * (double)k;
+    const int sparse = (double)n < Kc;
+    st->sparse += (unsigned long long)sparse;
+    st->scope_photons += n;
+    st->distance_tests += (unsigned long long)n * (unsigned long long)m;
+    *exact = 1;
+    for (int l = 0; l < m; l++) {
+        /* The exact selection among the candidates below hi: the k nearest and the few others
+         * of the k-th's histogram range (every candidate in a sparse scope). */
+        const double hi = sparse ? INFINITY : refine(s->d2, n, l, k, L->b2[l]);
+        size_t nc = 0;
+        if (grow_array((void **)&s->cand, &s->cand_cap, n + 1, sizeof *s->cand)) return -1;
+        for (size_t j = 0; j < n; j++) {
+            double v = s->d2[j * KNN_LANES + l];
+            if (v < hi) s->cand[nc++] = (knn_cand_t){v, t->index[s->scope[j]]};
+        }
+        size_t got = knn_select(s->cand, nc, k);
+        memcpy(out + (size_t)l * k, s->cand, got * sizeof *s->cand);
+        counts[l] = got;
+        const double g = R0 - d[l];
+        if (rs < r0 && !(got == k && s->cand[k - 1].d2 <= g * g)) *exact = 0;
+    }
+    return 0;
+}
+
 int knn_cluster(const kdtree_t *t, const photon_map_t *map, const hitpoints_t *h, const uint32_t *members,
                 int m, double r0, size_t k, double cos_min, knn_scratch_t *s, knn_cand_t *out, size_t *counts,
                 double *bound2, knn_cluster_stats_t *st)
 {
-    double c[3] = {0, 0, 0}, far = 0;
+    double c[3] = {0, 0, 0}, d[KNN_LANES], far = 0;
     lanes_t L;
     for (int l = 0; l < KNN_LANES; l++) {
         const hp_hot_t *p = &h->hot[members[l < m ? l : 0]];
@@ -97,42 +137,28 @@ int knn_cluster(const kdtree_t *t, const photon_map_t *map, const hitpoints_t *h
     for (int a = 0; a < 3; a++) c[a] /= m;
     for (int l = 0; l < m; l++) {
         double dx = L.px[l] - c[0], dy = L.py[l] - c[1], dz = L.pz[l] - c[2];
-        far = fmax(far, sqrt(dx * dx + dy * dy + dz * dz));
+        d[l] = sqrt(dx * dx + dy * dy + dz * dz);
+        far = fmax(far, d[l]);
     }
-    /* The scope holds every photon within R0 - d_l >= r0 of member l; the search stops at r0
-     * (the naive search's bound), so both searches find the same neighbours. */
-    const double R0 = r0 + far;
+    /* Every member's search stops at r0 (the naive search's bound), so both searches find the
+     * same neighbours. The scope's radius starts from the thread's guess of the k-th distance
+     * (the last cluster's, with a margin) and falls back to r0 + far when a result is not
+     * certain: the guess changes the work, never the result. */
     for (int l = 0; l < KNN_LANES; l++) {
         L.b2[l] = l < m ? r0 * r0 : -1;        /* unused lanes accept nothing */
         if (l < m) bound2[l] = L.b2[l];
     }
-    s->scope_n = 0;
-    if (kdtree_range(t, c, R0, &s->scope, &s->scope_n, &s->scope_cap) == (size_t)-1) return -1;
-    const size_t n = s->scope_n;
-    if (grow_array((void **)&s->d2, &s->d2_cap, n * KNN_LANES + 1, sizeof *s->d2)) return -1;
-    if (__builtin_cpu_supports("avx2")) matrix_avx2(t, map, &L, cos_min, s->scope, n, s->d2);
-    else matrix_portable(t, map, &L, cos_min, s->scope, n, s->d2);
-    const double Kc = (R0 / r0) * (R0 / r0) * (double)k;
-    const int sparse = (double)n < Kc;
     st->clusters++;
-    st->sparse += (unsigned long long)sparse;
-    st->scope_photons += n;
-    st->distance_tests += (unsigned long long)n * (unsigned long long)m;
-
-    for (int l = 0; l < m; l++) {
-        /* The exact selection among the candidates below hi: the k nearest and the few others
-         * of the k-th's histogram range (every candidate in a sparse scope). */
-        const double hi = sparse ? INFINITY : refine(s->d2, n, l, k, L.b2[l]);
-        size_t nc = 0;
-        if (grow_array((void **)&s->cand, &s->cand_cap, n + 1, sizeof *s->cand)) return -1;
-        for (size_t j = 0; j < n; j++) {
-            double v = s->d2[j * KNN_LANES + l];
-            if (v < hi) s->cand[nc++] = (knn_cand_t){v, t->index[s->scope[j]]};
-        }
-        size_t got = knn_select(s->cand, nc, k);
-        memcpy(out + (size_t)l * k, s->cand, got * sizeof *s->cand);
-        counts[l] = got;
+    double rs = s->guess > 0 && s->guess < r0 ? s->guess : r0;
+    int exact;
+    if (scope_pass(t, map, &L, c, far, d, m, rs, r0, k, cos_min, s, out, counts, st, &exact)) return -1;
+    if (!exact) {
+        st->widened++;
+        if (scope_pass(t, map, &L, c, far, d, m, r0, r0, k, cos_min, s, out, counts, st, &exact)) return -1;
     }
+    double kth = 0;
+    for (int l = 0; l < m; l++) kth = counts[l] == k ? fmax(kth, sqrt(out[(size_t)l * k + k - 1].d2)) : r0;
+    s->guess = 1.25 * kth;
     return 0;
 }
 

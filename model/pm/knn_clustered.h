@@ -11,6 +11,9 @@
  *    [0, b_i^2] in KNN_BINS ranges; the range holding the k-th photon is split again, at most
  *    KNN_ITERS times; then an exact selection inside it. Sparse scope (the paper's hybrid): the
  *    exact selection directly, within r_i = b_i = r0 + distance - d_i.
+ * The scope's r0 above starts as a guess of the k-th distance (the thread's last cluster's, with a
+ * margin); when a member's k-th neighbour is not certain inside the guessed scope, the cluster
+ * is searched again with the full r0 + distance. The guess changes the work, never the result.
  * Either way the result is the k nearest within b_i in (d2, photon) order: the same set as the
  * naive search's within r0 wherever member i has k photons within r0. */
 #ifndef PREE_KNN_CLUSTERED_H
@@ -34,10 +37,13 @@ typedef struct {
     size_t d2_cap;
     knn_cand_t *cand;    /* one member's candidates */
     size_t cand_cap;
+    double guess;        /* the scope radius to try first: the last cluster's k-th distance, with a
+                          * margin (0: r0) */
 } knn_scratch_t;
 
 typedef struct {
     unsigned long long clusters, sparse, scope_photons, distance_tests;
+    unsigned long long widened;   /* clusters whose guessed scope left a result uncertain */
 } knn_cluster_stats_t;
 
 /* The members' neighbours: for member j (0..m), out + j * k holds counts[j] of them, in

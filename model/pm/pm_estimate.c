@@ -78,11 +78,11 @@ static int search_clustered(const hitpoints_t *h, const photon_map_t *map, const
     if (kdtree_build(&tree, map->p[0].x, sizeof *map->p / sizeof(double), map->n)) { clusters_free(&cl); return -1; }
     int failed = 0;
     unsigned long long found = 0, short_k = 0;
-    knn_cluster_stats_t total = {0, 0, 0, 0};
+    knn_cluster_stats_t total = {0, 0, 0, 0, 0};
 #pragma omp parallel num_threads(o->threads) reduction(| : failed) reduction(+ : found, short_k)
     {
         knn_scratch_t s = {0};
-        knn_cluster_stats_t cs = {0, 0, 0, 0};
+        knn_cluster_stats_t cs = {0, 0, 0, 0, 0};
         knn_cand_t *out = malloc(KNN_LANES * o->k * sizeof *out);
         size_t counts[KNN_LANES];
         double b2[KNN_LANES];
@@ -108,6 +108,7 @@ static int search_clustered(const hitpoints_t *h, const photon_map_t *map, const
             total.sparse += cs.sparse;
             total.scope_photons += cs.scope_photons;
             total.distance_tests += cs.distance_tests;
+            total.widened += cs.widened;
         }
         knn_scratch_free(&s);
         free(out);
@@ -118,6 +119,7 @@ static int search_clustered(const hitpoints_t *h, const photon_map_t *map, const
     st->clusters_sparse = total.sparse;
     st->scope_photons = total.scope_photons;
     st->distance_tests = total.distance_tests;
+    st->clusters_widened = total.widened;
     st->neighbours = found;
     st->short_of_k = short_k;
     return failed ? -1 : 0;

@@ -8,6 +8,7 @@ typedef struct {
     double max_radius;                   /* r0 */
     unsigned long long clusters;         /* clustered search: clusters of <= 16 shading points */
     unsigned long long clusters_sparse;  /* ... whose scope held fewer than K_c photons (hybrid) */
+    unsigned long long clusters_widened; /* ... searched again with the full scope (guess too small) */
     unsigned long long scope_photons;    /* photons in the clusters' scopes, summed */
     unsigned long long distance_tests;   /* photon-to-shading-point distances computed */
     unsigned long long neighbours;       /* neighbours found, summed over hit points */

@@ -29,7 +29,7 @@ static const json_field_t seconds[] = {
 #define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
 static const json_field_t pm_fields[] = {
     P(photons_stored, JF_U64), P(k, JF_U64), P(max_radius, JF_REAL), P(clusters, JF_U64),
-    P(clusters_sparse, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
+    P(clusters_sparse, JF_U64), P(clusters_widened, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
     P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_cluster, JF_REAL),
     P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
 };

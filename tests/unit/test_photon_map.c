@@ -127,20 +127,21 @@ static hitpoints_t make_points(size_t n, double spread, uint32_t objects)
 }
 
 /* Returns the search's counters: how many clusters took the sparse (hybrid) path. */
-static knn_cluster_stats_t check_knn(const photon_map_t *m, size_t k, double r0)
+static knn_cluster_stats_t check_knn_guess(const photon_map_t *m, size_t k, double r0, double guess)
 {
     kdtree_t t;
     assert_int_equal(kdtree_build(&t, m->n ? m->p[0].x : (const double[3]){0, 0, 0}, sizeof *m->p / sizeof(double), m->n), 0);
     knn_naive_t *nv = knn_naive_new(m);
     assert_non_null(nv);
     knn_scratch_t s = {0};
-    knn_cluster_stats_t st = {0, 0, 0, 0};
+    knn_cluster_stats_t st = {0, 0, 0, 0, 0};
     knn_cand_t *out = malloc(KNN_LANES * k * sizeof *out), *want = malloc(k * sizeof *want), *nav = malloc(k * sizeof *nav);
     for (int rep = 0; rep < 20; rep++) {
         hitpoints_t h = make_points(KNN_LANES, 0.2, 1);
         uint32_t members[KNN_LANES];
         for (int j = 0; j < KNN_LANES; j++) members[j] = (uint32_t)j;
         const int mcount = 1 + rep % KNN_LANES;
+        if (guess > 0) s.guess = guess;   /* a scope guess far too small: the full scope must follow */
         size_t counts[KNN_LANES];
         double b2[KNN_LANES];
         assert_int_equal(knn_cluster(&t, m, &h, members, mcount, r0, k, UPDATE_NORMAL_COS, &s, out, counts, b2, &st), 0);
@@ -168,6 +169,11 @@ static knn_cluster_stats_t check_knn(const photon_map_t *m, size_t k, double r0)
     return st;
 }
 
+static knn_cluster_stats_t check_knn(const photon_map_t *m, size_t k, double r0)
+{
+    return check_knn_guess(m, k, r0, 0);
+}
+
 static void test_knn_random(void **state)
 {
     (void)state;
@@ -177,8 +183,11 @@ static void test_knn_random(void **state)
     knn_cluster_stats_t b = check_knn(&m, 8, 0.3);     /* dense: the histogram refines */
     knn_cluster_stats_t c = check_knn(&m, 400, 0.05);  /* sparse: the hybrid path */
     assert_true(b.sparse < b.clusters);
+    knn_cluster_stats_t g = check_knn_guess(&m, 8, 0.3, 1e-3);
+    assert_true(g.widened == g.clusters);
     assert_true(c.sparse > 0);
     assert_true(a.clusters == 20 && b.clusters == 20 && c.clusters == 20);
+    (void)a;
     free(m.p);
 }
 
