@@ -2,8 +2,9 @@
  *
  * `pree cosim` is a program of its own (host/, built with the Verilated RTL only when asked):
  * one per RTL configuration, build/pree-cosim-p4 .. -p16 (paper datapath) and -s4 .. -s16
- * (stable). `pree cosim ...` runs the one its --preu and --datapath name, from the directory
- * this program lives in, with the same arguments. */
+ * (stable), with an f after the count for PipeFast = 1 (-p4f). `pree cosim ...` runs the one its
+ * --preu, --datapath and --pipe-fast name, from the directory this program lives in, with the
+ * same arguments. */
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -30,12 +31,13 @@ static const command_t commands[] = {
  * clocked) any co-simulation program that is built will do when that one is not. */
 static int run_cosim(int argc, char **argv)
 {
-    const char *preu = "4", *dp = "paper";
+    const char *preu = "4", *dp = "paper", *fast = "";
     int model_only = 0, axi = 0;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--")) break;
         if (!strcmp(argv[i], "--model-only")) model_only = 1;
         if (!strcmp(argv[i], "--axi")) axi = 1;
+        else if (!strcmp(argv[i], "--pipe-fast")) fast = "f";
         else if (!strncmp(argv[i], "--preu=", 7)) preu = argv[i] + 7;
         else if (!strncmp(argv[i], "--datapath=", 11)) dp = argv[i] + 11;
         else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
@@ -49,7 +51,7 @@ static int run_cosim(int argc, char **argv)
     self[n] = '\0';
     char *slash = strrchr(self, '/');
     if (slash) *slash = '\0';
-    snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s", self, axi ? "axi-" : "", d, preu);
+    snprintf(path, sizeof path, "%s/pree-cosim-%s%c%s%s", self, axi ? "axi-" : "", d, preu, fast);
     execv(path, argv);
     for (const char *const *o = (const char *const[]){"p4", "p8", "p16", "s4", NULL}; model_only && *o; o++) {
         char alt[PATH_MAX + 32];

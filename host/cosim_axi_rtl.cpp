@@ -129,11 +129,11 @@ struct cosim_rtl {
 
 extern "C" {
 
-cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen)
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
-    if (preu != AXI_NP || (datapath != 0) != (AXI_DP != 0)) {
-        std::snprintf(err, errlen, "this program holds pree_axi with %d PREUs and the %s datapath, not %d and %s",
-                      AXI_NP, AXI_DP ? "stable" : "paper", preu, datapath ? "stable" : "paper");
+    if (preu != AXI_NP || (datapath != 0) != (AXI_DP != 0) || pipefast) {
+        std::snprintf(err, errlen, "this program holds pree_axi with %d PREUs, the %s datapath and PipeFast 0, not %d, %s and %d",
+                      AXI_NP, AXI_DP ? "stable" : "paper", preu, datapath ? "stable" : "paper", pipefast != 0);
         return nullptr;
     }
     cosim_rtl_t *r = new cosim_rtl;
@@ -154,6 +154,8 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, s
 void cosim_rtl_free(cosim_rtl_t *r) { delete r; }
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
+// pree_axi's pree_top runs with PipeFast 0: 1 + the PREU's update latency (10 paper, 12 stable).
+int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
 // The wrapper drives pree_top's photon port one photon a cycle (PhotonsPerCycle 1); --model-only
 // is for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }

@@ -55,6 +55,7 @@ typedef struct {
     int model_only;    /* 1: the scheduler and its cycle model only, no RTL (rtl = NULL;
                           needs schedule; the counters are the model's prediction) */
     int ppc;           /* with model_only: the top's PhotonsPerCycle (else the RTL's) */
+    int win;           /* with model_only: its update hazard window (else the RTL's) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

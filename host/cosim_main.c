@@ -16,6 +16,7 @@
 #include "compare.h"
 #include "cosim_drv.h"
 #include "cosim_report.h"
+#include "cosim_shadow.h"
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
@@ -53,6 +54,7 @@ static void cosim_usage(FILE *f)
         "                         (--threads: the eye pass and the double reference render)\n"
         "  --preu P               PREUs in the RTL: 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
+        "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
         "  --out IMAGE            the RTL image (.png, .ppm or .exr)\n"
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
@@ -134,7 +136,7 @@ static void to_float(const double *rgb, size_t n, float *out)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI };
+       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -148,6 +150,7 @@ static const struct option cosim_longopts[] = {
     {"stats", required_argument, NULL, OPT_STATS},
     {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
     {"axi", no_argument, NULL, OPT_AXI},
+    {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
     {NULL, 0, NULL, 0}
 };
 
@@ -156,7 +159,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0, pipefast = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -179,6 +182,7 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_STATS: stats_path = a.val; break;
         case OPT_MODEL_ONLY: model_only = 1; break;
         case OPT_AXI: axi = 1; break;
+        case OPT_PIPE_FAST: pipefast = 1; break;
         }
     }
     if (!(scene_path = cli_scene(&a))) return 2;
@@ -196,21 +200,26 @@ int pree_cmd_cosim(int argc, char **argv)
     const int dp = opt.datapath == DATAPATH_STABLE;
     /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
     const uint32_t alpha = preu_f32(render_alpha(&opt));
-    int hp_bank_w = 0, ppc = 0;
+    int hp_bank_w = 0, ppc = 0, win = cosim_update_window(dp, pipefast);
     cosim_rtl_t *rtl = NULL;
     if (model_only) {          /* no RTL: the configuration the build would have */
         if (cosim_rtl_config(opt.preu, &hp_bank_w, &ppc)) { scene_free(&scene); return cli_error(&a, "no pree_top configuration with %d PREUs", opt.preu); }
     } else {
-        rtl = cosim_rtl_new(opt.preu, dp, trace_path, err, sizeof err);
+        rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
         if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
         cosim_rtl_in(rtl)->alpha = alpha;
         cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
         hp_bank_w = cosim_rtl_hp_bank_w(rtl);
         ppc = cosim_rtl_ppc(rtl);
+        if (cosim_rtl_update_window(rtl) != win) {   /* the --model-only table against the RTL */
+            fprintf(stderr, "pree cosim: the RTL's update window is %d cycles, the host's table says %d\n",
+                    cosim_rtl_update_window(rtl), win);
+            cosim_rtl_free(rtl); scene_free(&scene); return 1;
+        }
     }
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = reorder,
                               .schedule = schedule, .window = window, .gap = gap, .seed = 1,
-                              .model_only = model_only, .ppc = ppc};
+                              .model_only = model_only, .ppc = ppc, .win = win};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
@@ -328,7 +337,7 @@ int pree_cmd_cosim(int argc, char **argv)
 figures:;
     cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
                           .preu = opt.preu, .ppc = ppc, .model_only = model_only, .axi = axi,
-                          .reorder = reorder, .window = window,
+                          .reorder = reorder, .window = window, .pipe_fast = pipefast, .update_window = win,
                           .photons_emitted = res.stats.photons_emitted,
                           .alpha = (double)fp32_from_bits(alpha), .gap = gap,
                           .hit_points = res.hp.n, .photons_sent = ctx.photons_sent, .photons_empty = ctx.photons_empty,

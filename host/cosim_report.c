@@ -35,7 +35,8 @@ static json_t *by_cause(const uint64_t *cnt, const uint64_t *base)
 
 static const json_field_t run_fields[] = {
     R(width, JF_INT, "width"), R(height, JF_INT, "height"), R(photons_emitted, JF_U64, "photons_emitted"),
-    R(alpha, JF_REAL, "alpha"), R(preu, JF_INT, "preu"), R(ppc, JF_INT, "photons_per_cycle"),
+    R(alpha, JF_REAL, "alpha"), R(pipe_fast, JF_INT, "pipe_fast"), R(update_window, JF_INT, "update_window"),
+    R(preu, JF_INT, "preu"), R(ppc, JF_INT, "photons_per_cycle"),
     R(model_only, JF_BOOL, "model_only"), R(axi, JF_BOOL, "axi"), R(reorder, JF_BOOL, "reorder"),
     R(gap, JF_REAL, "input_gap"), R(hit_points, JF_U64, "hit_points"),
 };

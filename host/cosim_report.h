@@ -15,6 +15,7 @@ typedef struct {
     /* What was run. */
     const char *scene;
     int width, height, datapath, preu, axi, reorder, window;
+    int pipe_fast, update_window;   /* the RTL's PipeFast and its update hazard window */
     int ppc;                        /* the RTL's PhotonsPerCycle */
     int model_only;                 /* 1: the counters are the scheduler's cycle model's, no
                                        RTL ran and nothing was compared (pass is false) */

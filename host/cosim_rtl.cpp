@@ -1,8 +1,9 @@
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
 // Verilator's models are C++ classes; one template, clocked by the bench harness
 // (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header
-// (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath) each:
-// the one list of configurations.
+// (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath,
+// PipeFast) each: the one list of configurations. Each model's update hazard window is its
+// pree_top's public WIN_UPD.
 #include "cosim_rtl.h"
 
 #include <cstdio>
@@ -74,13 +75,14 @@ struct cosim_rtl {
     virtual void counters(uint64_t *cnt) = 0;
     virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
+    virtual int update_window() = 0;
     virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int PPC, int DP>
+template <class V, int NP, int HPB, int PPC, int DP, int WIN>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
@@ -154,6 +156,7 @@ struct Rtl : cosim_rtl {
         top.tick();
     }
     int hp_bank_w() override { return HPB; }
+    int update_window() override { return WIN; }
     int ppc() override { return PPC; }
     void set_reset(int on) override
     {
@@ -189,17 +192,18 @@ struct Rtl : cosim_rtl {
 
 extern "C" {
 
-cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen)
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
     cosim_rtl_t *r = nullptr;
-#define X(V, NP, DP) \
-    if (!r && preu == (NP) && (datapath != 0) == (DP)) r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP>(fst);
+#define X(V, NP, DP, PF) \
+    if (!r && preu == (NP) && (datapath != 0) == (DP) && (pipefast != 0) == (PF)) \
+        r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP, V##_pree_top::WIN_UPD>(fst);
     COSIM_MODELS
 #undef X
     if (!r) {
-        std::snprintf(err, errlen, "no pree_top model with %d PREUs and the %s datapath in this build%s", preu,
-                      datapath ? "stable" : "paper",
-                      datapath ? " (make COSIM_STABLE_PREUS=\"4 8 16\" builds them all)" : "");
+        std::snprintf(err, errlen, "no pree_top model with %d PREUs, the %s datapath and PipeFast %d in this build%s",
+                      preu, datapath ? "stable" : "paper", pipefast != 0,
+                      datapath || pipefast ? " (make COSIM_STABLE_PREUS=\"4 8 16\" COSIM_FAST_PREUS=\"4 8 16\" builds them all)" : "");
         return nullptr;
     }
     if (r->trace_error()) {
@@ -220,6 +224,7 @@ void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel) { r->hp
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
+int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
 int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)

@@ -1,9 +1,10 @@
 /* cosim_rtl.h: a C interface to the Verilated pree_top (rtl/pree_top.v), one model per PREU
- * count (4, 8, 16) and datapath (0 paper, 1 stable), built by mk/cosim.mk with the parameters
- * below (the stable datapath's models only for the counts in COSIM_STABLE_PREUS).
+ * count (4, 8, 16), datapath (0 paper, 1 stable) and PipeFast (0, 1), built by mk/cosim.mk with
+ * the parameters below (the stable datapath's models only for the counts in
+ * COSIM_STABLE_PREUS, the PipeFast = 1 models only for those in COSIM_FAST_PREUS).
  *
  * API
- *   cosim_rtl_new(preu, dp, fst, err)  a model in reset state after two reset cycles; fst: FST
+ *   cosim_rtl_new(preu, dp, pf, fst, err)  a model in reset state after two reset cycles; fst: FST
  *                                  trace file or NULL (no tracing). NULL + err when that model
  *                                  is not built or the trace cannot be opened.
  *   cosim_rtl_free(r)              close the trace, release the model
@@ -12,6 +13,8 @@
  *   cosim_rtl_ph_ready/idle/photons_done, cosim_rtl_hp_rdata, cosim_rtl_px_rdata,
  *   cosim_rtl_counters             read outputs (after eval or tick)
  *   cosim_rtl_hp_bank_w            the model's HpBankW parameter
+ *   cosim_rtl_update_window        its update hazard window (pree_top's WIN_UPD: 1 + the PREU's
+ *                                  update latency, which follows from Datapath and PipeFast)
  *   cosim_rtl_ppc                  the model's PhotonsPerCycle parameter (photon slots of ph_*)
  *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
  *                                  preu PREUs, whether or not that model is linked (-1: no such
@@ -60,7 +63,7 @@ typedef struct {
 
 typedef struct cosim_rtl cosim_rtl_t;
 
-cosim_rtl_t *cosim_rtl_new(int preu, int datapath, const char *fst, char *err, size_t errlen);
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen);
 void cosim_rtl_free(cosim_rtl_t *r);
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r);
 void cosim_rtl_tick(cosim_rtl_t *r);
@@ -71,6 +74,7 @@ void cosim_rtl_hp_rdata(cosim_rtl_t *r, preu_hpw_t *hp, uint32_t *pixel);
 void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
+int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cycles */
 int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on);

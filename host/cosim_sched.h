@@ -13,8 +13,9 @@
  * PhotonsPerCycle, each chosen behind the ones already chosen for that cycle), the scheduler
  * predicts where the operations of a candidate photon would issue (behind the operations
  * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
- * hit point issued or predicted within the last win (11 or 13) cycles), hit-point bank clashes within an
- * issue cycle and lanes left empty (starvation). The photon's candidates are ordered greedily
+ * hit point issued or predicted within the last win cycles: 11 or 13, 46 or 49 with PipeFast 1),
+ * hit-point bank clashes within an issue cycle and lanes left empty (starvation). The photon's
+ * candidates are ordered greedily
  * against the same costs (ties: the candidate whose bank more of the photon's candidates share
  * goes first). The oldest eligible photon with no cost is taken, else the cheapest of the first
  * few eligible ones. A cycle's group holds at most GROUP_OPS candidates (half the index table), so
@@ -42,7 +43,7 @@
 
 typedef struct {
     int preu, hp_bank_w;
-    int win;           /* the top's update hazard window (cosim_update_window) */
+    int win;           /* the top's update hazard window (cosim_rtl_update_window) */
     int reorder;       /* 1: order each photon's candidates too */
     int window;        /* pending photons held (>= 1) */
     int ppc;           /* the top's PhotonsPerCycle (1 .. COSIM_MAX_PPC) */

@@ -9,6 +9,7 @@
 
 cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc)
 {
+    if (win < 1 || win > SHADOW_WIN_MAX) return NULL;   /* the in-flight rows are a fixed array */
     cosim_shadow_t *s = calloc(1, sizeof *s);
     if (!s) return NULL;
     s->inf_cnt = calloc(1u << COSIM_HPAW, 1);

@@ -1,16 +1,17 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
  * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
- * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win (11 or 13)
- * cycles, same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
+ * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
+ * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
  *   cosim_shadow_new(preu, hp_bank_w, win, ppc)  a model in reset state (NULL when out of
- *                              memory); win: the update hazard window (cosim_update_window);
- *                              ppc: pree_top's PhotonsPerCycle
+ *                              memory or win > SHADOW_WIN_MAX); win: the update hazard window
+ *                              (cosim_rtl_update_window, or cosim_update_window without a
+ *                              model); ppc: pree_top's PhotonsPerCycle
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
@@ -31,7 +32,7 @@
 #include "cosim_rtl.h"
 #include "hp_bank.h"
 
-#define SHADOW_WIN_MAX 13 /* update hazard window, cycles (WIN_UPD): 11 paper, 13 stable */
+#define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 46 / 49 */
 
 typedef struct {
     int preu, hp_bank_w;
@@ -60,8 +61,13 @@ typedef struct {
 } cosim_shadow_t;
 
 cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc);
-/* The update hazard window of pree_top for a datapath (0 paper, 1 stable). */
-static inline int cosim_update_window(int datapath) { return datapath ? 13 : 11; }
+/* The update hazard window of pree_top (its WIN_UPD) for a datapath (0 paper, 1 stable) and
+ * PipeFast, for runs without a Verilated model (--model-only); a run with one takes the model's
+ * (cosim_rtl_update_window) and checks it against this. */
+static inline int cosim_update_window(int datapath, int pipe_fast)
+{
+    return pipe_fast ? (datapath ? 49 : 46) : (datapath ? 13 : 11);
+}
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n);

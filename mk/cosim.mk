@@ -12,14 +12,17 @@
 #                      opens on the first photon with markers on the first hazard stall and bank
 #                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
-#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16
+#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16, both datapaths, PipeFast 0 and 1,
+#                      PhotonsPerCycle 1 and NumPreu / 4
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
 #
-# `pree cosim` runs build/pree-cosim-<d><n> (d: p paper, s stable; n PREUs), one program per
-# Verilated model, each built only when asked (make build/pree-cosim-s8); build/pree itself
-# needs no Verilator. The regression uses the paper datapath with NumPreu 4, 8, 16
-# (COSIM_PREUS) and the stable one with COSIM_STABLE_PREUS (default 4); the top bench links
-# those models.
+# `pree cosim` runs build/pree-cosim-<d><n>[f] (d: p paper, s stable; n PREUs; f: PipeFast = 1,
+# `--pipe-fast`), one program per Verilated model, each built only when asked (make
+# build/pree-cosim-s8, build/pree-cosim-p4f); build/pree itself needs no Verilator. The regression
+# uses the paper datapath with NumPreu 4, 8, 16 (COSIM_PREUS) and the stable one with
+# COSIM_STABLE_PREUS (default 4); the PipeFast = 1 models of both datapaths for the counts in
+# COSIM_FAST_PREUS (default none: their reference image needs the radiance order of their
+# ADISO-REC depth, docs/fpga.md) are built when asked; the top bench links those models.
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
@@ -27,6 +30,7 @@ COSIM_DIR    := $(BUILD)/cosim
 COSIM_PREUS  := 4 8 16
 COSIM_RTL    := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
                 rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
+COSIM_INCS   := rtl/pree_preu_plan.vh
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 # Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels
 # 2^(log2 NumPreu + 2). The model directory names carry them (and a version of the bank hash),
@@ -44,15 +48,20 @@ COSIM_PPC_4 := 1
 COSIM_PPC_8 := 2
 COSIM_PPC_16 := 4
 COSIM_STABLE_PREUS ?= 4
-# $(1): PREU count, $(2): p (paper) or s (stable).
-COSIM_MDIR    = $(COSIM_DIR)/vl2_$(2)$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
+COSIM_FAST_PREUS ?=
+# $(1): PREU count, $(2): p (paper) or s (stable), with f for PipeFast = 1 (pf, sf); the model's
+# tag (p4, s4, p4f, ...) names its directory, its class and its program.
+cosim_tag     = $(subst f,,$(2))$(1)$(findstring f,$(2))
+COSIM_MDIR    = $(COSIM_DIR)/vl2_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
 COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
                 -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GPhotonsPerCycle=$(COSIM_PPC_$(1)) \
-                -GDatapath=$(if $(filter s,$(2)),1,0)
-COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PREUS),$(p):s)
+                -GDatapath=$(if $(findstring s,$(2)),1,0) -GPipeFast=$(if $(findstring f,$(2)),1,0)
+COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PREUS),$(p):s) \
+                $(foreach p,$(COSIM_FAST_PREUS),$(p):pf $(p):sf)
 cosim_n = $(word 1,$(subst :, ,$(1)))
 cosim_d = $(word 2,$(subst :, ,$(1)))
-COSIM_LIBS   := $(foreach m,$(COSIM_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_d,$(m))$(call cosim_n,$(m))__ALL.a)
+cosim_mtag = $(call cosim_tag,$(call cosim_n,$(1)),$(call cosim_d,$(1)))
+COSIM_LIBS   := $(foreach m,$(COSIM_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)
 COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
@@ -61,13 +70,14 @@ HOST_DIR     := $(BUILD)/host
 HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
-COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_d,$(m))$(call cosim_n,$(m)))
-# host/cosim_rtl.cpp with the models $(1) (N:d words): their headers, and COSIM_MODELS, the list
-# the host instantiates its template from, X(class, PREU count, datapath) each.
-cosim_cls    = Vpree_top_$(call cosim_d,$(1))$(call cosim_n,$(1))
+COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mtag,$(m)))
+# host/cosim_rtl.cpp with the models $(1) (N:d words): their headers (with the pree_top scope's,
+# which holds the public WIN_UPD), and COSIM_MODELS, the list the host instantiates its template
+# from, X(class, PREU count, datapath, PipeFast) each.
+cosim_cls    = Vpree_top_$(call cosim_mtag,$(1))
 cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) \
-                 -include $(call cosim_cls,$(m)).h) \
-               '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(filter s,$(call cosim_d,$(m))),1,0)))'
+                 -include $(call cosim_cls,$(m)).h -include $(call cosim_cls,$(m))_pree_top.h) \
+               '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(findstring s,$(call cosim_d,$(m))),1,0),$(if $(findstring f,$(call cosim_d,$(m))),1,0)))'
 
 TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS)
 SIM_TARGETS   += sim-top
@@ -78,10 +88,10 @@ SYNTH_TARGETS += synth-top
 
 # One Verilated model per PREU count and datapath.
 define COSIM_VL_RULE
-$(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a: $(COSIM_RTL) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a: $(COSIM_RTL) $(COSIM_INCS) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
-	  -Irtl --top-module pree_top --prefix Vpree_top_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
+	  -Irtl --top-module pree_top --prefix Vpree_top_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
 	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  $(COSIM_RTL) >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 endef
@@ -97,15 +107,15 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 # the regression for the top bench.
 COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
 define COSIM_PROG_RULE
-$(HOST_DIR)/cosim_rtl_$(2)$(1).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a
+$(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
 	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
-$(BUILD)/pree-cosim-$(2)$(1): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(2)$(1).o \
-                          $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(2)$(1)__ALL.a $(COSIM_VLIB)
+$(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o \
+                          $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach p,4 8 16,$(foreach d,p s,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
-$(foreach p,4 8 16,$(foreach d,p s,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
+$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
+$(foreach p,4 8 16,$(foreach d,p s pf sf,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
 
 $(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_LIBS)
 	@mkdir -p $(@D)
@@ -176,10 +186,10 @@ wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
 
 lint-top: | $(DEPS_STAMP)
-	@set -e; for d in 0 1; do for p in $(COSIM_PREUS); do \
-	  for w in 1 $$((p / 4)); do \
-	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPhotonsPerCycle=$$w $(COSIM_RTL)"; \
-	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPhotonsPerCycle=$$w $(COSIM_RTL); done; done; done
+	@set -e; for f in 0 1; do for d in 0 1; do for p in $(COSIM_PREUS); do \
+	  ws=1; if [ $$p -gt 4 ]; then ws="1 $$((p / 4))"; fi; for w in $$ws; do \
+	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL)"; \
+	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL); done; done; done; done
 
 synth-top: | $(DEPS_STAMP)
 	@mkdir -p $(COSIM_DIR)

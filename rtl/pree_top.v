@@ -33,9 +33,12 @@
 // Datapath (parameter): 0 the paper's PREU datapath, state {n, r2, tau} (160 bits); 1 the stable
 // one, state {k, w, T} (320 bits): docs/preu_datapath.md. alpha_i (paper) and kappa_i (stable,
 // (1 - alpha) / alpha) are run-time constants in binary32; change them only while idle_o is high.
-// Hazard windows (cycles after issue in which the same key must not issue again): update 11
-// paper / 13 stable (issue, C, the PREU's update stages, write at the end of the last);
-// radiance 3 (pixel read 9 cycles after issue, write 12 cycles after issue). Consequence: per hit point, updates happen in
+// Hazard windows (cycles after issue in which the same key must not issue again), from the
+// PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update latency (issue, C, the PREU's
+// update stages, write at the end of the last): 11 paper / 13 stable with PipeFast 0, 46 / 49
+// with PipeFast 1; radiance AddStages + 1 (pixel read RAD_LAT - AddStages - 1 cycles after
+// issue, written RAD_LAT after): 3 with PipeFast 0 (9 and 12), 8 with PipeFast 1 (51 and 59).
+// ADISO-REC's pipeline depth is the PREU's radiance latency (12, or 59). Consequence: per hit point, updates happen in
 // photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
 // first), which model/pree/adiso_order.c reproduces.
 //
@@ -68,6 +71,10 @@ module pree_top #(
   parameter CntW    = 16,   // bits of a photon's candidate count N^P
   parameter Datapath = 0,   // PREU datapath: 0 paper, 1 stable
   parameter CtrW    = 48,   // bits of each performance counter (cnt_o)
+  parameter PipeFast = 0,   // PREU units: 0 the paper's, 1 the deep plans (docs/fpga.md)
+  // The PREU units' stages, passed on (pree_preu; 0: the unit's default); the windows follow.
+  parameter AddStages  = 0,
+  parameter MulStages  = 0, SqrStages = 0, DivStages = 0, U2fStages = 0, WaccStages = 0,
   parameter PhotonsPerCycle = 1, // photons AFTSO-HpUOC takes per cycle (1 .. 8; 1 = the paper)
   parameter StateW  = (Datapath != 0) ? 320 : 160  // do not override: set by Datapath
 ) (
@@ -111,6 +118,8 @@ module pree_top #(
   output wire [(7+NumPreu)*CtrW-1:0] cnt_o
 );
 
+`include "pree_preu_plan.vh"
+
   localparam LANE_W    = $clog2(NumPreu);
   localparam HP_BANKS  = 1 << HpBankW;
   localparam HP_ROW_W  = HpAW - HpBankW;
@@ -123,8 +132,18 @@ module pree_top #(
   localparam AADDR_W   = IdxAW > HpAW ? IdxAW : HpAW;         // stage-A address
   localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
   localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
-  localparam WIN_UPD   = (Datapath != 0) ? 13 : 11;           // 1 + the PREU's update latency
-  localparam WIN_RAD   = 3;
+  // The PREU's latencies (rtl/pree_preu_plan.vh) and the hazard windows they set (public to the
+  // co-simulation host): update, issue + C + the update stages (11 paper / 13 stable with
+  // PipeFast 0); radiance, from the pixel read (lreq, RAD_LAT - AddStages - 1 after issue) to
+  // its write (RAD_LAT after issue): AddStages + 1 (3 with PipeFast 0).
+  localparam ST_ADD    = preu_stages(0, PipeFast, AddStages);
+  localparam ST_MUL    = preu_stages(1, PipeFast, MulStages);
+  localparam ST_DIV    = preu_stages(3, PipeFast, DivStages);
+  localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, preu_stages(2, PipeFast, SqrStages),
+                           ST_DIV, preu_stages(4, PipeFast, U2fStages), preu_stages(5, PipeFast, WaccStages));
+  localparam RAD_LAT   = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
+  localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
+  localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
   localparam [CtrW-1:0] CNT_ONE = 1;
   localparam NCNT      = 7 + NumPreu;
   localparam PH_W      = 192;
@@ -187,7 +206,7 @@ module pree_top #(
   wire [NumPreu*HpAW-1:0]  ad_addr;
   wire                     ad_busy;
 
-  pree_adiso_rec #(.NumPreu(NumPreu), .PipeDepth(12), .AddrW(HpAW)) u_adiso (
+  pree_adiso_rec #(.NumPreu(NumPreu), .PipeDepth(RAD_LAT), .AddrW(HpAW)) u_adiso (
     .clk_i(clk_i), .rst_ni(rst_ni), .start_i(rad_start_i), .n_hit_i(n_hit_i),
     .stall_i(~mode_i | ~a_all), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
 
@@ -456,7 +475,9 @@ module pree_top #(
       end
       assign p_valid[gl] = mode_i ? b_iss[gl] : c_v_q[gl];
 
-      pree_preu #(.TagW(KEY_W), .Datapath(Datapath)) u_preu (
+      pree_preu #(.TagW(KEY_W), .Datapath(Datapath), .PipeFast(PipeFast), .AddStages(AddStages),
+                  .MulStages(MulStages), .SqrStages(SqrStages), .DivStages(DivStages),
+                  .U2fStages(U2fStages), .WaccStages(WaccStages)) u_preu (
         .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .valid_i(p_valid[gl]), .tag_i(tag),
         .hp_pos_i(hc[0 +: 96]), .hp_f_i(hc[96 +: 96]), .hp_state_i(hs),
         .ph_pos_i(c_data_q[gl*PH_W +: 96]), .ph_phi_i(c_data_q[gl*PH_W + 96 +: 96]),

@@ -3,7 +3,7 @@
  * (--datapath 0) or model/pree/preu_stable.h (--datapath 1) applied in photon order; the expected pixels from the same model in the radiance issue order
  * of model/pree/adiso_order.h. Compares every word and prints the first mismatches.
  *
- * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--alpha A] [--scenario random|one|dense|mixed|abank]
+ * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--pipe-fast] [--alpha A] [--scenario random|one|dense|mixed|abank]
  *                  [--photons N] [--hp N] [--gap P] [--stall P] [--no-reorder] [--seed S] [--trace FILE.fst]
  *                  [--reset-at K] [--hold-reset] [--wait-limit N]
  *   random  photons with 1..40 random distinct candidates among --hp hit points
@@ -24,6 +24,7 @@
  * and every counter must equal a run without the reset. --hold-reset holds rst_ni low while the
  * photons stream: the driver's bounded wait (--wait-limit cycles) must fail, naming its state
  * (exit status 3 when it does, 1 when it does not).
+ * --pipe-fast: the PipeFast = 1 model (the deep PREU pipeline; its hazard windows follow from it).
  * Exit status 0 when every word matches, 1 on a mismatch, 2 on a usage error. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -172,7 +173,7 @@ static cosim_drv_t *reset_and_reload(cosim_rtl_t *rtl, cosim_drv_t *drv, const c
 
 int main(int argc, char **argv)
 {
-    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, reset_at = -1, hold_reset = 0;
+    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, pf = 0, reset_at = -1, hold_reset = 0;
     double gap = 0, stall = 0, alpha = 0.7;
     uint64_t wait_limit = 0;
     const char *scenario = "random", *trace = NULL;
@@ -180,6 +181,7 @@ int main(int argc, char **argv)
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(o, "--no-reorder")) { reorder = 0; continue; }
+        if (!strcmp(o, "--pipe-fast")) { pf = 1; continue; }
         if (!strcmp(o, "--hold-reset")) { hold_reset = 1; continue; }
         if (!v) { fprintf(stderr, "top_bench: %s needs a value\n", o); return 2; }
         i++;
@@ -207,7 +209,7 @@ int main(int argc, char **argv)
     if (abank && (stall > 0 || reset_at >= 0 || hold_reset)) { fprintf(stderr, "top_bench: abank takes no faults but --gap\n"); return 2; }
 
     char err[256];
-    cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, trace, err, sizeof err);
+    cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, pf, trace, err, sizeof err);
     if (!rtl) { fprintf(stderr, "top_bench: %s\n", err); return 2; }
     const uint32_t alpha32 = preu_f32(alpha), kappa32 = preu_kappa(alpha32);
     cosim_rtl_in(rtl)->alpha = alpha32;
@@ -348,10 +350,10 @@ int main(int argc, char **argv)
                (unsigned long long)cnt[CNT_ABANK]);
         bad++;
     }
-    printf("top_bench preu=%d datapath=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
+    printf("top_bench preu=%d datapath=%d pipe_fast=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
            "(util %.4f; short cycles haz %llu dup %llu bank %llu abank %llu starve %llu), radiance %llu ops / %llu cycles "
            "(haz %llu dup %llu bank %llu abank %llu starve %llu): %s\n",
-           preu, dp, scenario, photons, nhp, gap, reorder, (unsigned long long)ops, (unsigned long long)cnt[CNT_CYC_UPD],
+           preu, dp, pf, scenario, photons, nhp, gap, reorder, (unsigned long long)ops, (unsigned long long)cnt[CNT_CYC_UPD],
            cnt[CNT_CYC_UPD] ? (double)ops / (double)(preu * cnt[CNT_CYC_UPD]) : 0.0,
            (unsigned long long)cnt[CNT_HAZ], (unsigned long long)cnt[CNT_DUP], (unsigned long long)cnt[CNT_BANK],
            (unsigned long long)cnt[CNT_ABANK], (unsigned long long)cnt[CNT_STARVE],

@@ -15,8 +15,8 @@
 // operation's pixel sum on l_i in the next cycle, and drives random junk on every input that
 // is not meant to be read (so stale data cannot hide). Scoreboard keyed on the handshake:
 // an expected result is pushed when valid_i is high and popped at valid_o, which must come
-// exactly UPD_LAT (paper 10, stable 12; update) or 12 (radiance) cycles later with the same tag; lreq_o must come in
-// the operation's S10 with its tag. Update results are compared whether accepted or not.
+// exactly UPD_LAT or RAD_LAT cycles later with the same tag (the PREU's public latencies: paper
+// 10 / stable 12 and 12 with PipeFast 0); lreq_o must come LREQ_AT cycles after entry with its tag. Update results are compared whether accepted or not.
 // Prints the first 20 mismatches with their inputs in hex; exit status 1 on any failure.
 #include <cinttypes>
 #include <cstdio>
@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "Vpree_preu.h"
+#include "Vpree_preu_pree_preu.h"   // the PREU's public latencies
 #include "vharness.h"
 #include "preu_vec.h"
 
@@ -34,7 +35,10 @@ namespace {
 const int MAX_REPORT = 20;
 const int DP = PREU_DATAPATH;
 const int NST = DP ? 10 : 5;              // state words
-const uint64_t UPD_LAT = DP ? 12 : 10;
+// The latencies follow from the PREU's stage plan (its units' latencies, PipeFast).
+const uint64_t UPD_LAT = Vpree_preu_pree_preu::UPD_LATENCY;
+const uint64_t RAD_LAT = Vpree_preu_pree_preu::RAD_LATENCY;
+const uint64_t LREQ_AT = Vpree_preu_pree_preu::LREQ_STAGE;
 
 struct Pending {
     uint32_t index;
@@ -100,7 +104,7 @@ int chain(VHarness<Vpree_preu> &h, uint64_t n, double alpha)
         dut->valid_i = 1; dut->tag_i = (uint32_t)i;
         tick(); cycles++;
         dut->valid_i = 0;
-        while (!dut->valid_o && cycles < 20 * n + 100) { tick(); cycles++; }
+        while (!dut->valid_o && cycles < (UPD_LAT + 20) * n + 100) { tick(); cycles++; }
         const int acc = DP ? preu_stable_update(&sp, &ph, k32) : preu_update(&hp, &ph, a32);
         preu_hpw_t want;
         if (DP) preu_hpw_from_stable(&want, &sp); else preu_hpw_from_paper(&want, &hp);
@@ -168,7 +172,7 @@ int main(int argc, char **argv)
     bool l_due = false;            // lreq_o was high last cycle: drive that op's L now
     uint32_t l_index = 0, ne_cur = 0, alpha_cur = 0, kappa_cur = 0;
     uint64_t cycle = 0, issued = 0, checked = 0, accepted = 0, switches = 0, idle = 0;
-    const uint64_t max_cycles = (uint64_t)count * 40 + 1000;
+    const uint64_t max_cycles = (uint64_t)count * (40 + RAD_LAT) + 1000;
 
     while ((next < count || !results.empty()) && cycle < max_cycles) {
         // Inputs for this cycle: junk first, then whatever is meant to be read.
@@ -205,8 +209,8 @@ int main(int argc, char **argv)
             put(dut->hp_pos_i, v.hp.pos); put(dut->hp_f_i, v.hp.f);
             put(dut->hp_state_i, v.hp.st);
             put(dut->ph_pos_i, v.ph.pos); put(dut->ph_phi_i, v.ph.phi);
-            results.push_back({(uint32_t)next, cycle + (mode ? 12u : UPD_LAT)});
-            if (mode) lreqs.push_back({(uint32_t)next, cycle + 9u});
+            results.push_back({(uint32_t)next, cycle + (mode ? RAD_LAT : UPD_LAT)});
+            if (mode) lreqs.push_back({(uint32_t)next, cycle + LREQ_AT});
             issued++;
             next++;
             if (next < count) gap_left = seq[next].gap;

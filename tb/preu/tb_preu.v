@@ -5,8 +5,8 @@
 // computed by model/pree/preu_fp32.c (Datapath 0) or model/pree/preu_stable.c (Datapath 1). The bench plays them in order as a top would: it leaves `gap`
 // idle cycles before each, switches mode_i only when the pipeline is empty, answers lreq_o with
 // the operation's pixel sum on l_i in the next cycle, and drives junk on unread inputs. Every
-// result is checked against its vector by tag, with its latency (update 10 paper / 12 stable,
-// radiance 12);
+// result is checked against its vector by tag, with the PREU's own latency (dut.UPD_LATENCY,
+// dut.RAD_LATENCY: paper 10 / stable 12 and 12 with PipeFast 0);
 // the first 20 mismatches are printed; any failure ends in $fatal (run as `vvp -N`).
 // With BadSwitch = 1 it breaks the mode-switch rule on purpose: pree_preu's PREE_ASSERT check
 // must then stop the run (mk/preu.mk: sim-preu-badswitch expects that failure).
@@ -18,9 +18,9 @@ module tb_preu;
   parameter VecFile = "preu_vec.hex";
   parameter BadSwitch = 0;   // 1: switch modes without waiting for the drain (the RTL must stop)
   parameter Datapath  = 0;   // 0 paper, 1 stable
+  parameter PipeFast  = 0;   // 0 the paper's units, 1 the deep plans (the latencies follow)
   localparam W   = 44;
   localparam SW  = (Datapath != 0) ? 320 : 160;   // state bits
-  localparam UPD = (Datapath != 0) ? 12 : 10;     // update latency
   // Word offsets in a vector (tb/preu/preu_vec.c preu_vec_words).
   localparam O_POS = 2, O_F = 5, O_ST = 8, O_PPOS = 18, O_PHI = 21, O_NE = 24, O_L = 25;
   localparam O_ALPHA = 28, O_KAPPA = 29, O_ACC = 30, O_STO = 31, O_LO = 41;
@@ -41,7 +41,7 @@ module tb_preu;
   wire [95:0] l_out;
   wire [SW-1:0] state_out;
 
-  pree_preu #(.TagW(32), .Datapath(Datapath)) dut (
+  pree_preu #(.TagW(32), .Datapath(Datapath), .PipeFast(PipeFast)) dut (
     .clk_i(clk), .rst_ni(rst_n), .mode_i(mode), .valid_i(valid), .tag_i(tag),
     .hp_pos_i(hp_pos), .hp_f_i(hp_f), .hp_state_i(hp_state),
     .ph_pos_i(ph_pos), .ph_phi_i(ph_phi), .alpha_i(alpha), .kappa_i(kappa), .ne_i(ne),
@@ -120,7 +120,7 @@ module tb_preu;
       else begin
         if (tag_out != expect_next)
           fail("result out of order (tag)", expect_next);
-        else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? 12 : UPD))
+        else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? dut.RAD_LATENCY : dut.UPD_LATENCY))
           fail("wrong latency", expect_next);
         else if (vec[b] == 0 && (accept !== vec[b+O_ACC][0] || state_out !== wst(b+O_STO)))
           fail("update result", expect_next);
@@ -160,7 +160,7 @@ module tb_preu;
       end
     end
     cycle = cycle + 1;
-    if (checked == NOps || cycle > NOps * 40 + 1000) begin
+    if (checked == NOps || cycle > NOps * (40 + dut.RAD_LATENCY) + 1000) begin
       $display("tb_preu: %0d operations checked (%0d update accepted), %0d mode switches, %0d cycles, %0d mismatches: %0s",
                checked, accepted, switches, cycle, errors, (errors == 0 && checked == NOps) ? "PASS" : "FAIL");
       if (errors != 0 || checked != NOps) $fatal(1, "tb_preu: FAIL");

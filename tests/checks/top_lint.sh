@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
-# verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16, both datapaths.
+# verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16, both datapaths:
+# the paper's configuration (PipeFast 0, PhotonsPerCycle 1) and the deep, wide one (PipeFast 1,
+# PhotonsPerCycle NumPreu / 4, as the co-simulation builds).
 # (Full level: it also lints the PREU and fp32 units as instantiated under the top.)
 set -u
 cd "$(dirname "$0")/../.."
@@ -7,8 +9,10 @@ srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_re
 fail=0
 for d in 0 1; do
   for p in 4 8 16; do
-    cmd="verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$p -GDatapath=$d $srcs"
-    if ! $cmd; then echo "FAIL: $cmd"; fail=1; fi
+    for g in "-GPipeFast=0 -GPhotonsPerCycle=1" "-GPipeFast=1 -GPhotonsPerCycle=$((p / 4))"; do
+      cmd="verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$p -GDatapath=$d $g $srcs"
+      if ! $cmd; then echo "FAIL: $cmd"; fail=1; fi
+    done
   done
 done
 exit $fail
