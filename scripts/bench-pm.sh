@@ -95,7 +95,7 @@ done
 
 fi
 
-has bias || exit 0
+[ -s "$bias" ] || exit 0   # the plot, from this run's or an earlier run's bias table
 for scene in cornell3 cornell-teapot; do
   awk -v s=$scene 'NR>1 && $1==s && $2=="ppm"{print $5, $6}' "$bias" > "$out/pm-$scene-ppm.dat"
   for k in $ks; do awk -v s=$scene -v k=$k 'NR>1 && $1==s && $4==k{print $5, $6}' "$bias" > "$out/pm-$scene-k$k.dat"; done
