@@ -63,7 +63,7 @@ TOPIV_SED_noaconf := s/a_conf\[l\] = 1'b1;/a_conf[l] = 1'b0;/
 TOPIV_RUN_noaconf := p4_abank
 TOPIV_SED_nobconf := s/b_bcf\[l\] = 1'b1;/b_bcf[l] = 1'b0;/
 TOPIV_RUN_nobconf := p4_random
-TOPIV_SED_winrad  := s/WIN_RAD   = 3;/WIN_RAD   = 2;/
+TOPIV_SED_winrad  := s/WIN_RAD \/\*verilator public\*\/ = ST_ADD + 1;/WIN_RAD \/*verilator public*\/ = ST_ADD;/
 TOPIV_RUN_winrad  := p4_dense
 
 TOPIV_VVPS    := $(TOPIV_CFGS:%=$(TOPIV_DIR)/top_tb_%.vvp)
