@@ -13,6 +13,6 @@ for d in 0 1; do
     run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=$p -GDatapath=$d -f rtl/pree.f
   done
 done
-run iverilog -g2005 -Wall -o "$TMP/axi.vvp" -s pree_axi -c rtl/pree.f
-run iverilog -g2005 -o "$TMP/rs.vvp" -s pree_reset_sync -c rtl/pree.f
+run iverilog -g2005 -Wall -Irtl -o "$TMP/axi.vvp" -s pree_axi -c rtl/pree.f
+run iverilog -g2005 -Irtl -o "$TMP/rs.vvp" -s pree_reset_sync -c rtl/pree.f
 echo "ok: pree_axi lint-clean and elaborated"
