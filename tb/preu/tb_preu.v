@@ -120,7 +120,9 @@ module tb_preu;
       else begin
         if (tag_out != expect_next)
           fail("result out of order (tag)", expect_next);
+        /* verilator lint_off WIDTH */  // the PREU's 32-bit latency parameters against 64-bit cycles
         else if (cycle != issue_cycle[expect_next] + (vec[b][0] ? dut.RAD_LATENCY : dut.UPD_LATENCY))
+        /* verilator lint_on WIDTH */
           fail("wrong latency", expect_next);
         else if (vec[b] == 0 && (accept !== vec[b+O_ACC][0] || state_out !== wst(b+O_STO)))
           fail("update result", expect_next);
@@ -160,7 +162,9 @@ module tb_preu;
       end
     end
     cycle = cycle + 1;
+    /* verilator lint_off WIDTH */  // the PREU's 32-bit latency parameters against 64-bit cycles
     if (checked == NOps || cycle > NOps * (40 + dut.RAD_LATENCY) + 1000) begin
+    /* verilator lint_on WIDTH */
       $display("tb_preu: %0d operations checked (%0d update accepted), %0d mode switches, %0d cycles, %0d mismatches: %0s",
                checked, accepted, switches, cycle, errors, (errors == 0 && checked == NOps) ? "PASS" : "FAIL");
       if (errors != 0 || checked != NOps) $fatal(1, "tb_preu: FAIL");
