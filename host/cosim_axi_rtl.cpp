@@ -159,6 +159,7 @@ int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
 // The wrapper drives pree_top's photon port one photon a cycle (PhotonsPerCycle 1); --model-only
 // is for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
+int cosim_rtl_radiance_depth(cosim_rtl_t *) { return 12; }   // PipeFast 0's RAD_LAT
 int cosim_rtl_config(int, int *, int *) { return -1; }
 cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r) { return &r->ain; }
 const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r) { r->tick(); return &r->out; }

@@ -211,9 +211,11 @@ int pree_cmd_cosim(int argc, char **argv)
         cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
         hp_bank_w = cosim_rtl_hp_bank_w(rtl);
         ppc = cosim_rtl_ppc(rtl);
-        if (cosim_rtl_update_window(rtl) != win) {   /* the --model-only table against the RTL */
-            fprintf(stderr, "pree cosim: the RTL's update window is %d cycles, the host's table says %d\n",
-                    cosim_rtl_update_window(rtl), win);
+        /* The host's tables (--model-only, the reference's radiance order) against the RTL. */
+        if (cosim_rtl_update_window(rtl) != win || cosim_rtl_radiance_depth(rtl) != cosim_radiance_depth(pipefast)) {
+            fprintf(stderr, "pree cosim: the RTL's update window and radiance depth are %d and %d cycles, the host's "
+                    "tables say %d and %d\n", cosim_rtl_update_window(rtl), cosim_rtl_radiance_depth(rtl), win,
+                    cosim_radiance_depth(pipefast));
             cosim_rtl_free(rtl); scene_free(&scene); return 1;
         }
     }
@@ -297,7 +299,7 @@ int pree_cmd_cosim(int argc, char **argv)
     sec_rad_rtl = now() - t0;
     cosim_drv_counters(ctx.drv, cnt_all);
     unsigned long long skipped;
-    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, Lm, &skipped)) {
+    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(pipefast), Lm, &skipped)) {
         fprintf(stderr, "pree cosim: out of memory\n");
         goto out;
     }

@@ -68,6 +68,13 @@ static inline int cosim_update_window(int datapath, int pipe_fast)
 {
     return pipe_fast ? (datapath ? 49 : 46) : (datapath ? 13 : 11);
 }
+/* ADISO-REC's pipeline depth in pree_top (its RAD_LAT, the PREU's radiance latency: the same for
+ * both datapaths), which sets the radiance pass's issue order and so the reference image's
+ * rounding (model/ppm/radiance.h). */
+static inline int cosim_radiance_depth(int pipe_fast)
+{
+    return pipe_fast ? 59 : 12;
+}
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n);

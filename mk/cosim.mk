@@ -21,8 +21,9 @@
 # build/pree-cosim-s8, build/pree-cosim-p4f); build/pree itself needs no Verilator. The regression
 # uses the paper datapath with NumPreu 4, 8, 16 (COSIM_PREUS) and the stable one with
 # COSIM_STABLE_PREUS (default 4); the PipeFast = 1 models of both datapaths for the counts in
-# COSIM_FAST_PREUS (default none: their reference image needs the radiance order of their
-# ADISO-REC depth, docs/fpga.md) are built when asked; the top bench links those models.
+# COSIM_FAST_PREUS (default none; the regression builds build/pree-cosim-p4f for its deep
+# co-simulation, whose reference image adds in the order of ADISO-REC's depth 59) are built when
+# asked; the top bench links those models.
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
@@ -79,7 +80,7 @@ cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),
                  -include $(call cosim_cls,$(m)).h -include $(call cosim_cls,$(m))_pree_top.h) \
                '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(findstring s,$(call cosim_d,$(m))),1,0),$(if $(findstring f,$(call cosim_d,$(m))),1,0)))'
 
-TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS)
+TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS) $(BUILD)/pree-cosim-p4f   # p4f: tests/checks/cosim_deep.sh
 SIM_TARGETS   += sim-top
 LINT_TARGETS  += lint-top
 SYNTH_TARGETS += synth-top

@@ -135,13 +135,14 @@ module pree_top #(
   // The PREU's latencies (rtl/pree_preu_plan.vh) and the hazard windows they set (public to the
   // co-simulation host): update, issue + C + the update stages (11 paper / 13 stable with
   // PipeFast 0); radiance, from the pixel read (lreq, RAD_LAT - AddStages - 1 after issue) to
-  // its write (RAD_LAT after issue): AddStages + 1 (3 with PipeFast 0).
+  // its write (RAD_LAT after issue): AddStages + 1 (3 with PipeFast 0). RAD_LAT is also
+  // ADISO-REC's depth, which sets the radiance pass's issue order (public, for the host's check).
   localparam ST_ADD    = preu_stages(0, PipeFast, AddStages);
   localparam ST_MUL    = preu_stages(1, PipeFast, MulStages);
   localparam ST_DIV    = preu_stages(3, PipeFast, DivStages);
   localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, preu_stages(2, PipeFast, SqrStages),
                            ST_DIV, preu_stages(4, PipeFast, U2fStages), preu_stages(5, PipeFast, WaccStages));
-  localparam RAD_LAT   = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
+  localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
   localparam [CtrW-1:0] CNT_ONE = 1;

@@ -10,13 +10,14 @@ static int zero_weight(const hitpoints_t *h, size_t i)
 }
 
 /* fp32: the PREE's radiance pass, hit points in ADISO-REC issue order (model/pree/adiso_order.h). */
-int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu,
+int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu, int stages,
                         uint32_t *L, unsigned long long *skipped)
 {
     unsigned long long sk = 0;
+    if (stages < 1) return -1;
     uint32_t *order = malloc((h->n ? h->n : 1) * sizeof *order);
     if (!order) return -1;
-    if (adiso_order((uint32_t)h->n, preu, RADIANCE_PREU_STAGES, order)) { free(order); return -1; }
+    if (adiso_order((uint32_t)h->n, preu, stages, order)) { free(order); return -1; }
     const uint32_t ne = preu_n_emitted(emitted);
     for (size_t k = 0; k < h->n; k++) {
         const uint32_t i = order[k];
@@ -47,7 +48,7 @@ int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emit
     } else {
         uint32_t *L = calloc(num_pixels * 3, sizeof *L);   /* +0.0f */
         if (!L) return -1;
-        if (radiance_fp32_words(h, emitted, skip_zero, preu, L, &sk)) { free(L); return -1; }
+        if (radiance_fp32_words(h, emitted, skip_zero, preu, RADIANCE_PREU_STAGES, L, &sk)) { free(L); return -1; }
         for (size_t j = 0; j < num_pixels * 3; j++) rgb[j] = (double)fp32_from_bits(L[j]);
         free(L);
     }

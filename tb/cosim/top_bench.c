@@ -318,7 +318,7 @@ int main(int argc, char **argv)
     uint32_t ne = preu_n_emitted((uint64_t)photons > 0 ? (uint64_t)photons : 1);
     uint32_t *order = malloc((size_t)nhp * sizeof *order);
     uint32_t *Lm = calloc((size_t)npix * 3, sizeof *Lm), *Lr = calloc((size_t)npix * 3, sizeof *Lr);
-    adiso_order((uint32_t)nhp, preu, 12, order);
+    adiso_order((uint32_t)nhp, preu, cosim_rtl_radiance_depth(rtl), order);
     for (int k = 0; k < nhp; k++) {
         uint32_t *L = Lm + 3 * (size_t)pixel[order[k]];
         if (dp) preu_stable_radiance(L, &sp[order[k]], ne);
