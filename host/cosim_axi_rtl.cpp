@@ -160,6 +160,10 @@ int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
 // is for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
 int cosim_rtl_radiance_depth(cosim_rtl_t *) { return 12; }   // PipeFast 0's RAD_LAT
+uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->time / 2; }
+// The AXI driver does not know where a mismatch lies (cosim_drv_hp_cycle), so the wrapper's
+// trace is always whole.
+void cosim_rtl_trace_window(cosim_rtl_t *, uint64_t, uint64_t) {}
 int cosim_rtl_config(int, int *, int *) { return -1; }
 cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r) { return &r->ain; }
 const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r) { r->tick(); return &r->out; }

@@ -48,6 +48,9 @@ struct cosim_drv {
     cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
     int started;                       /* a photon has been offered */
     int hung;                          /* a wait ran out (stuck): every later call fails */
+    uint64_t *hp_cycle;                /* per hit point: cycle of its last operation's issue */
+    size_t n_hp;
+    uint64_t rad_from, rad_to;         /* the radiance pass's cycles */
 };
 
 static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p);
@@ -85,6 +88,7 @@ void cosim_drv_free(cosim_drv_t *d)
     if (!d) return;
     cosim_sched_free(d->sched);
     free(d->cand);
+    free(d->hp_cycle);
     free(d);
 }
 
@@ -108,6 +112,33 @@ static int offer_count(const cosim_drv_t *d)
     }
     if (d->sched && k < d->ppc && !d->closed) return 0;   /* more of the group may follow */
     return k;
+}
+
+/* The k head photons are taken in this cycle: each of their hit points' operations issues about
+ * (its place in the photon) / NumPreu cycles later. The entries are still in the index queue
+ * (they lie within the index table's window, a quarter of the queue). For cosim_drv_hp_cycle. */
+static void note_issue(cosim_drv_t *d, int k)
+{
+    if (!d->hp_cycle) return;
+    const uint64_t c = cosim_rtl_cycle(d->rtl);
+    for (int j = 0; j < k; j++) {
+        const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)j) & (PQ_CAP - 1)];
+        for (uint32_t i = 0; i < p->n; i++) {
+            const uint32_t hp = d->iq[(p->widx_end - p->n + i) & (IQ_CAP - 1)].hp;
+            if (hp < d->n_hp) d->hp_cycle[hp] = c + i / (uint32_t)d->opt.preu;
+        }
+    }
+}
+
+uint64_t cosim_drv_hp_cycle(const cosim_drv_t *d, uint32_t i)
+{
+    return d->hp_cycle && i < d->n_hp ? d->hp_cycle[i] : UINT64_MAX;
+}
+
+void cosim_drv_radiance_cycles(const cosim_drv_t *d, uint64_t *from, uint64_t *to)
+{
+    *from = d->rad_from;
+    *to = d->rad_to;
 }
 
 /* One clock cycle of the update stream: retire, write index entries, offer a photon. */
@@ -159,6 +190,7 @@ static void pump(cosim_drv_t *d)
     }
     /* ph_ready_o depends on the state only, so the value after the last edge holds now. */
     int take = in->ph_valid && d->ready;
+    if (take) note_issue(d, k);
     cosim_rtl_tick(d->rtl);
     if (take) d->pq_head += (uint64_t)k;
     d->ready = cosim_rtl_ph_ready(d->rtl);
@@ -324,6 +356,10 @@ int cosim_drv_drain(cosim_drv_t *d)
 void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n)
 {
     cosim_in_t *in = d->in;
+    free(d->hp_cycle);
+    d->n_hp = n;
+    d->hp_cycle = malloc((n ? n : 1) * sizeof *d->hp_cycle);   /* NULL: not tracked */
+    if (d->hp_cycle) memset(d->hp_cycle, 0xff, (n ? n : 1) * sizeof *d->hp_cycle);
     for (size_t i = 0; i < n; i++) {
         while (d->opt.stall > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.stall) {
             in->hp_we = 0;   /* an idle cycle in the load */
@@ -366,6 +402,7 @@ int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix,
     in->n_hit = n_hit;
     in->rad_start = 1;
     in->cnt_en = 1;
+    d->rad_from = cosim_rtl_cycle(d->rtl);
     cosim_rtl_tick(d->rtl);
     in->rad_start = 0;
     uint64_t guard = 0;
@@ -373,6 +410,7 @@ int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix,
         if (stuck(d, &guard, "waiting for idle_o after the radiance pass")) return -1;
         cosim_rtl_tick(d->rtl);
     }
+    d->rad_to = cosim_rtl_cycle(d->rtl);
     in->cnt_en = 0;
     /* Read the pixels back. */
     for (size_t p = 0; p < npix; p++) {

@@ -22,6 +22,10 @@
  * Every wait for the RTL is bounded (opt.wait_limit, default 10 million cycles without the
  * awaited progress): the call then fails with a message naming the wait and the stream's state
  * (ph_ready_o, idle_o, photons taken and retired, entries queued), and so does every later call.
+ *   cosim_drv_hp_cycle(d, i)      the cycle (cosim_rtl_cycle) in which hit point i's last operation
+ *                                 issued, within a few cycles; UINT64_MAX when none did or it is
+ *                                 not known (the AXI driver): where a failing run's trace looks
+ *   cosim_drv_radiance_cycles(d, &from, &to)  the cycles of the last radiance pass
  *   cosim_drv_counters(d, cnt)    pree_top's counters now
  *   cosim_drv_sched_stats(d, st)  the scheduler's figures (-1 when not scheduling)
  *
@@ -72,5 +76,7 @@ int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix,
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);
 uint64_t cosim_drv_ops_sent(const cosim_drv_t *d);
 int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st);
+uint64_t cosim_drv_hp_cycle(const cosim_drv_t *d, uint32_t i);
+void cosim_drv_radiance_cycles(const cosim_drv_t *d, uint64_t *from, uint64_t *to);
 
 #endif

@@ -7,6 +7,7 @@
  * gives SSIM and SNR. Exit status: 0 when both comparisons show 0 differing words, 1 otherwise
  * or on a failure, 2 on a usage error. */
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -17,6 +18,7 @@
 #include "cosim_drv.h"
 #include "cosim_report.h"
 #include "cosim_shadow.h"
+#include "fail_trace.h"
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
@@ -56,6 +58,8 @@ static void cosim_usage(FILE *f)
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"
+        "  --trace-window A:B     only cycles A..B of it (a failing run without --trace leaves\n"
+        "                         the cycles around its first mismatch in build/pree-cosim-*-fail-c*.fst)\n"
         "  --out IMAGE            the RTL image (.png, .ppm or .exr)\n"
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
         "  --no-reference         skip the double render (no SSIM/SNR)\n"
@@ -130,13 +134,77 @@ static int hp_words_differ(const preu_hpw_t *a, uint32_t pa, const preu_hpw_t *b
     return d;
 }
 
+/* The RTL's hit-point memory against the model's hit points (address i holds the session's
+ * hit point i here): differing words; the hit points that differ and the first in *points and
+ * *first (SIZE_MAX: none). The first five are printed. PREE_TEST_CORRUPT_HP=N flips a bit of the
+ * model's hit point N first: the failure path's check (tests/checks/fail_trace.sh). */
+static unsigned long long compare_hit_points(cosim_drv_t *drv, const hitpoints_t *hp, int dp,
+                                             unsigned long long *points, size_t *first)
+{
+    const char *env = getenv("PREE_TEST_CORRUPT_HP");
+    const size_t corrupt = env ? (size_t)strtoull(env, NULL, 10) : SIZE_MAX;
+    unsigned long long words = 0;
+    *points = 0;
+    *first = SIZE_MAX;
+    for (size_t i = 0; i < hp->n; i++) {
+        preu_hpw_t h, m;
+        uint32_t px;
+        cosim_drv_read_hp(drv, (uint32_t)i, &h, &px);
+        model_words(hp, i, &m);
+        if (i == corrupt) m.st[0] ^= 1;
+        int dw = hp_words_differ(&h, px, &m, (uint32_t)hp->pixel[i], dp);
+        if (!dw) continue;
+        if (*points < 5) {
+            fprintf(stderr, "pree cosim: hit point %zu differs: state words RTL/model", i);
+            for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", h.st[k], m.st[k]);
+            fputc('\n', stderr);
+        }
+        if (*first == SIZE_MAX) *first = i;
+        words += (unsigned long long)dw;
+        ++*points;
+    }
+    return words;
+}
+
+/* A failing run without --trace runs itself again (tb/lib/fail_trace.h) with a trace of the
+ * cycles around its first mismatch: the last operation on the first differing hit point, or
+ * else (only the image differs) the radiance pass; and says where. */
+static void leave_fail_trace(int argc, char **argv, const cosim_drv_t *drv, size_t first_hp, int win)
+{
+    uint64_t first, from, to;
+    const char *what;
+    if (first_hp != SIZE_MAX) {
+        first = cosim_drv_hp_cycle(drv, (uint32_t)first_hp);
+        fail_trace_window(first, 32, (uint64_t)win + 32, &from, &to);
+        what = "the last operation on the first differing hit point";
+    } else {
+        cosim_drv_radiance_cycles(drv, &from, &to);
+        first = from;
+        what = "the radiance pass";
+    }
+    if (first == UINT64_MAX) {
+        fprintf(stderr, "pree cosim: no trace of the mismatch: this driver does not know the cycle of %s\n", what);
+        return;
+    }
+    char path[4096], win_arg[64];
+    fail_trace_path(path, sizeof path, NULL, first);
+    snprintf(win_arg, sizeof win_arg, "%llu:%llu", (unsigned long long)from, (unsigned long long)to);
+    const char *extra[] = {"--trace", path, "--trace-window", win_arg, "--quiet", "--no-reference"};
+    if (fail_trace_rerun(argc, argv, extra, 6, path) == 0)
+        fprintf(stderr, "pree cosim: %s at cycle %llu; cycles %llu..%llu traced in %s\n", what, (unsigned long long)first,
+                (unsigned long long)from, (unsigned long long)to, path);
+    else
+        fprintf(stderr, "pree cosim: %s at cycle %llu; the traced rerun wrote no %s\n", what,
+                (unsigned long long)first, path);
+}
+
 static void to_float(const double *rgb, size_t n, float *out)
 {
     for (size_t i = 0; i < n; i++) out[i] = (float)rgb[i];
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST };
+       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -146,6 +214,7 @@ static const struct option cosim_longopts[] = {
     {"no-schedule", no_argument, NULL, OPT_NO_SCHEDULE},
     {"window", required_argument, NULL, OPT_WINDOW},
     {"trace", required_argument, NULL, OPT_TRACE},
+    {"trace-window", required_argument, NULL, OPT_TRACE_WINDOW},
     {"out", required_argument, NULL, OPT_OUT},
     {"stats", required_argument, NULL, OPT_STATS},
     {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
@@ -160,6 +229,7 @@ int pree_cmd_cosim(int argc, char **argv)
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
     int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0, pipefast = 0;
+    uint64_t win_from = 0, win_to = UINT64_MAX;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -178,6 +248,15 @@ int pree_cmd_cosim(int argc, char **argv)
         case OPT_NO_SCHEDULE: schedule = 0; break;
         case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; window = (int)v; break;
         case OPT_TRACE: trace_path = a.val; break;
+        case OPT_TRACE_WINDOW: {
+            unsigned long long w0, w1;
+            char end;
+            if (sscanf(a.val, "%llu:%llu%c", &w0, &w1, &end) != 2 || w1 < w0)
+                return cli_error(&a, "--trace-window: '%s' is not FIRST:LAST (cycles)", a.val);
+            win_from = w0;
+            win_to = w1;
+            break;
+        }
         case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
         case OPT_STATS: stats_path = a.val; break;
         case OPT_MODEL_ONLY: model_only = 1; break;
@@ -187,6 +266,7 @@ int pree_cmd_cosim(int argc, char **argv)
     }
     if (!(scene_path = cli_scene(&a))) return 2;
     if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
+    if (win_to != UINT64_MAX && !trace_path) return cli_error(&a, "--trace-window needs --trace");
     if (axi != COSIM_DRV_AXI)
         return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
                                  : "this program drives pree_axi: give --axi");
@@ -211,6 +291,7 @@ int pree_cmd_cosim(int argc, char **argv)
         cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
         hp_bank_w = cosim_rtl_hp_bank_w(rtl);
         ppc = cosim_rtl_ppc(rtl);
+        cosim_rtl_trace_window(rtl, win_from, win_to);
         /* The host's tables (--model-only, the reference's radiance order) against the RTL. */
         if (cosim_rtl_update_window(rtl) != win || cosim_rtl_radiance_depth(rtl) != cosim_radiance_depth(pipefast)) {
             fprintf(stderr, "pree cosim: the RTL's update window and radiance depth are %d and %d cycles, the host's "
@@ -256,6 +337,7 @@ int pree_cmd_cosim(int argc, char **argv)
     double cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
     uint64_t cnt_upd[COSIM_NCNT], cnt_all[COSIM_NCNT];
     unsigned long long hp_diff = 0, hp_diff_points = 0, img_diff = 0;
+    size_t first_hp = SIZE_MAX;
     pree_metrics_t metrics = {0};
     int have_m = 0;
     double sec_rad_rtl = 0;
@@ -270,20 +352,7 @@ int pree_cmd_cosim(int argc, char **argv)
     cosim_drv_counters(ctx.drv, cnt_upd);
 
     /* Hit-point memory against the fp32 model's final state. */
-    for (size_t i = 0; i < res.hp.n; i++) {
-        preu_hpw_t h, m;
-        uint32_t px;
-        cosim_drv_read_hp(ctx.drv, (uint32_t)i, &h, &px);
-        model_words(&res.hp, i, &m);
-        int dw = hp_words_differ(&h, px, &m, (uint32_t)res.hp.pixel[i], dp);
-        if (dw && hp_diff_points < 5) {
-            fprintf(stderr, "pree cosim: hit point %zu differs: state words RTL/model", i);
-            for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", h.st[k], m.st[k]);
-            fputc('\n', stderr);
-        }
-        hp_diff += (unsigned long long)dw;
-        hp_diff_points += dw != 0;
-    }
+    hp_diff = compare_hit_points(ctx.drv, &res.hp, dp, &hp_diff_points, &first_hp);
 
     /* Radiance in RTL and in the model, same order. */
     Lr = calloc(npix * 3, sizeof *Lr);
@@ -299,7 +368,8 @@ int pree_cmd_cosim(int argc, char **argv)
     sec_rad_rtl = now() - t0;
     cosim_drv_counters(ctx.drv, cnt_all);
     unsigned long long skipped;
-    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(pipefast), Lm, &skipped)) {
+    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(pipefast), Lm,
+                            &skipped)) {
         fprintf(stderr, "pree cosim: out of memory\n");
         goto out;
     }
@@ -367,6 +437,7 @@ figures:;
                 rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd,
                 rep.sim_ops_per_cpu_s, hp_diff, img_diff, rep.pass ? "" : " FAIL");
     status = rep.pass || model_only ? 0 : 1;
+    if (status && !trace_path && fail_trace_wanted()) leave_fail_trace(argc, argv, ctx.drv, first_hp, win);
 out:
     free(Lr);
     free(Lm);

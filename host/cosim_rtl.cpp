@@ -77,6 +77,8 @@ struct cosim_rtl {
     virtual int hp_bank_w() = 0;
     virtual int update_window() = 0;
     virtual int radiance_depth() = 0;
+    virtual uint64_t cycle() = 0;
+    virtual void trace_window(uint64_t from, uint64_t to) = 0;
     virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
@@ -159,6 +161,8 @@ struct Rtl : cosim_rtl {
     int hp_bank_w() override { return HPB; }
     int update_window() override { return WIN; }
     int radiance_depth() override { return RAD; }
+    uint64_t cycle() override { return top.trace_cycle(); }
+    void trace_window(uint64_t from, uint64_t to) override { top.set_trace_window(from, to); }
     int ppc() override { return PPC; }
     void set_reset(int on) override
     {
@@ -228,6 +232,8 @@ void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
 int cosim_rtl_radiance_depth(cosim_rtl_t *r) { return r->radiance_depth(); }
+uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->cycle(); }
+void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->trace_window(from, to); }
 int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)

@@ -17,6 +17,8 @@
  *                                  update latency, which follows from Datapath and PipeFast)
  *   cosim_rtl_radiance_depth       ADISO-REC's depth in it (pree_top's RAD_LAT, the PREU's radiance
  *                                  latency), which orders the radiance pass
+ *   cosim_rtl_cycle                cycles run since reset (the trace's time: cycle n at 8n ns)
+ *   cosim_rtl_trace_window(r, a, b)  dump only cycles a..b into the trace
  *   cosim_rtl_ppc                  the model's PhotonsPerCycle parameter (photon slots of ph_*)
  *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
  *                                  preu PREUs, whether or not that model is linked (-1: no such
@@ -78,6 +80,8 @@ void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cycles */
 int cosim_rtl_radiance_depth(cosim_rtl_t *r);
+uint64_t cosim_rtl_cycle(cosim_rtl_t *r);
+void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to);
 int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on);

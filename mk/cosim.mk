@@ -70,7 +70,7 @@ COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isyst
 HOST_DIR     := $(BUILD)/host
 HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
-COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli
+COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli -Itb/lib
 COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mtag,$(m)))
 # host/cosim_rtl.cpp with the models $(1) (N:d words): their headers (with the pree_top scope's,
 # which holds the public WIN_UPD), and COSIM_MODELS, the list the host instantiates its template

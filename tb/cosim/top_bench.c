@@ -4,7 +4,7 @@
  * of model/pree/adiso_order.h. Compares every word and prints the first mismatches.
  *
  * usage: top_bench [--preu 4|8|16] [--datapath 0|1] [--pipe-fast] [--alpha A] [--scenario random|one|dense|mixed|abank]
- *                  [--photons N] [--hp N] [--gap P] [--stall P] [--no-reorder] [--seed S] [--trace FILE.fst]
+ *                  [--photons N] [--hp N] [--gap P] [--stall P] [--no-reorder] [--seed S] [--trace FILE.fst [--trace-window A:B]]
  *                  [--reset-at K] [--hold-reset] [--wait-limit N]
  *   random  photons with 1..40 random distinct candidates among --hp hit points
  *   one     every photon hits hit point 0 (and nothing else): in-flight hazards every cycle
@@ -25,12 +25,15 @@
  * photons stream: the driver's bounded wait (--wait-limit cycles) must fail, naming its state
  * (exit status 3 when it does, 1 when it does not).
  * --pipe-fast: the PipeFast = 1 model (the deep PREU pipeline; its hazard windows follow from it).
+ * A failing run (without --trace) leaves the cycles around its first mismatch in
+ * build/cosim/top_bench-fail-cN.fst (tb/lib/fail_trace.h), named in its last line.
  * Exit status 0 when every word matches, 1 on a mismatch, 2 on a usage error. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "adiso_order.h"
 #include "cosim_drv.h"
+#include "fail_trace.h"
 
 static uint64_t rng_state;
 static uint32_t rnd(void)
@@ -171,12 +174,34 @@ static cosim_drv_t *reset_and_reload(cosim_rtl_t *rtl, cosim_drv_t *drv, const c
     return drv;
 }
 
+/* A failing run without --trace runs itself again (tb/lib/fail_trace.h) with a trace of the
+ * cycles around its first mismatch: the last operation on the first differing hit point, or
+ * else the radiance pass. (After --reset-at the cycle is the second run's.) */
+static void leave_fail_trace(int argc, char **argv, const cosim_drv_t *drv, int first_hp, int win)
+{
+    if (!fail_trace_wanted()) return;
+    uint64_t first = UINT64_MAX, from, to;
+    if (first_hp >= 0) first = cosim_drv_hp_cycle(drv, (uint32_t)first_hp);
+    if (first != UINT64_MAX) fail_trace_window(first, 32, (uint64_t)win + 32, &from, &to);
+    else cosim_drv_radiance_cycles(drv, &from, &to), first = from;
+    char path[4096], win_arg[64];
+    fail_trace_path(path, sizeof path, NULL, first);
+    snprintf(win_arg, sizeof win_arg, "%llu:%llu", (unsigned long long)from, (unsigned long long)to);
+    const char *extra[] = {"--trace", path, "--trace-window", win_arg};
+    if (fail_trace_rerun(argc, argv, extra, 4, path) == 0)
+        printf("top_bench: first mismatch at cycle %llu; cycles %llu..%llu traced in %s\n", (unsigned long long)first,
+               (unsigned long long)from, (unsigned long long)to, path);
+    else
+        printf("top_bench: first mismatch at cycle %llu; the traced rerun wrote no %s\n", (unsigned long long)first, path);
+}
+
 int main(int argc, char **argv)
 {
     int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, pf = 0, reset_at = -1, hold_reset = 0;
     double gap = 0, stall = 0, alpha = 0.7;
     uint64_t wait_limit = 0;
     const char *scenario = "random", *trace = NULL;
+    unsigned long long win_from = 0, win_to = UINT64_MAX;
     uint64_t seed = 1;
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -197,6 +222,12 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--wait-limit")) wait_limit = strtoull(v, NULL, 0);
         else if (!strcmp(o, "--seed")) seed = strtoull(v, NULL, 0);
         else if (!strcmp(o, "--trace")) trace = v;
+        else if (!strcmp(o, "--trace-window")) {
+            if (sscanf(v, "%llu:%llu", &win_from, &win_to) != 2 || win_to < win_from) {
+                fprintf(stderr, "top_bench: --trace-window %s is not FIRST:LAST\n", v);
+                return 2;
+            }
+        }
         else { fprintf(stderr, "top_bench: unknown option %s\n", o); return 2; }
     }
     int one = !strcmp(scenario, "one"), dense = !strcmp(scenario, "dense"), mixed = !strcmp(scenario, "mixed");
@@ -211,6 +242,7 @@ int main(int argc, char **argv)
     char err[256];
     cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, pf, trace, err, sizeof err);
     if (!rtl) { fprintf(stderr, "top_bench: %s\n", err); return 2; }
+    cosim_rtl_trace_window(rtl, win_from, win_to);
     const uint32_t alpha32 = preu_f32(alpha), kappa32 = preu_kappa(alpha32);
     cosim_rtl_in(rtl)->alpha = alpha32;
     cosim_rtl_in(rtl)->kappa = kappa32;
@@ -297,6 +329,7 @@ int main(int argc, char **argv)
     cosim_drv_counters(drv, cnt);
 
     unsigned long long bad = 0;
+    int first_hp = -1;
     for (int i = 0; i < nhp; i++) {
         preu_hpw_t h, m;
         uint32_t px;
@@ -306,6 +339,7 @@ int main(int argc, char **argv)
         int differ = px != (uint32_t)pixel[i] || memcmp(h.pos, m.pos, sizeof h.pos) || memcmp(h.f, m.f, sizeof h.f) ||
                      memcmp(h.st, m.st, (size_t)preu_state_words(dp) * sizeof h.st[0]);
         if (differ) {
+            if (first_hp < 0) first_hp = i;
             if (bad < 20) {
                 printf("MISMATCH hit point %d (px RTL %u model %d): state words RTL/model", i, px, pixel[i]);
                 for (int k = 0; k < preu_state_words(dp); k++) printf(" %08x/%08x", h.st[k], m.st[k]);
@@ -361,6 +395,7 @@ int main(int argc, char **argv)
            (unsigned long long)(cnt2[CNT_HAZ] - cnt[CNT_HAZ]), (unsigned long long)(cnt2[CNT_DUP] - cnt[CNT_DUP]),
            (unsigned long long)(cnt2[CNT_BANK] - cnt[CNT_BANK]), (unsigned long long)(cnt2[CNT_ABANK] - cnt[CNT_ABANK]),
            (unsigned long long)(cnt2[CNT_STARVE] - cnt[CNT_STARVE]), bad ? "FAIL" : "PASS");
+    if (bad && !trace) leave_fail_trace(argc, argv, drv, first_hp, cosim_rtl_update_window(rtl));
     free(order); free(Lm); free(Lr); free(hp); free(sp); free(init); free(pixel); free(phs); free(cands); free(ncand);
     if (abank) mis_free(&mis);
     cosim_drv_free(drv);

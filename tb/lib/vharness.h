@@ -5,11 +5,15 @@
 // run does exactly the evaluations of an untraced one, plus the dumps (tests/checks/vharness_trace.sh).
 // C++ and header-only because Verilated models are C++ classes of the bench's choosing.
 //
-//   VHarness<Vtop> h(argc, argv);   plusargs for the model; +trace=FILE opens an FST trace
+//   VHarness<Vtop> h(argc, argv);   plusargs for the model; +trace=FILE opens an FST trace;
+//                                   +trace_window=A:B dumps only cycles A..B of it
 //   VHarness<Vtop> h(0, 0, path, hp);  a trace into path (NULL: none), hp time units per edge
 //   h.trace_error()                 NULL, or "FILE: why the requested trace is not written"
 //   h->port = v; h.eval();          settle new inputs without an edge (read combinational outputs)
 //   h.tick();                       one cycle; h.cycles() counts them (reset cycles included)
+//   h.trace_cycle()                 the cycles run since the first reset, which the trace's time
+//                                   shows (a bench's cycle numbers, and a trace window's)
+//   h.set_trace_window(a, b)        dump only cycles a..b (inclusive) of the open trace
 //   h.reset(n);                     rst_ni low for n cycles, then high and settled; these
 //                                   cycles are neither dumped nor timed, so the trace starts at
 //                                   time 0 with the first cycle after reset
@@ -21,6 +25,7 @@
 #define PREE_VHARNESS_H
 
 #include <cstdint>
+#include <cstdio>
 #include <memory>
 #include <string>
 
@@ -43,6 +48,11 @@ class VHarness {
         if (trace) ctx_->traceEverOn(true);   // must precede the model's construction
         top_.reset(new V{ctx_.get()});
         if (trace) open_trace(trace);
+        if (argc > 0) {
+            const char *w = ctx_->commandArgsPlusMatch("trace_window=");
+            unsigned long long a, b;
+            if (w && w[0] && std::sscanf(w + 14, "%llu:%llu", &a, &b) == 2) set_trace_window(a, b);
+        }
     }
     ~VHarness()
     {
@@ -59,6 +69,8 @@ class VHarness {
     V &dut() { return *top_; }
     const char *trace_error() const { return trace_error_.empty() ? nullptr : trace_error_.c_str(); }
     uint64_t cycles() const { return cycles_; }
+    uint64_t trace_cycle() const { return ctx_->time() / (2 * half_period_); }
+    void set_trace_window(uint64_t from, uint64_t to) { win_from_ = from; win_to_ = to; }
 
     void eval() { top_->eval(); }
 
@@ -89,6 +101,7 @@ class VHarness {
     uint64_t half_period_;
     uint64_t cycles_ = 0;
     bool in_reset_ = false;
+    uint64_t win_from_ = 0, win_to_ = UINT64_MAX;   // the cycles the trace dumps
     std::string trace_error_;
 #if VM_TRACE_FST
     std::unique_ptr<VerilatedFstC> tfp_;
@@ -106,7 +119,8 @@ class VHarness {
     void dump()
     {
         if (in_reset_) return;
-        if (tfp_) tfp_->dump(ctx_->time());
+        const uint64_t c = trace_cycle();
+        if (tfp_ && c >= win_from_ && c <= win_to_) tfp_->dump(ctx_->time());
         ctx_->timeInc(half_period_);
     }
 #else

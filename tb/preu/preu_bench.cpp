@@ -17,7 +17,10 @@
 // an expected result is pushed when valid_i is high and popped at valid_o, which must come
 // exactly UPD_LAT or RAD_LAT cycles later with the same tag (the PREU's public latencies: paper
 // 10 / stable 12 and 12 with PipeFast 0); lreq_o must come LREQ_AT cycles after entry with its tag. Update results are compared whether accepted or not.
-// Prints the first 20 mismatches with their inputs in hex; exit status 1 on any failure.
+// Prints the first 20 mismatches with their inputs in hex; exit status 1 on any failure. A
+// failing run (without +trace) runs itself again traced and leaves the cycles around its first
+// mismatch in build/.../preu_bench*-fail-cN.fst (tb/lib/fail_trace.h), named in its last line.
+// +inject_error=N flips a bit of op N's expected result: the check of that failure path.
 #include <cinttypes>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +30,7 @@
 
 #include "Vpree_preu.h"
 #include "Vpree_preu_pree_preu.h"   // the PREU's public latencies
+#include "fail_trace.h"
 #include "vharness.h"
 #include "preu_vec.h"
 
@@ -46,9 +50,11 @@ struct Pending {
 };
 
 uint64_t errors = 0;
+uint64_t first_cycle = 0;   // of the first mismatch
 
 void report(const preu_vec_t &v, uint32_t idx, const char *what, uint64_t cycle)
 {
+    if (errors == 0) first_cycle = cycle;
     if (errors++ >= MAX_REPORT) return;
     std::printf("MISMATCH op %u (%s mode) cycle %" PRIu64 ": %s\n", idx,
                 v.mode ? "radiance" : "update", cycle, what);
@@ -160,6 +166,12 @@ int main(int argc, char **argv)
 
     std::vector<preu_vec_t> seq(count);
     preu_seq_gen(seq.data(), count, seed, DP);
+    for (int i = 1; i < argc; i++) {
+        unsigned long long bad;
+        if (std::sscanf(argv[i], "+inject_error=%llu", &bad) == 1 && bad < (unsigned long long)count) {
+            if (seq[bad].mode) seq[bad].lo[0] ^= 1; else seq[bad].sto[0] ^= 1;
+        }
+    }
 
     // Reset: two cycles with rst_ni low, inputs idle.
     dut->valid_i = 0; dut->mode_i = 0;
@@ -278,5 +290,9 @@ int main(int argc, char **argv)
                 "(%" PRIu64 " update accepted), %" PRIu64 " mode switches, %" PRIu64 " cycles, %" PRIu64
                 " idle, %" PRIu64 " mismatches: %s\n",
                 DP ? "stable" : "paper", seed, issued, checked, accepted, switches, cycle, idle, errors, ok ? "PASS" : "FAIL");
+    if (!ok) {
+        if (errors == 0) first_cycle = cycle;   // the run ended short: trace its last cycles
+        fail_trace_bench(argc, argv, "preu_bench", DP ? "stable" : "paper", first_cycle, RAD_LAT + 16, 8);
+    }
     return ok ? 0 : 1;
 }
