@@ -1,52 +1,42 @@
 // cosim_axi_rtl.cpp: the Verilated pree_axi behind cosim_axi_rtl.h (one model per program: the
 // make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_HPB). C++ only because Verilator's
 // models are C++ classes. Every field of the wrapper's streams sits on a 32-bit boundary, so the
-// wide ports are filled and read a word at a time.
+// wide ports are filled and read a word at a time. Clocked by the benches' harness
+// (tb/lib/vharness.h) with the wrapper's aclk and aresetn.
 #include "cosim_axi_rtl.h"
 
 #include <cstdio>
 #include <cstring>
 #include <memory>
 
-#include "verilated.h"
-#include "verilated_fst_c.h"
 #include AXI_MODEL_H
+#include "vharness.h"
 
 namespace {
 const unsigned SW = AXI_DP ? 320 : 160;   // state bits of a hit point
 const unsigned HPW = SW / 32;             // state words
+struct AxiPorts {
+    static void clk(AXI_MODEL &t, int v) { t.aclk = v; }
+    static void rst(AXI_MODEL &t, int v) { t.aresetn = v; }
+};
 }
 
 struct cosim_rtl {
-    std::unique_ptr<VerilatedContext> ctx{new VerilatedContext};
-    std::unique_ptr<AXI_MODEL> top;
-    std::unique_ptr<VerilatedFstC> tfp;
-    uint64_t time = 0;
+    VHarness<AXI_MODEL, AxiPorts> h;   // the model, its clock and its trace (fst: a file or NULL)
+    AXI_MODEL *top;
     cosim_in_t in;          // alpha and kappa only (cosim_main.c sets them)
     cosim_axi_in_t ain;
     cosim_axi_out_t out;
 
-    cosim_rtl()
+    explicit cosim_rtl(const char *fst) : h(0, nullptr, fst), top(&h.dut())
     {
-        ctx->traceEverOn(true);
-        top.reset(new AXI_MODEL{ctx.get()});
         std::memset(&in, 0, sizeof in);
         std::memset(&ain, 0, sizeof ain);
         std::memset(&out, 0, sizeof out);
-        top->aclk = 0;
-        top->aresetn = 0;
         apply();
         top->eval();
         // The reset synchroniser releases two edges after aresetn rises.
-        for (int i = 0; i < 4; i++) {
-            if (i == 2) top->aresetn = 1;
-            top->aclk = 1; top->eval(); top->aclk = 0; top->eval();
-        }
-    }
-    ~cosim_rtl()
-    {
-        if (tfp) tfp->close();
-        top->final();
+        h.reset(2, 2);
     }
     void apply()
     {
@@ -115,15 +105,7 @@ struct cosim_rtl {
     void tick()
     {
         apply();
-        top->aclk = 0;
-        top->eval();
-        sample();
-        if (tfp) tfp->dump(time);
-        time++;
-        top->aclk = 1;
-        top->eval();
-        if (tfp) tfp->dump(time);
-        time++;
+        h.tick([this] { sample(); });
     }
 };
 
@@ -136,17 +118,11 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
                       AXI_NP, AXI_DP ? "stable" : "paper", preu, datapath ? "stable" : "paper", pipefast != 0);
         return nullptr;
     }
-    cosim_rtl_t *r = new cosim_rtl;
-    if (fst) {
-        r->tfp.reset(new VerilatedFstC);
-        r->top->trace(r->tfp.get(), 99);
-        r->tfp->open(fst);
-        if (!r->tfp->isOpen()) {
-            std::snprintf(err, errlen, "%s: cannot open the FST trace", fst);
-            r->tfp.reset();
-            delete r;
-            return nullptr;
-        }
+    cosim_rtl_t *r = new cosim_rtl(fst);
+    if (r->h.trace_error()) {
+        std::snprintf(err, errlen, "%s", r->h.trace_error());
+        delete r;
+        return nullptr;
     }
     return r;
 }
@@ -160,10 +136,8 @@ int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
 // is for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
 int cosim_rtl_radiance_depth(cosim_rtl_t *) { return 12; }   // PipeFast 0's RAD_LAT
-uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->time / 2; }
-// The AXI driver does not know where a mismatch lies (cosim_drv_hp_cycle), so the wrapper's
-// trace is always whole.
-void cosim_rtl_trace_window(cosim_rtl_t *, uint64_t, uint64_t) {}
+uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
+void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }
 int cosim_rtl_config(int, int *, int *) { return -1; }
 cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r) { return &r->ain; }
 const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r) { r->tick(); return &r->out; }

@@ -1,7 +1,7 @@
 // vharness.h: the one Verilator harness of every bench (tb/) and of the co-simulation host
 // (host/cosim_rtl.cpp), in the shape of ZipCPU's testb.h. It owns the context, the model, the
 // optional FST trace and the cycle counter. tick() is one clock cycle evaluated once per edge
-// through Verilator's public API only: clk_i low, eval, dump; clk_i high, eval, dump. A traced
+// through Verilator's public API only: clock low, eval, dump; clock high, eval, dump. A traced
 // run does exactly the evaluations of an untraced one, plus the dumps (tests/checks/vharness_trace.sh).
 // C++ and header-only because Verilated models are C++ classes of the bench's choosing.
 //
@@ -14,9 +14,14 @@
 //   h.trace_cycle()                 the cycles run since the first reset, which the trace's time
 //                                   shows (a bench's cycle numbers, and a trace window's)
 //   h.set_trace_window(a, b)        dump only cycles a..b (inclusive) of the open trace
-//   h.reset(n);                     rst_ni low for n cycles, then high and settled; these
-//                                   cycles are neither dumped nor timed, so the trace starts at
-//                                   time 0 with the first cycle after reset
+//   h.tick(between);                the same, calling between() after the falling edge's eval
+//                                   (a bench samples the handshakes of the cycle there)
+//   h.reset(n[, settle]);           rst_ni low for n cycles, then high and settled (and settle
+//                                   more cycles, for a reset synchroniser); these cycles are
+//                                   neither dumped nor timed, so the trace starts at time 0
+//                                   with the first cycle after reset
+//   VHarness<Vtop, Ports>           Ports names the clock and reset (default clk_i, rst_ni):
+//                                   struct with static clk(V &, int) and rst(V &, int)
 // The clock rests high between ticks. Every module here uses the rising edge only (and
 // asynchronous active-low resets), so inputs changed between ticks are sampled at the next
 // rising edge, whichever edge the bench's previous clocking rested on. The trace's time advances
@@ -34,7 +39,13 @@
 #include "verilated_fst_c.h"
 #endif
 
-template <class V>
+// The ports of the benches and pree_top: clk_i and an active-low rst_ni.
+struct VHarnessPorts {
+    template <class V> static void clk(V &t, int v) { t.clk_i = v; }
+    template <class V> static void rst(V &t, int v) { t.rst_ni = v; }
+};
+
+template <class V, class Ports = VHarnessPorts>
 class VHarness {
  public:
     explicit VHarness(int argc = 0, char **argv = nullptr, const char *trace = nullptr, uint64_t half_period = 1)
@@ -74,25 +85,30 @@ class VHarness {
 
     void eval() { top_->eval(); }
 
-    void tick()
+    void tick() { tick([] {}); }
+
+    template <class F>
+    void tick(F &&between)
     {
-        top_->clk_i = 0;
+        Ports::clk(*top_, 0);
         top_->eval();
+        between();
         dump();
-        top_->clk_i = 1;
+        Ports::clk(*top_, 1);
         top_->eval();
         dump();
         cycles_++;
     }
 
-    void reset(int n)
+    void reset(int n, int settle = 0)
     {
-        top_->rst_ni = 0;
+        Ports::rst(*top_, 0);
         in_reset_ = true;
         for (int i = 0; i < n; i++) tick();
-        in_reset_ = false;
-        top_->rst_ni = 1;
+        Ports::rst(*top_, 1);
         top_->eval();
+        for (int i = 0; i < settle; i++) tick();
+        in_reset_ = false;
     }
 
  private:
