@@ -16,11 +16,6 @@ module pree_fp32_cmp (
   output wire        unordered_o
 );
 
-  // LATENCY is part of every unit's interface; a combinational unit has nothing that reads it.
-  /* verilator lint_off UNUSEDPARAM */
-  localparam LATENCY = 0;
-  /* verilator lint_on UNUSEDPARAM */
-
   wire expz_a_unused, expz_b_unused, inf_a_unused, inf_b_unused;
   wire zero_a, zero_b, nan_a, nan_b;
 
