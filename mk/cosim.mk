@@ -14,7 +14,7 @@
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
 #   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16, both datapaths, PipeFast 0 and 1,
 #                      PhotonsPerCycle 1 and NumPreu / 4
-#   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table
+#   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table; SYNTH_TOP_PIPEFAST=1: the deep PREUs
 #
 # `pree cosim` runs build/pree-cosim-<d><n>[f] (d: p paper, s stable; n PREUs; f: PipeFast = 1,
 # `--pipe-fast`), one program per Verilated model, each built only when asked (make
@@ -192,6 +192,8 @@ lint-top: | $(DEPS_STAMP)
 	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL)"; \
 	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL); done; done; done; done
 
+# SYNTH_TOP_PIPEFAST=1: the deep PREUs (into $(COSIM_DIR)/synth_pf1).
+SYNTH_TOP_PIPEFAST ?= 0
 synth-top: | $(DEPS_STAMP)
 	@mkdir -p $(COSIM_DIR)
-	tb/cosim/synth_top.sh $(COSIM_DIR)/synth
+	tb/cosim/synth_top.sh $(COSIM_DIR)/synth$(if $(filter 1,$(SYNTH_TOP_PIPEFAST)),_pf1) $(SYNTH_TOP_PIPEFAST)

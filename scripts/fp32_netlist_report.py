@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
 """fp32_netlist_report.py: resources and logic depth per stage of a Yosys synth_xilinx netlist.
 
-Usage: fp32_netlist_report.py <netlist.json> <top>
-Prints one Markdown table row:
+Usage: fp32_netlist_report.py <netlist.json> <top> [--max]
+With --max (for a design with feedback, whose registers have no stage number, like the PREU):
+  | top | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | most LUT levels | most cell levels | where |
+the largest LUT and cell levels over every path between registers, and the register (or
+output) that ends a path with the most LUT levels. Otherwise prints one Markdown table row:
   | top | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | LUT levels per stage | cell levels per stage |
 where the per-stage figures are listed stage 1, 2, ... separated by " / " (stage 0 alone for a
 combinational unit). A pipeline register that Yosys moved into a DSP48E1 (its P register) is
@@ -55,8 +58,9 @@ def weight(cell_type):
 
 
 def main():
-    if len(sys.argv) != 3:
-        raise SystemExit("usage: fp32_netlist_report.py <netlist.json> <top>")
+    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] != "--max"):
+        raise SystemExit("usage: fp32_netlist_report.py <netlist.json> <top> [--max]")
+    most = len(sys.argv) == 4
     mod = json.load(open(sys.argv[1]))["modules"][sys.argv[2]]
 
     # Combinational arcs, register inputs and register outputs.
@@ -141,14 +145,16 @@ def main():
     # Endpoints: (bit, stage, weight of the ending cell); internal DSP stages as their own rows.
     endpoints = []
     dsp_inner = []                                    # (stage, weight)
+    end_name = {}                                     # endpoint bit -> the register it enters
     for r in regs:
         for lat, after_mul, bits in r[1].values():
             if not lat:
                 continue
-            first = max([src_stage(b) for b in bits] or [0]) + 1
+            first = 0 if most else max([src_stage(b) for b in bits] or [0]) + 1
             w = (0, 0, 0, 1) if after_mul else (0, 0, 0, 0)
             for b in bits:
                 endpoints.append((b, first, w))
+                end_name.setdefault(b, r[2])
             for k in range(2, lat + 1):
                 dsp_inner.append((first + k - 1, (0, 0, 0, 1)))
     for name, port in mod["ports"].items():
@@ -173,6 +179,31 @@ def main():
                 dsp = max(dsp, d + w[3])
         memo[b] = (best_lut, best_all, dsp)
         return memo[b]
+
+    if most:
+        worst = (-1, 0, "")
+        cells_most = 0
+        for b, _, w in endpoints:
+            (l, c), a, d = depth(b)
+            cells_most = max(cells_most, a + sum(w))
+            if l + w[0] > worst[0]:
+                worst = (l + w[0], c + w[1], end_name.get(b, "an output"))
+        net_of = {}                                   # bit -> a readable net name
+        for name, net in mod["netnames"].items():
+            if not name.startswith("$"):
+                for k, b in enumerate(net["bits"]):
+                    if isinstance(b, int) and b not in net_of:
+                        net_of[b] = "%s[%d]" % (name, k) if len(net["bits"]) > 1 else name
+        where = worst[2] if isinstance(worst[2], str) else \
+            next((net_of[b] for b in worst[2] if b in net_of), "a register")
+        count = defaultdict(int)
+        for cell in mod["cells"].values():
+            t = cell["type"]
+            count["LUT" if LUT.match(t) else "FF" if FF.match(t) else "MUXF" if t.startswith("MUXF") else t] += 1
+        print("| %s | %d | %d | %d | %d | %d | %d | %d | %s |" % (
+            sys.argv[2], count["LUT"], count["FF"], count["DSP48E1"], count["CARRY4"], count["MUXF"],
+            worst[0], cells_most, where))
+        return
 
     stages = {}
     for b, st, w in endpoints:

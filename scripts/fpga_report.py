@@ -7,7 +7,7 @@ Prints
 Fmax is nextpnr's achieved figure for the clock (register to register; the pins' paths are a
 separate, unconstrained domain). The critical path is nextpnr's worst register-to-register path:
 its start and end registers (the unit's seam, "u_seam<k>", or the wrapper's input / output
-register), its delay split into logic and routing, and its cells: LUT4 (and PFUMX / L6MUX21
+register, or inside pree_fpga_preu_wrap's PREU the register's instance path), its delay split into logic and routing, and its cells: LUT4 (and PFUMX / L6MUX21
 wide-function muxes), CCU2C carry cells (each CCU2C holds two bits of a carry chain) and
 MULT18X18D multipliers. Resources are Yosys's cell counts after synth_ecp5 (the wrapper's
 input and output registers included in FF).
@@ -23,6 +23,12 @@ def seam_of(cell):
     (data[0] is the seam's input, the previous seam's output), or the unit's s<k>_* wire
     (seam k's output); the wrapper's own registers are "input reg" and "output reg"."""
     name = re.sub(r"_TRELLIS_FF.*$", "", cell)
+    if name.startswith("u_preu."):                     # pree_fpga_preu_wrap: the PREU's path
+        return name[len("u_preu."):]
+    if re.match(r"(in_q|mode_q|valid_q)\b", name):
+        return "input reg"
+    if re.match(r"(out_q|g_fold)", name):
+        return "output reg"
     name = re.sub(r"^(genblk\d+\.)*g_\w+\.g_(def|set)\.", "", name)
     if name.startswith("u_unit."):
         name = name[len("u_unit."):]
@@ -49,7 +55,9 @@ def main():
     if len(sys.argv) != 5:
         raise SystemExit("usage: fpga_report.py <config> <synth.json> <report.json> <stat.txt>")
     cfg, synth, report, stat = sys.argv[1:]
-    cells = json.load(open(synth))["modules"]["pree_fpga_wrap"]["cells"]
+    mods = json.load(open(synth))["modules"]
+    top = "pree_fpga_preu_wrap" if "pree_fpga_preu_wrap" in mods else "pree_fpga_wrap"
+    cells = mods[top]["cells"]
     types = {name: c["type"] for name, c in cells.items()}
     rep = json.load(open(report))
 

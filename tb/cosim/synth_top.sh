@@ -7,12 +7,13 @@
 # paths (tb/cosim/synth_top_depth.py) to OUTDIR/depth.md.
 # Memories are sized down for the run (HpAW=12 in 16 banks, IdxAW=8, PxAW=10 in 4 banks): their
 # block-RAM count scales with the sizes, the logic does not.
-# Usage: synth_top.sh OUTDIR
+# Usage: synth_top.sh OUTDIR [PIPEFAST]   (PIPEFAST 0, the default: the paper's PREUs; 1: the deep ones)
 set -euo pipefail
 out=${1:-build/cosim/synth}
+pipefast=${2:-0}
 mkdir -p "$out"
 srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
-params="chparam -set NumPreu 4 -set HpAW 12 -set HpBankW 4 -set IdxAW 8 -set PxAW 10 -set PxBankW 2 pree_top"
+params="chparam -set PipeFast $pipefast -set NumPreu 4 -set HpAW 12 -set HpBankW 4 -set IdxAW 8 -set PxAW 10 -set PxBankW 2 pree_top"
 cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top; write_json $out/netlist.json"
 echo "yosys -p '$cmd'"
 if ! yosys -q -l "$out/yosys.log" -p "$cmd" >/dev/null 2>&1; then
@@ -41,7 +42,7 @@ row() {
 {
   echo "| design | LUT | FF | CARRY4 | MUXF7 | MUXF8 | DSP48E1 | RAMB36E1 | RAMB18E1 | RAM64M/RAM32M |"
   echo "|---|---|---|---|---|---|---|---|---|---|"
-  row "pree_top NumPreu=4, whole design" total
+  row "pree_top NumPreu=4, PipeFast=$pipefast, whole design" total
   row "pree_top's own logic (lanes, crossbars, hazards, counters)" own
   row "pree_aftso_hpuoc" aftso
   row "pree_adiso_rec" adiso
