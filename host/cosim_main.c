@@ -223,92 +223,202 @@ static const struct option cosim_longopts[] = {
     {NULL, 0, NULL, 0}
 };
 
-int pree_cmd_cosim(int argc, char **argv)
+/* The command line of pree cosim beyond the render options. */
+typedef struct {
+    const char *scene, *stats, *out, *trace;
+    int reference, reorder, schedule, window, model_only, axi, pipefast;
+    uint64_t win_from, win_to;         /* --trace-window */
+    double gap;
+} cosim_args_t;
+
+/* Scans the command line into opt and c: -1 to go on, else the exit status (0 after --help, 2 on
+ * a usage error, with its message printed). */
+static int parse_args(int argc, char **argv, render_options_t *opt, cosim_args_t *c)
 {
-    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
-                            .grid = GRID_CELLS, .preu = 4, .progress = 1};
-    const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0, pipefast = 0;
-    uint64_t win_from = 0, win_to = UINT64_MAX;
-    double gap = 0;
-    char err[1024];
+    *c = (cosim_args_t){.reference = 1, .reorder = 1, .schedule = 1, .window = 128, .win_to = UINT64_MAX};
     cli_args_t a;
-    cli_begin(&a, argc, argv, "cosim", cosim_longopts, &opt, 11);
+    cli_begin(&a, argc, argv, "cosim", cosim_longopts, opt, 11);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         if (id < 0) return 2;
         switch (id) {
         case CLI_HELP: cosim_usage(stdout); return 0;
         case OPT_GAP:
-            if (cli_real(&a, 0, 0, 1, &gap)) return 2;
-            if (gap == 1) return cli_error(&a, "--gap: '%s' is not in [0, 1)", a.val);
+            if (cli_real(&a, 0, 0, 1, &c->gap)) return 2;
+            if (c->gap == 1) return cli_error(&a, "--gap: '%s' is not in [0, 1)", a.val);
             break;
-        case OPT_NO_REFERENCE: reference = 0; break;
-        case OPT_NO_REORDER: reorder = 0; break;
-        case OPT_NO_SCHEDULE: schedule = 0; break;
-        case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; window = (int)v; break;
-        case OPT_TRACE: trace_path = a.val; break;
+        case OPT_NO_REFERENCE: c->reference = 0; break;
+        case OPT_NO_REORDER: c->reorder = 0; break;
+        case OPT_NO_SCHEDULE: c->schedule = 0; break;
+        case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; c->window = (int)v; break;
+        case OPT_TRACE: c->trace = a.val; break;
         case OPT_TRACE_WINDOW: {
             unsigned long long w0, w1;
             char end;
             if (sscanf(a.val, "%llu:%llu%c", &w0, &w1, &end) != 2 || w1 < w0)
                 return cli_error(&a, "--trace-window: '%s' is not FIRST:LAST (cycles)", a.val);
-            win_from = w0;
-            win_to = w1;
+            c->win_from = w0;
+            c->win_to = w1;
             break;
         }
-        case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; out_path = a.val; break;
-        case OPT_STATS: stats_path = a.val; break;
-        case OPT_MODEL_ONLY: model_only = 1; break;
-        case OPT_AXI: axi = 1; break;
-        case OPT_PIPE_FAST: pipefast = 1; break;
+        case OPT_OUT: if (cli_image_ext(&a, a.val)) return 2; c->out = a.val; break;
+        case OPT_STATS: c->stats = a.val; break;
+        case OPT_MODEL_ONLY: c->model_only = 1; break;
+        case OPT_AXI: c->axi = 1; break;
+        case OPT_PIPE_FAST: c->pipefast = 1; break;
         }
     }
-    if (!(scene_path = cli_scene(&a))) return 2;
-    if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
-    if (win_to != UINT64_MAX && !trace_path) return cli_error(&a, "--trace-window needs --trace");
-    if (axi != COSIM_DRV_AXI)
-        return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
-                                 : "this program drives pree_axi: give --axi");
-    const size_t npix = (size_t)opt.width * (size_t)opt.height;
-    if (npix > (1u << COSIM_PXAW))
-        return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt.width, opt.height, 1u << COSIM_PXAW);
+    if (!(c->scene = cli_scene(&a))) return 2;
+    if (c->model_only && !c->schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
+    if (c->win_to != UINT64_MAX && !c->trace) return cli_error(&a, "--trace-window needs --trace");
+    if (c->axi != COSIM_DRV_AXI)
+        return cli_error(&a, c->axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
+                                    : "this program drives pree_axi: give --axi");
+    if ((size_t)opt->width * (size_t)opt->height > (1u << COSIM_PXAW))
+        return cli_error(&a, "%dx%d has more pixels than the RTL's pixel memory (%u)", opt->width, opt->height,
+                         1u << COSIM_PXAW);
+    return -1;
+}
 
+/* The RTL model of the run with its run-time constants, its trace window set and the host's
+ * tables (--model-only's window, the reference's radiance order) checked against it; NULL with a
+ * message printed. */
+static cosim_rtl_t *open_rtl(const render_options_t *opt, const cosim_args_t *c, int dp, uint32_t alpha, int win)
+{
+    char err[1024];
+    cosim_rtl_t *rtl = cosim_rtl_new(opt->preu, dp, c->pipefast, c->trace, err, sizeof err);
+    if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); return NULL; }
+    cosim_rtl_in(rtl)->alpha = alpha;
+    cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
+    cosim_rtl_trace_window(rtl, c->win_from, c->win_to);
+    if (cosim_rtl_update_window(rtl) != win || cosim_rtl_radiance_depth(rtl) != cosim_radiance_depth(c->pipefast)) {
+        fprintf(stderr, "pree cosim: the RTL's update window and radiance depth are %d and %d cycles, the host's "
+                "tables say %d and %d\n", cosim_rtl_update_window(rtl), cosim_rtl_radiance_depth(rtl), win,
+                cosim_radiance_depth(c->pipefast));
+        cosim_rtl_free(rtl);
+        return NULL;
+    }
+    return rtl;
+}
+
+/* The radiance pass in RTL (pixel words into Lr) and in the model (into Lm), in the same order:
+ * the differing words (the first five printed), or -1 with a message printed. */
+static long long compare_image(cosim_drv_t *drv, const render_result_t *res, int preu, int pipefast, size_t npix,
+                               uint32_t *Lr, uint32_t *Lm)
+{
+    const uint32_t ne = preu_n_emitted(res->stats.photons_emitted);
+    if (cosim_drv_radiance(drv, (uint32_t)res->hp.n, ne, npix, Lr)) {
+        fprintf(stderr, "pree cosim: radiance pass: %s\n", cosim_drv_error(drv));
+        return -1;
+    }
+    unsigned long long skipped;
+    if (radiance_fp32_words(&res->hp, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), Lm,
+                            &skipped)) {
+        fprintf(stderr, "pree cosim: out of memory\n");
+        return -1;
+    }
+    long long diff = 0;
+    for (size_t j = 0; j < npix * 3; j++) {
+        if (Lr[j] != Lm[j] && diff < 5)
+            fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
+        diff += Lr[j] != Lm[j];
+    }
+    return diff;
+}
+
+/* SSIM, SNR and the rest of the RTL image rgb against a double-precision render of the same
+ * scene, photons and grid: 0, or -1 with a message printed (-2: the comparison alone failed). */
+static int reference_metrics(const scene_t *scene, const render_options_t *opt, const double *rgb, pree_metrics_t *m)
+{
+    char err[1024];
+    const size_t npix = (size_t)opt->width * (size_t)opt->height;
+    render_options_t ropt = {.width = opt->width, .height = opt->height, .photons = opt->photons,
+                             .precision = PRECISION_DOUBLE, .grid = opt->grid, .threads = opt->threads,
+                             .no_skip = opt->no_skip, .preu = opt->preu};
+    render_result_t ref = {0};
+    if (render_run(scene, &ropt, &ref, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: reference: %s\n", err);
+        render_result_free(&ref);
+        return -1;
+    }
+    pree_image_t ia = {0}, ib = {0};
+    int rc = 0;
+    if (pree_image_alloc(&ia, opt->width, opt->height, err, sizeof err) ||
+        pree_image_alloc(&ib, opt->width, opt->height, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
+        rc = -1;
+    } else {
+        to_float(ref.rgb, npix * 3, ia.rgb);
+        to_float(rgb, npix * 3, ib.rgb);
+        if (pree_compare(&ia, &ib, m, err, sizeof err)) { fprintf(stderr, "pree cosim: compare: %s\n", err); rc = -2; }
+    }
+    pree_image_free(&ia);
+    pree_image_free(&ib);
+    render_result_free(&ref);
+    return rc;
+}
+
+/* The report's figures, its JSON (--stats) and the closing line: the exit status (0 when both
+ * comparisons show 0 differing words, or with --model-only), or 1 when the JSON is not written. */
+static int finish_report(cosim_report_t *rep, const cosim_args_t *c, int progress)
+{
+    char err[1024];
+    cosim_report_figures(rep);
+    if (rep->ops_upd != rep->ops_sent)
+        fprintf(stderr, "pree cosim: %llu update operations sent, %llu counted in the RTL\n",
+                (unsigned long long)rep->ops_sent, (unsigned long long)rep->ops_upd);
+    if (c->stats && cosim_report_write(c->stats, rep, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
+        return 1;
+    }
+    if (progress && c->model_only)
+        fprintf(stderr, "pree cosim: cycle model, %d PREUs: %llu ops in %llu cycles (utilization %.4f%%)\n",
+                rep->preu, (unsigned long long)rep->ops_upd, (unsigned long long)rep->cyc_upd, 100 * rep->util_upd);
+    else if (progress)
+        fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
+                "differing words: hit points %llu, image %llu%s\n",
+                rep->preu, (unsigned long long)rep->ops_upd, (unsigned long long)rep->cyc_upd, 100 * rep->util_upd,
+                rep->sim_ops_per_cpu_s, rep->hp_diff, rep->img_diff, rep->pass ? "" : " FAIL");
+    return rep->pass || c->model_only ? 0 : 1;
+}
+
+int pree_cmd_cosim(int argc, char **argv)
+{
+    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
+                            .grid = GRID_CELLS, .preu = 4, .progress = 1};
+    cosim_args_t c;
+    int st = parse_args(argc, argv, &opt, &c);
+    if (st >= 0) return st;
+    const size_t npix = (size_t)opt.width * (size_t)opt.height;
+    char err[1024];
     scene_t scene;
-    if (scene_load(scene_path, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
+    if (scene_load(c.scene, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
     const int dp = opt.datapath == DATAPATH_STABLE;
     /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
     const uint32_t alpha = preu_f32(render_alpha(&opt));
-    int hp_bank_w = 0, ppc = 0, win = cosim_update_window(dp, pipefast);
+    int hp_bank_w = 0, ppc = 0, win = cosim_update_window(dp, c.pipefast);
     cosim_rtl_t *rtl = NULL;
-    if (model_only) {          /* no RTL: the configuration the build would have */
-        if (cosim_rtl_config(opt.preu, &hp_bank_w, &ppc)) { scene_free(&scene); return cli_error(&a, "no pree_top configuration with %d PREUs", opt.preu); }
+    if (c.model_only) {        /* no RTL: the configuration the build would have */
+        if (cosim_rtl_config(opt.preu, &hp_bank_w, &ppc)) {
+            fprintf(stderr, "pree cosim: no pree_top configuration with %d PREUs\n", opt.preu);
+            scene_free(&scene);
+            return 2;
+        }
     } else {
-        rtl = cosim_rtl_new(opt.preu, dp, pipefast, trace_path, err, sizeof err);
-        if (!rtl) { fprintf(stderr, "pree cosim: %s\n", err); scene_free(&scene); return 1; }
-        cosim_rtl_in(rtl)->alpha = alpha;
-        cosim_rtl_in(rtl)->kappa = preu_kappa(alpha);
+        if (!(rtl = open_rtl(&opt, &c, dp, alpha, win))) { scene_free(&scene); return 1; }
         hp_bank_w = cosim_rtl_hp_bank_w(rtl);
         ppc = cosim_rtl_ppc(rtl);
-        cosim_rtl_trace_window(rtl, win_from, win_to);
-        /* The host's tables (--model-only, the reference's radiance order) against the RTL. */
-        if (cosim_rtl_update_window(rtl) != win || cosim_rtl_radiance_depth(rtl) != cosim_radiance_depth(pipefast)) {
-            fprintf(stderr, "pree cosim: the RTL's update window and radiance depth are %d and %d cycles, the host's "
-                    "tables say %d and %d\n", cosim_rtl_update_window(rtl), cosim_rtl_radiance_depth(rtl), win,
-                    cosim_radiance_depth(pipefast));
-            cosim_rtl_free(rtl); scene_free(&scene); return 1;
-        }
     }
-    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = reorder,
-                              .schedule = schedule, .window = window, .gap = gap, .seed = 1,
-                              .model_only = model_only, .ppc = ppc, .win = win};
+    cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = c.reorder,
+                              .schedule = c.schedule, .window = c.window, .gap = c.gap, .seed = 1,
+                              .model_only = c.model_only, .ppc = ppc, .win = win};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
 
     int status = 1;
-    render_result_t res = {0}, ref = {0};
+    render_result_t res = {0};
     uint32_t *Lr = NULL, *Lm = NULL, *abuf = NULL;
     size_t acap = 0;
     double *rgb = NULL;
@@ -317,7 +427,7 @@ int pree_cmd_cosim(int argc, char **argv)
      * (the candidates that pass the host's tests) go to the RTL after the model applied them. */
     render_session_t *rs = ctx.drv ? render_open(&scene, &opt, &res, err, sizeof err) : NULL;
     if (!ctx.drv) snprintf(err, sizeof err, "out of memory");
-    int rc = !rs ? -1 : model_only ? 0 : load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err);
+    int rc = !rs ? -1 : c.model_only ? 0 : load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err);
     int streamed = 0;
     while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
         if (stream_block(&ctx, render_block_ops(rs), render_hp_address(rs), &abuf, &acap)) { streamed = -1; break; }
@@ -326,124 +436,64 @@ int pree_cmd_cosim(int argc, char **argv)
         int rc2 = render_close(rs, err, sizeof err);
         if (rc == 0) rc = rc2;
     }
-    double sec_engine = now() - t_start;
+    cosim_report_t rep = {.scene = c.scene, .width = opt.width, .height = opt.height, .datapath = dp,
+                          .preu = opt.preu, .ppc = ppc, .model_only = c.model_only, .axi = c.axi,
+                          .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .update_window = win,
+                          .alpha = (double)fp32_from_bits(alpha), .gap = c.gap};
+    rep.sec_engine = now() - t_start;
     if (rc != 0 || streamed) {
-        fprintf(stderr, "pree cosim: %s: %s\n", scene_path, streamed ? cosim_drv_error(ctx.drv) : err);
+        fprintf(stderr, "pree cosim: %s: %s\n", c.scene, streamed ? cosim_drv_error(ctx.drv) : err);
         goto out;
     }
     double t0 = now(), c0 = cpu_now();
     if (cosim_drv_drain(ctx.drv)) { fprintf(stderr, "pree cosim: %s\n", cosim_drv_error(ctx.drv)); goto out; }
-    double sec_update_rtl = ctx.sec_rtl + (now() - t0);
-    double cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
-    uint64_t cnt_upd[COSIM_NCNT], cnt_all[COSIM_NCNT];
-    unsigned long long hp_diff = 0, hp_diff_points = 0, img_diff = 0;
+    rep.sec_update_rtl = ctx.sec_rtl + (now() - t0);
+    rep.cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
     size_t first_hp = SIZE_MAX;
-    pree_metrics_t metrics = {0};
-    int have_m = 0;
-    double sec_rad_rtl = 0;
-    if (model_only) {          /* the cycle model's counters stand for the RTL's */
+    if (c.model_only) {        /* the cycle model's counters stand for the RTL's */
         cosim_sched_stats_t ss;
         cosim_drv_sched_stats(ctx.drv, &ss);
-        memcpy(cnt_upd, ss.cnt, sizeof cnt_upd);
-        memcpy(cnt_all, ss.cnt, sizeof cnt_all);
-        reference = 0;
-        goto figures;
-    }
-    cosim_drv_counters(ctx.drv, cnt_upd);
-
-    /* Hit-point memory against the fp32 model's final state. */
-    hp_diff = compare_hit_points(ctx.drv, &res.hp, dp, &hp_diff_points, &first_hp);
-
-    /* Radiance in RTL and in the model, same order. */
-    Lr = calloc(npix * 3, sizeof *Lr);
-    Lm = calloc(npix * 3, sizeof *Lm);
-    rgb = malloc(npix * 3 * sizeof *rgb);
-    if (!Lr || !Lm || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
-    const uint32_t ne = preu_n_emitted(res.stats.photons_emitted);
-    t0 = now();
-    if (cosim_drv_radiance(ctx.drv, (uint32_t)res.hp.n, ne, npix, Lr)) {
-        fprintf(stderr, "pree cosim: radiance pass: %s\n", cosim_drv_error(ctx.drv));
-        goto out;
-    }
-    sec_rad_rtl = now() - t0;
-    cosim_drv_counters(ctx.drv, cnt_all);
-    unsigned long long skipped;
-    if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(pipefast), Lm,
-                            &skipped)) {
-        fprintf(stderr, "pree cosim: out of memory\n");
-        goto out;
-    }
-    for (size_t j = 0; j < npix * 3; j++) {
-        if (Lr[j] != Lm[j] && img_diff < 5)
-            fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
-        img_diff += Lr[j] != Lm[j];
-    }
-    for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
-    if (out_path && pree_image_write(out_path, opt.width, opt.height, rgb, err, sizeof err)) {
-        fprintf(stderr, "pree cosim: %s\n", err);
-        goto out;
-    }
-
-    /* The double-precision reference render. */
-    if (reference) {
-        render_options_t ropt = {.width = opt.width, .height = opt.height, .photons = opt.photons,
-                                 .precision = PRECISION_DOUBLE, .grid = opt.grid, .threads = opt.threads,
-                                 .no_skip = opt.no_skip, .preu = opt.preu};
-        if (render_run(&scene, &ropt, &ref, err, sizeof err)) { fprintf(stderr, "pree cosim: reference: %s\n", err); goto out; }
-        pree_image_t ia = {0}, ib = {0};
-        if (pree_image_alloc(&ia, opt.width, opt.height, err, sizeof err) ||
-            pree_image_alloc(&ib, opt.width, opt.height, err, sizeof err)) {
+        memcpy(rep.cnt_upd, ss.cnt, sizeof rep.cnt_upd);
+        memcpy(rep.cnt_all, ss.cnt, sizeof rep.cnt_all);
+    } else {
+        cosim_drv_counters(ctx.drv, rep.cnt_upd);
+        /* Hit-point memory against the fp32 model's final state, then the image. */
+        rep.hp_diff = compare_hit_points(ctx.drv, &res.hp, dp, &rep.hp_diff_points, &first_hp);
+        Lr = calloc(npix * 3, sizeof *Lr);
+        Lm = calloc(npix * 3, sizeof *Lm);
+        rgb = malloc(npix * 3 * sizeof *rgb);
+        if (!Lr || !Lm || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
+        t0 = now();
+        long long img = compare_image(ctx.drv, &res, opt.preu, c.pipefast, npix, Lr, Lm);
+        if (img < 0) goto out;
+        rep.img_diff = (unsigned long long)img;
+        rep.sec_rad_rtl = now() - t0;
+        cosim_drv_counters(ctx.drv, rep.cnt_all);
+        for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
+        if (c.out && pree_image_write(c.out, opt.width, opt.height, rgb, err, sizeof err)) {
             fprintf(stderr, "pree cosim: %s\n", err);
-            pree_image_free(&ia);
             goto out;
         }
-        to_float(ref.rgb, npix * 3, ia.rgb);
-        to_float(rgb, npix * 3, ib.rgb);
-        if (pree_compare(&ia, &ib, &metrics, err, sizeof err)) fprintf(stderr, "pree cosim: compare: %s\n", err);
-        else have_m = 1;
-        pree_image_free(&ia);
-        pree_image_free(&ib);
+        if (c.reference) {
+            int m = reference_metrics(&scene, &opt, rgb, &rep.m);
+            if (m == -1) goto out;
+            rep.have_metrics = m == 0;
+        }
     }
-
-    /* Figures. */
-figures:;
-    cosim_report_t rep = {.scene = scene_path, .width = opt.width, .height = opt.height, .datapath = dp,
-                          .preu = opt.preu, .ppc = ppc, .model_only = model_only, .axi = axi,
-                          .reorder = reorder, .window = window, .pipe_fast = pipefast, .update_window = win,
-                          .photons_emitted = res.stats.photons_emitted,
-                          .alpha = (double)fp32_from_bits(alpha), .gap = gap,
-                          .hit_points = res.hp.n, .photons_sent = ctx.photons_sent, .photons_empty = ctx.photons_empty,
-                          .hp_diff = hp_diff, .hp_diff_points = hp_diff_points, .img_diff = img_diff,
-                          .ops_sent = cosim_drv_ops_sent(ctx.drv), .have_metrics = have_m, .m = metrics,
-                          .sec_engine = sec_engine, .sec_update_rtl = sec_update_rtl,
-                          .cpu_update_rtl = cpu_update_rtl, .sec_rad_rtl = sec_rad_rtl, .cpu_process = cpu_now()};
+    rep.photons_emitted = res.stats.photons_emitted;
+    rep.hit_points = res.hp.n;
+    rep.photons_sent = ctx.photons_sent;
+    rep.photons_empty = ctx.photons_empty;
+    rep.ops_sent = cosim_drv_ops_sent(ctx.drv);
+    rep.cpu_process = cpu_now();
     rep.have_sched = cosim_drv_sched_stats(ctx.drv, &rep.sched) == 0;
-    memcpy(rep.cnt_upd, cnt_upd, sizeof cnt_upd);
-    memcpy(rep.cnt_all, cnt_all, sizeof cnt_all);
-    cosim_report_figures(&rep);
-    if (rep.ops_upd != rep.ops_sent)
-        fprintf(stderr, "pree cosim: %llu update operations sent, %llu counted in the RTL\n",
-                (unsigned long long)rep.ops_sent, (unsigned long long)rep.ops_upd);
-    if (stats_path && cosim_report_write(stats_path, &rep, err, sizeof err)) {
-        fprintf(stderr, "pree cosim: %s\n", err);
-        goto out;
-    }
-    if (opt.progress && model_only)
-        fprintf(stderr, "pree cosim: cycle model, %d PREUs: %llu ops in %llu cycles (utilization %.4f%%)\n",
-                rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd);
-    else if (opt.progress)
-        fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
-                "differing words: hit points %llu, image %llu%s\n",
-                rep.preu, (unsigned long long)rep.ops_upd, (unsigned long long)rep.cyc_upd, 100 * rep.util_upd,
-                rep.sim_ops_per_cpu_s, hp_diff, img_diff, rep.pass ? "" : " FAIL");
-    status = rep.pass || model_only ? 0 : 1;
-    if (status && !trace_path && fail_trace_wanted()) leave_fail_trace(argc, argv, ctx.drv, first_hp, win);
+    status = finish_report(&rep, &c, opt.progress);
+    if (status && !rep.pass && !c.trace && fail_trace_wanted()) leave_fail_trace(argc, argv, ctx.drv, first_hp, win);
 out:
     free(Lr);
     free(Lm);
     free(rgb);
     render_result_free(&res);
-    if (reference) render_result_free(&ref);
     free(abuf);
     cosim_drv_free(ctx.drv);
     cosim_rtl_free(rtl);
