@@ -5,7 +5,7 @@
 # of its own (--photon-offset). Also the search-phase speedup of the clustered search over the
 # naive one (CPU seconds, one thread) and the tracing/search/frame speedup for 1 and 2 threads
 # with the dynamic and static task schedules. CPU seconds (user + sys) throughout: the machine is
-# shared. Tables in OUTDIR/pm_*.txt, the plot in OUTDIR/pm_bias.png.
+# shared. Tables in OUTDIR/pm_*.txt, the plots in OUTDIR/pm_bias.png and OUTDIR/pm_threads.png (2 threads over 1).
 # Usage: bench-pm.sh PREE OUTDIR [--quick]   (--quick: small sizes, for testing the script)
 # PM_SECTIONS="bias speedup threads" (the default) picks the parts to run; the speedup part
 # reads the bias part's references.
@@ -72,27 +72,44 @@ fi
 
 # Threads and task schedules (paper 001): tracing, search and whole frame; wall seconds (the only
 # measure of parallel speedup), medians of 3, with the CPU seconds beside them; at a quarter of
-# the largest photon count.
+# the largest photon count. The repetitions are interleaved (each round runs every configuration
+# once), so that a shared machine's changing load falls on all rows alike.
 thr="$out/pm_threads.txt"
 n=$((base << (2 * steps - 2)))
 if has threads; then
-printf '%-9s %8s %7s %10s %10s %10s %10s\n' schedule task threads trace_s search_s total_s cpu_s | tee "$thr"
-for sched in dynamic static; do
-  for task in 100 1000 10000; do
-    for t in 1 2; do
-      rows=()
-      for rep in 1 2 3; do
-        f="$out/pm-t"
-        /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render scenes/cornell3 --width $W --height $H --photons $n \
-            --estimator pm --task-schedule $sched --task-photons $task --threads $t --quiet --out "$f.exr" --stats "$f.json"
-        rows+=("$(js "$f.json" pm.sec_map) $(js "$f.json" pm.sec_search) $(js "$f.json" seconds.total) $(cpu_of "$f.cpu")")
-      done
-      printf '%s\n' "${rows[@]}" | sort -k3 -g | sed -n 2p | \
-        awk -v s=$sched -v k=$task -v t=$t '{printf "%-9s %8d %7d %10.3f %10.3f %10.3f %10.2f\n", s, k, t, $1, $2, $3, $4}' | tee -a "$thr"
-    done
+configs=()
+for sched in dynamic static; do for task in 100 1000 10000; do for t in 1 2; do configs+=("$sched $task $t"); done; done; done
+for c in "${configs[@]}"; do read -r sched task t <<<"$c"; rm -f "$out/pm-t-$sched-$task-$t.rows"; done
+for rep in 1 2 3; do
+  echo "bench-pm: threads round $rep of 3" >&2
+  for c in "${configs[@]}"; do
+    read -r sched task t <<<"$c"
+    f="$out/pm-t-$sched-$task-$t"
+    /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render scenes/cornell3 --width $W --height $H --photons $n \
+        --estimator pm --task-schedule $sched --task-photons $task --threads $t --quiet --out "$f.exr" --stats "$f.json"
+    echo "$(js "$f.json" pm.sec_map) $(js "$f.json" pm.sec_search) $(js "$f.json" seconds.total) $(cpu_of "$f.cpu")" >>"$f.rows"
   done
 done
-
+printf '%-9s %8s %7s %10s %10s %10s %10s\n' schedule task threads trace_s search_s total_s cpu_s | tee "$thr"
+for c in "${configs[@]}"; do
+  read -r sched task t <<<"$c"
+  f="$out/pm-t-$sched-$task-$t"
+  sort -k3 -g "$f.rows" | sed -n 2p | \
+    awk -v s=$sched -v k=$task -v t=$t '{printf "%-9s %8d %7d %10.3f %10.3f %10.3f %10.2f\n", s, k, t, $1, $2, $3, $4}' | tee -a "$thr"
+  rm -f "$f.rows"
+done
+# Speedup of 2 threads over 1 per configuration (tracing, search, whole frame), as a bar chart.
+awk 'NR>1 {k=$1" "$2; if ($3==1) {a[k]=$4; b[k]=$5; c[k]=$6} else if (k in a) printf "%s/%s %.3f %.3f %.3f\n", $1, $2, a[k]/$4, b[k]/$5, c[k]/$6}' \
+    "$thr" >"$out/pm_threads_speedup.dat"
+gnuplot <<GP
+set terminal pngcairo size 900,400 font ",10"
+set output "$out/pm_threads.png"
+set title "photon map, cornell3 ${W}x${H}, $n photons: speedup of 2 threads over 1 (medians of 3)"
+set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8 border -1
+set yrange [0:2.2]; set ylabel "speedup"; set grid ytics; set key top left
+set xlabel "schedule / photons per task unit"
+plot "$out/pm_threads_speedup.dat" using 2:xtic(1) title "tracing", '' using 3 title "search", '' using 4 title "whole frame"
+GP
 fi
 
 [ -s "$bias" ] || exit 0   # the plot, from this run's or an earlier run's bias table
