@@ -21,13 +21,14 @@ LINT_TARGETS  += lint-axi
 .PHONY: lint-axi synth-axi fit-table
 
 # pree_axi has no PipeFast parameter (its pree_top keeps the paper's PREUs; the program refuses
-# --pipe-fast): the pree_top parameters without it.
+# --pipe-fast) and takes one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's
+# port, not yet the wrapper's): the pree_top parameters without either.
 define AXI_VL_RULE
 $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(filter-out -GPipeFast=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  $(filter-out -GPipeFast=% -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a
 	@mkdir -p $$(@D)
