@@ -4,7 +4,8 @@
 #                      both datapaths (in `make lint`)
 #   make synth-axi     Yosys synth_xilinx of pree_axi: the wrapper's own logic (pree_top a black box)
 #                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
-#                      SYNTH_AXI_PREUS (default 4; over 7 CPU minutes): rows in $(AXI_DIR)/synth/*.md
+#                      SYNTH_AXI_PREUS (default 4; the reduced flow, synth_axi.sh --fast) into the
+#                      table of docs/integration.md (scripts/fpga_doc.py, markers synth-axi)
 #   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
 #                      s stable; n PREUs), built only when asked (the regression builds axi-p4)
@@ -51,7 +52,12 @@ lint-axi: | $(DEPS_STAMP)
 
 synth-axi: | $(DEPS_STAMP)
 	@set -e; for p in 4 8 16; do tb/axi/synth_axi.sh --own $$p $(AXI_DIR)/synth; done
-	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh $$p $(AXI_DIR)/synth; done
+	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh --fast $$p $(AXI_DIR)/synth; done
+	@{ echo '| design | LUT | FF | CARRY4 | DSP48E1 | RAMB36E1 | RAMB18E1 | LUTRAM |'; \
+	  echo '|---|---|---|---|---|---|---|---|'; \
+	  cat $(foreach p,4 8 16,$(AXI_DIR)/synth/own_p$(p).md) $(foreach p,$(SYNTH_AXI_PREUS),$(AXI_DIR)/synth/fast_p$(p).md); } \
+	  > $(AXI_DIR)/synth/resources.md
+	python3 scripts/fpga_doc.py docs/integration.md synth-axi $(AXI_DIR)/synth/resources.md
 
 fit-table:
 	python3 scripts/pree_fit.py
