@@ -16,6 +16,7 @@
 #include "compare.h"
 #include "cosim_drv.h"
 #include "cosim_report.h"
+#include "cosim_sched.h"
 #include "cosim_shadow.h"
 #include "image.h"
 #include "radiance.h"
@@ -46,6 +47,10 @@ static double cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+#define STR_(x) #x
+#define STR(x) STR_(x)
+#define WINDOW_16_STR STR(COSIM_SCHED_WINDOW_16)
+
 static void cosim_usage(FILE *f)
 {
     fprintf(f,
@@ -62,7 +67,8 @@ static void cosim_usage(FILE *f)
         "  --no-reorder           stream each photon's candidates in the engine's order\n"
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
-        "  --window W             photons the scheduler holds pending (default 128)\n"
+        "  --window W             photons the scheduler holds pending (default 128; " WINDOW_16_STR " with\n"
+        "                         16 PREUs)\n"
         "  --model-only           the scheduler's cycle model alone (the RTL not clocked, no\n"
         "                         comparison): its predicted update pass in the --stats report\n"
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
@@ -159,7 +165,7 @@ int pree_cmd_cosim(int argc, char **argv)
     render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_FP32,
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path, *stats_path = NULL, *out_path = NULL, *trace_path = NULL;
-    int reference = 1, reorder = 1, schedule = 1, window = 128, model_only = 0, axi = 0, pipefast = 0;
+    int reference = 1, reorder = 1, schedule = 1, window = 0, model_only = 0, axi = 0, pipefast = 0;
     double gap = 0;
     char err[1024];
     cli_args_t a;
@@ -186,6 +192,7 @@ int pree_cmd_cosim(int argc, char **argv)
         }
     }
     if (!(scene_path = cli_scene(&a))) return 2;
+    if (!window) window = cosim_sched_default_window(opt.preu);
     if (model_only && !schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
     if (axi != COSIM_DRV_AXI)
         return cli_error(&a, axi ? "--axi: this program drives pree_top (run 'pree cosim --axi', build/pree-cosim-axi-*)"
