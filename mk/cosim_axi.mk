@@ -8,7 +8,8 @@
 #                      table of docs/integration.md (scripts/fpga_doc.py, markers synth-axi)
 #   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
-#                      s stable; n PREUs), built only when asked (the regression builds axi-p4)
+#                      s stable; n PREUs), built only when asked (the regression builds axi-p4 and
+#                      -p8: tests/checks/axi_cosim.sh, axi_cosim_wide.sh)
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
@@ -16,7 +17,7 @@ AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
 AXI_MDIR    = $(AXI_DIR)/vl_$(2)$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
 SYNTH_AXI_PREUS ?= 4
 
-TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
+TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4 $(BUILD)/pree-cosim-axi-p8
 LINT_TARGETS  += lint-axi
 
 .PHONY: lint-axi synth-axi fit-table
