@@ -17,6 +17,7 @@
 #include "compare.h"
 #include "cosim_drv.h"
 #include "cosim_report.h"
+#include "cosim_sched.h"
 #include "cosim_shadow.h"
 #include "fail_trace.h"
 #include "image.h"
@@ -48,6 +49,10 @@ static double cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+#define STR_(x) #x
+#define STR(x) STR_(x)
+#define WINDOW_16_STR STR(COSIM_SCHED_WINDOW_16)
+
 static void cosim_usage(FILE *f)
 {
     fprintf(f,
@@ -66,7 +71,8 @@ static void cosim_usage(FILE *f)
         "  --no-reorder           stream each photon's candidates in the engine's order\n"
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
-        "  --window W             photons the scheduler holds pending (default 128)\n"
+        "  --window W             photons the scheduler holds pending (default 128; " WINDOW_16_STR " with\n"
+        "                         16 PREUs)\n"
         "  --model-only           the scheduler's cycle model alone (the RTL not clocked, no\n"
         "                         comparison): its predicted update pass in the --stats report\n"
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
@@ -235,7 +241,7 @@ typedef struct {
  * a usage error, with its message printed). */
 static int parse_args(int argc, char **argv, render_options_t *opt, cosim_args_t *c)
 {
-    *c = (cosim_args_t){.reference = 1, .reorder = 1, .schedule = 1, .window = 128, .win_to = UINT64_MAX};
+    *c = (cosim_args_t){.reference = 1, .reorder = 1, .schedule = 1, .win_to = UINT64_MAX};
     cli_args_t a;
     cli_begin(&a, argc, argv, "cosim", cosim_longopts, opt, 11);
     for (int id; (id = cli_next(&a)) != 0;) {
@@ -269,6 +275,7 @@ static int parse_args(int argc, char **argv, render_options_t *opt, cosim_args_t
         }
     }
     if (!(c->scene = cli_scene(&a))) return 2;
+    if (!c->window) c->window = cosim_sched_default_window(opt->preu);
     if (c->model_only && !c->schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
     if (c->win_to != UINT64_MAX && !c->trace) return cli_error(&a, "--trace-window needs --trace");
     if (c->axi != COSIM_DRV_AXI)

@@ -58,6 +58,17 @@ typedef int (*cosim_sched_emit_fn)(void *user, const preu_photon_t *ph, const ui
                                    uint32_t n, int first, uint32_t *p);
 typedef struct cosim_sched cosim_sched_t;
 
+/* The default window (pending photons) for NumPreu PREUs: 128, and COSIM_SCHED_WINDOW_16 with 16.
+ * Whole frame of cornell3 (320x240 / 768k), cycle model, 16 PREUs: windows 128, 96, 64, 32 left
+ * 482, 362, 176, 65 hazard cycles (99.806% to 99.874% utilization, docs/pree_top.md): with four
+ * photons taken a cycle a large window moves more photons ahead of older ones, which then
+ * become eligible together and meet their neighbours' operations still in flight. */
+#define COSIM_SCHED_WINDOW_16 32
+static inline int cosim_sched_default_window(int preu)
+{
+    return preu >= 16 ? COSIM_SCHED_WINDOW_16 : 128;
+}
+
 cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_fn emit, void *user);
 void cosim_sched_free(cosim_sched_t *s);
 int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *hps, uint32_t n);

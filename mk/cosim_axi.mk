@@ -4,10 +4,14 @@
 #                      both datapaths (in `make lint`)
 #   make synth-axi     Yosys synth_xilinx of pree_axi: the wrapper's own logic (pree_top a black box)
 #                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
-#                      SYNTH_AXI_PREUS (default 4; over 7 CPU minutes): rows in $(AXI_DIR)/synth/*.md
+#                      SYNTH_AXI_PREUS (default 4; the reduced flow, synth_axi.sh --fast) into the
+#                      table of docs/integration.md (scripts/fpga_doc.py, markers synth-axi)
 #   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
-#                      s stable; n PREUs), built only when asked (the regression builds axi-p4)
+#                      s stable; n PREUs), built only when asked (the regression builds axi-p4:
+#                      tests/checks/axi_cosim.sh)
+#   make sim-axi-wide  the wrapper with 8 PREUs against the model (tb/axi/axi_cosim_wide.sh; its
+#                      model takes about 15 minutes to build, so it is outside `make test`)
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
@@ -18,16 +22,19 @@ SYNTH_AXI_PREUS ?= 4
 TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
 LINT_TARGETS  += lint-axi
 
-.PHONY: lint-axi synth-axi fit-table
+.PHONY: lint-axi synth-axi fit-table sim-axi-wide
+sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
+	@bash tb/axi/axi_cosim_wide.sh
 
 # pree_axi has no PipeFast parameter (its pree_top keeps the paper's PREUs; the program refuses
-# --pipe-fast): the pree_top parameters without it.
+# --pipe-fast) and takes one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's
+# port, not yet the wrapper's): the pree_top parameters without either.
 define AXI_VL_RULE
 $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(filter-out -GPipeFast=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  $(filter-out -GPipeFast=% -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a
 	@mkdir -p $$(@D)
@@ -50,7 +57,12 @@ lint-axi: | $(DEPS_STAMP)
 
 synth-axi: | $(DEPS_STAMP)
 	@set -e; for p in 4 8 16; do tb/axi/synth_axi.sh --own $$p $(AXI_DIR)/synth; done
-	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh $$p $(AXI_DIR)/synth; done
+	@set -e; for p in $(SYNTH_AXI_PREUS); do tb/axi/synth_axi.sh --fast $$p $(AXI_DIR)/synth; done
+	@{ echo '| design | LUT | FF | CARRY4 | DSP48E1 | RAMB36E1 | RAMB18E1 | LUTRAM |'; \
+	  echo '|---|---|---|---|---|---|---|---|'; \
+	  cat $(foreach p,4 8 16,$(AXI_DIR)/synth/own_p$(p).md) $(foreach p,$(SYNTH_AXI_PREUS),$(AXI_DIR)/synth/fast_p$(p).md); } \
+	  > $(AXI_DIR)/synth/resources.md
+	python3 scripts/fpga_doc.py docs/integration.md synth-axi $(AXI_DIR)/synth/resources.md
 
 fit-table:
 	python3 scripts/pree_fit.py
