@@ -88,7 +88,7 @@ static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t er
     for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
     part->num_entries = part->start[buckets];
     const size_t n = part->num_entries + GRID_ENTRY_PAD;
-    double *base = calloc(n, 6 * sizeof(double) + sizeof(uint32_t));   /* the padding reads as zeros */
+    double *base = calloc(n, GRID_ENTRY_BYTES);   /* the padding reads as zeros */
     if (!base) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
     part->px = base; part->py = base + n; part->pz = base + 2 * n;
     part->nx = base + 3 * n; part->ny = base + 4 * n; part->nz = base + 5 * n;

@@ -30,6 +30,8 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 #define GRID_DENSE_MAX ((uint64_t)1 << 23)
 /* Entries allocated beyond the last, so that four-wide loads at a bucket's end stay in bounds. */
 #define GRID_ENTRY_PAD 4
+/* Bytes per entry (grid_part_t: a position, a normal and a hit-point index). */
+#define GRID_ENTRY_BYTES (6 * sizeof(double) + sizeof(uint32_t))
 /* GRID_CELLS cell coordinates take CELL_BITS bits each in a packed key. */
 #define CELL_BITS 21
 
