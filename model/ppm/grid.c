@@ -88,11 +88,8 @@ static int finish_counts(grid_part_t *part, size_t buckets, char *err, size_t er
     for (size_t b = 0; b < buckets; b++) part->start[b + 1] += part->start[b];
     part->num_entries = part->start[buckets];
     const size_t n = part->num_entries + GRID_ENTRY_PAD;
-    double *base = calloc(n, 6 * sizeof(double) + sizeof(uint32_t));   /* the padding reads as zeros */
-    if (!base) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
-    part->px = base; part->py = base + n; part->pz = base + 2 * n;
-    part->nx = base + 3 * n; part->ny = base + 4 * n; part->nz = base + 5 * n;
-    part->hp = (uint32_t *)(base + 6 * n);
+    part->hp = calloc(n, GRID_ENTRY_BYTES);   /* the padding reads as zeros: hit point 0 */
+    if (!part->hp) { snprintf(err, errlen, "out of memory for the hit-point grid"); return -1; }
     return 0;
 }
 
@@ -348,20 +345,6 @@ static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, si
     return 0;
 }
 
-/* Fill every entry's copy of its hit point's geometry. */
-static void fill_entries(grid_t *g, const hitpoints_t *h)
-{
-    for (int p = 0; p < g->num_parts; p++) {
-        grid_part_t *part = &g->parts[p];
-#pragma omp parallel for schedule(static)
-        for (size_t k = 0; k < part->num_entries; k++) {
-            const hp_hot_t *hp = &h->hot[part->hp[k]];
-            part->px[k] = hp->px; part->py[k] = hp->py; part->pz[k] = hp->pz;
-            part->nx[k] = hp->nx; part->ny[k] = hp->ny; part->nz[k] = hp->nz;
-        }
-    }
-}
-
 int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int width,
                int num_parts, int include_zero_weight, const stop_flag_t *stop, char *err, size_t errlen)
 {
@@ -370,6 +353,7 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
     g->kind = kind;
     g->num_parts = num_parts;
     g->r0 = r0;
+    g->hot = h->hot;
     double max_abs = 0;
     for (size_t i = 0; i < h->n; i++) {
         const hp_hot_t *p = &h->hot[i];
@@ -384,7 +368,6 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
     default: rc = build_brute(g, h, width, err, errlen); break;
     }
     if (rc == 0 && stop_requested(stop)) { snprintf(err, errlen, STOP_MESSAGE); rc = -1; }
-    if (rc == 0) fill_entries(g, h);
     if (rc) grid_free(g);
     return rc;
 }
@@ -396,7 +379,7 @@ void grid_free(grid_t *g)
         free(g->dense);
         for (int p = 0; p < g->num_parts; p++) {
             free(g->parts[p].start);
-            free(g->parts[p].px);
+            free(g->parts[p].hp);
         }
     }
     free(g->parts);

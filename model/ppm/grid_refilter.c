@@ -57,10 +57,7 @@ static size_t refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, i
         const size_t lo = part->start[b], hi = part->start[b + 1];
         part->start[b] = (uint32_t)w;
         for (size_t k = lo; k < hi; k++) {
-            if (!still_reaches(g, h, prec, part->hp[k], key[b])) continue;
-            part->px[w] = part->px[k]; part->py[w] = part->py[k]; part->pz[w] = part->pz[k];
-            part->nx[w] = part->nx[k]; part->ny[w] = part->ny[k]; part->nz[w] = part->nz[k];
-            part->hp[w++] = part->hp[k];
+            if (still_reaches(g, h, prec, part->hp[k], key[b])) part->hp[w++] = part->hp[k];
         }
     }
     part->start[g->num_buckets] = (uint32_t)w;

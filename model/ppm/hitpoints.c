@@ -49,6 +49,12 @@ int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src)
     return 0;
 }
 
+size_t hitpoints_bytes_each(const hitpoints_t *h)
+{
+    return sizeof *h->hot + sizeof *h->weight + sizeof *h->flux + sizeof *h->pixel + sizeof *h->r2 +
+           (h->r2_f32 ? sizeof *h->r2_f32 : 0) + (h->fp32 ? sizeof *h->fp32 : 0) + (h->stable ? sizeof *h->stable : 0);
+}
+
 void hitpoints_free(hitpoints_t *h)
 {
     free(h->hot);

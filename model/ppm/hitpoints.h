@@ -41,5 +41,7 @@ typedef struct {
 int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel, uint32_t object);
 int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src);
 void hitpoints_free(hitpoints_t *h);
+/* Bytes held per hit point by the arrays h has (geometry, weight, pixel, double and fp32 state). */
+size_t hitpoints_bytes_each(const hitpoints_t *h);
 
 #endif

@@ -235,6 +235,8 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     st->r_safe = s->grid.r_safe;
     for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
     st->grid_entries_final = st->grid_entries;
+    st->hit_point_bytes = hitpoints_bytes_each(&res->hp);
+    st->grid_entry_bytes = GRID_ENTRY_BYTES;
     st->sec_grid = omp_get_wtime() - t;
 
     s->emitted_target = render_emitted(opt->photons);
@@ -289,11 +291,12 @@ static int update_block(render_session_t *s)
 
 /* Radii only shrink: after blocks 1, 2, 4, 8, ... drop the grid entries that the current radii
  * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor when recording the
- * co-simulation's operations (the host does not read the PREE's radii). 0 or -1 (memory). */
+ * co-simulation's operations (the host does not read the PREE's radii), nor with the environment
+ * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). 0 or -1 (memory). */
 static int refilter_block(render_session_t *s)
 {
     s->blocks++;
-    if (!s->skip || s->opt.record_ops || (s->blocks & (s->blocks - 1))) return 0;
+    if (!s->skip || s->opt.record_ops || (s->blocks & (s->blocks - 1)) || getenv("PREE_NO_REFILTER")) return 0;
     render_stats_t *st = &s->res->stats;
     const double t = omp_get_wtime();
     const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, s->T);

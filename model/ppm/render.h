@@ -74,6 +74,8 @@ typedef struct {
     size_t grid_entries_final;        /* after the last re-filter against the current radii */
     unsigned long long grid_refilters;
     double peak_bytes_per_hit_point;  /* peak resident memory over hit points */
+    size_t hit_point_bytes;           /* bytes of the hit-point arrays per hit point */
+    size_t grid_entry_bytes;          /* bytes per grid entry */
     double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_refilter, sec_radiance, sec_total;
     long peak_rss_kb;
     int threads;

@@ -15,7 +15,7 @@ static const json_field_t counts[] = {
     SK(upd.candidates, JF_U64, "hpuo_candidates"), SK(upd.skipped_radius, JF_U64, "skip_candidates_outside_radius"),
     SK(upd.normal_passed, JF_U64, "hpuo_normal_passed"), SK(upd.accepted, JF_U64, "hpuo_accepted"),
     SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
-    S(peak_bytes_per_hit_point, JF_REAL),
+    S(peak_bytes_per_hit_point, JF_REAL), S(hit_point_bytes, JF_U64), S(grid_entry_bytes, JF_U64),
     S(image_hash, JF_HEX64), S(state_hash, JF_HEX64), S(time_limited, JF_BOOL), S(photons_resumed, JF_U64),
 };
 static const json_field_t contents[] = {

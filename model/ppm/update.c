@@ -17,12 +17,16 @@ static void scan_double(hitpoints_t *h, grid_t *g, int skip_radius, const photon
     const double x = ph->x.x, y = ph->x.y, z = ph->x.z;
     const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
     for (size_t c = 0; c < e->count; c++) {
-        if (c + RADIUS_AHEAD < e->count) __builtin_prefetch(&h->r2[e->hp[c + RADIUS_AHEAD]]);
-        double vx = e->px[c] - x, vy = e->py[c] - y, vz = e->pz[c] - z;
+        if (c + RADIUS_AHEAD < e->count) {
+            __builtin_prefetch(&h->r2[e->hp[c + RADIUS_AHEAD]]);
+            __builtin_prefetch(&e->hot[e->hp[c + RADIUS_AHEAD]]);
+        }
+        const hp_hot_t *q = &e->hot[e->hp[c]];
+        double vx = q->px - x, vy = q->py - y, vz = q->pz - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         /* Radii only shrink: a candidate beyond the safe initial radius never accepts. */
         if (skip_radius && v2 > rs2) { s->skipped_radius++; continue; }
-        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(q->nx * nx + q->ny * ny + q->nz * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
         if (v2 <= h->r2[e->hp[c]]) {
             update_accept_double(h, e->hp[c], ph->flux);
@@ -72,15 +76,16 @@ static void scan_fp32(hitpoints_t *h, grid_t *g, int skip_radius, const photon_h
     const float fx = fp32_from_bits(ph32.pos[0]), fy = fp32_from_bits(ph32.pos[1]), fz = fp32_from_bits(ph32.pos[2]);
     const double nx = ph->n.x, ny = ph->n.y, nz = ph->n.z;
     for (size_t c = 0; c < count; c++) {
+        const hp_hot_t *q = &e->hot[e->hp[c]];
         if (skip_radius) {
-            double vx = e->px[c] - ph->x.x, vy = e->py[c] - ph->x.y, vz = e->pz[c] - ph->x.z;
+            double vx = q->px - ph->x.x, vy = q->py - ph->x.y, vz = q->pz - ph->x.z;
             if (vx * vx + vy * vy + vz * vz > rs2) { s->skipped_radius++; continue; }
         }
-        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(q->nx * nx + q->ny * ny + q->nz * nz > UPDATE_NORMAL_COS)) continue;
         s->normal_passed++;
         const uint32_t hp = e->hp[c];
         if (ops) ops->hp[ops->n_ops++] = hp;
-        float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
+        float dx = (float)q->px - fx, dy = (float)q->py - fy, dz = (float)q->pz - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (!(d2 <= fp32_from_bits(h->r2_f32[hp]))) continue;
         s->accepted += (unsigned long long)update_apply_fp32(h, hp, &ph32, d2);
@@ -107,11 +112,11 @@ static inline lookup_t lookup(const grid_t *g, int p, const photon_hit_t *ph)
 static inline void prefetch_lookup(const hitpoints_t *h, precision_t prec, const lookup_t *l)
 {
     if (!l->count) return;
-    __builtin_prefetch(l->px);
-    __builtin_prefetch(l->nx);
     __builtin_prefetch(l->hp);
-    for (size_t c = 0; c < l->count && c < 4; c++)
+    for (size_t c = 0; c < l->count && c < 4; c++) {
+        __builtin_prefetch(&l->hot[l->hp[c]]);
         if (prec == PRECISION_DOUBLE) __builtin_prefetch(&h->r2[l->hp[c]]);
+    }
 }
 
 void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_radius,
@@ -121,7 +126,7 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
     lookup_t ring[LOOKAHEAD];
     for (size_t k = 0; k < n && k < LOOKAHEAD; k++) {
         ring[k] = lookup(g, p, &hits[k]);
-        if (ring[k].count) __builtin_prefetch(ring[k].px);
+        if (ring[k].count) __builtin_prefetch(ring[k].hp);
     }
     for (size_t k = 0; k < n; k++) {
         lookup_t cur = ring[k % LOOKAHEAD];

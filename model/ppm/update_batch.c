@@ -26,6 +26,12 @@
 #define RADIX_PARALLEL_MIN 32768   /* keys below which a radix pass runs on one thread */
 #define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
 #define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
+/* The AVX2 screening gathers a hit point's position and normal (hp_hot_t's first six doubles) at
+ * the 32-bit signed double index hp * HOT_DOUBLES: up to HOT_GATHER_MAX hit points. */
+#define HOT_DOUBLES (sizeof(hp_hot_t) / sizeof(double))
+#define HOT_GATHER_MAX ((size_t)INT32_MAX / HOT_DOUBLES)
+_Static_assert(sizeof(hp_hot_t) % sizeof(double) == 0 && offsetof(hp_hot_t, px) == 0 &&
+               offsetof(hp_hot_t, nz) == 5 * sizeof(double), "hp_hot_t: the position and normal lead, in doubles");
 
 void update_batch_free(update_batch_t *b)
 {
@@ -177,10 +183,11 @@ static int screen_double(const hitpoints_t *h, double rs2, int skip_radius, cons
     const double x = ph->x, y = ph->y, z = ph->z;
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
     for (size_t c = 0; c < e->count; c++) {
-        double vx = e->px[c] - x, vy = e->py[c] - y, vz = e->pz[c] - z;
+        const hp_hot_t *q = &e->hot[e->hp[c]];
+        double vx = q->px - x, vy = q->py - y, vz = q->pz - z;
         double v2 = vx * vx + vy * vy + vz * vz;
         if (skip_radius && v2 > rs2) { st->skipped_radius++; continue; }
-        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(q->nx * nx + q->ny * ny + q->nz * nz > UPDATE_NORMAL_COS)) continue;
         st->normal_passed++;
         if (v2 <= h->r2[e->hp[c]] && keep(s, b, ph->hit, e->hp[c], v2)) return -1;
     }
@@ -217,21 +224,25 @@ static int screen_avx2(const hitpoints_t *h, double rs2, int skip_radius, const 
     const __m256d cosl = _mm256_set1_pd(UPDATE_NORMAL_COS);
     const float *r2f = (const float *)(const void *)h->r2_f32;
     unsigned long long skipped = 0, passed = 0;
+    const double *hot = (const double *)(const void *)e->hot;   /* HOT_DOUBLES doubles per hit point */
+    const __m128i stride = _mm_set1_epi32((int)HOT_DOUBLES);
     for (size_t c = 0; c < e->count; c += 4) {
         const __m256d valid = valid_lanes(e->count - c);
-        const __m256d px = _mm256_loadu_pd(e->px + c), py = _mm256_loadu_pd(e->py + c), pz = _mm256_loadu_pd(e->pz + c);
+        const __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
+        const __m128i at = _mm_mullo_epi32(idx, stride);   /* < 2^31: h->n <= HOT_GATHER_MAX */
+#define HOT_LOAD(field) _mm256_mask_i32gather_pd(_mm256_setzero_pd(), hot + offsetof(hp_hot_t, field) / sizeof(double), at, valid, 8)
+        const __m256d px = HOT_LOAD(px), py = HOT_LOAD(py), pz = HOT_LOAD(pz);
         __m256d vx = _mm256_sub_pd(px, x), vy = _mm256_sub_pd(py, y), vz = _mm256_sub_pd(pz, z);
         __m256d v2 = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(vx, vx), _mm256_mul_pd(vy, vy)), _mm256_mul_pd(vz, vz));
-        __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(_mm256_loadu_pd(e->nx + c), nx),
-                                                  _mm256_mul_pd(_mm256_loadu_pd(e->ny + c), ny)),
-                                    _mm256_mul_pd(_mm256_loadu_pd(e->nz + c), nz));
+        __m256d dot = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(HOT_LOAD(nx), nx), _mm256_mul_pd(HOT_LOAD(ny), ny)),
+                                    _mm256_mul_pd(HOT_LOAD(nz), nz));
+#undef HOT_LOAD
         __m256d far = _mm256_and_pd(valid, _mm256_cmp_pd(v2, far_lim, _CMP_GT_OQ));
         __m256d pass = _mm256_and_pd(valid, _mm256_andnot_pd(far, _mm256_cmp_pd(dot, cosl, _CMP_GT_OQ)));
         const int mf = _mm256_movemask_pd(far), mp = _mm256_movemask_pd(pass);
         skipped += (unsigned)__builtin_popcount((unsigned)mf);
         passed += (unsigned)__builtin_popcount((unsigned)mp);
         if (!mp) continue;
-        const __m128i idx = _mm_loadu_si128((const __m128i *)(e->hp + c));
         double dist[4];
         int ma;
         if (!fp32) {
@@ -266,13 +277,14 @@ static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const 
     const float fx = fp32_from_bits(preu_f32(ph->x)), fy = fp32_from_bits(preu_f32(ph->y)), fz = fp32_from_bits(preu_f32(ph->z));
     const double nx = ph->nx, ny = ph->ny, nz = ph->nz;
     for (size_t c = 0; c < e->count; c++) {
+        const hp_hot_t *q = &e->hot[e->hp[c]];
         if (skip_radius) {
-            double vx = e->px[c] - ph->x, vy = e->py[c] - ph->y, vz = e->pz[c] - ph->z;
+            double vx = q->px - ph->x, vy = q->py - ph->y, vz = q->pz - ph->z;
             if (vx * vx + vy * vy + vz * vz > rs2) { st->skipped_radius++; continue; }
         }
-        if (!(e->nx[c] * nx + e->ny[c] * ny + e->nz[c] * nz > UPDATE_NORMAL_COS)) continue;
+        if (!(q->nx * nx + q->ny * ny + q->nz * nz > UPDATE_NORMAL_COS)) continue;
         st->normal_passed++;
-        float dx = (float)e->px[c] - fx, dy = (float)e->py[c] - fy, dz = (float)e->pz[c] - fz;
+        float dx = (float)q->px - fx, dy = (float)q->py - fy, dz = (float)q->pz - fz;
         float d2 = (dx * dx + dy * dy) + dz * dz;
         if (d2 <= fp32_from_bits(h->r2_f32[e->hp[c]]) && keep(s, b, ph->hit, e->hp[c], d2)) return -1;
     }
@@ -304,15 +316,11 @@ static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthrea
     return 0;
 }
 
-/* Ask for the first lines of a bucket's entry arrays: buckets are screened in memory order but
- * far apart, too short for the hardware prefetcher to follow the seven streams. */
+/* Ask for the first lines of a bucket's entries: buckets are screened in memory order but
+ * far apart, too short for the hardware prefetcher to follow. */
 static void prefetch_cands(const grid_cands_t *c)
 {
     const size_t n = c->count < SCREEN_PREFETCH_MAX ? c->count : SCREEN_PREFETCH_MAX;
-    for (size_t k = 0; k < n; k += 8) {
-        __builtin_prefetch(c->px + k); __builtin_prefetch(c->py + k); __builtin_prefetch(c->pz + k);
-        __builtin_prefetch(c->nx + k); __builtin_prefetch(c->ny + k); __builtin_prefetch(c->nz + k);
-    }
     for (size_t k = 0; k < n; k += 16) __builtin_prefetch(c->hp + k);
 }
 
@@ -327,7 +335,8 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
     const size_t radius_size = prec == PRECISION_DOUBLE ? sizeof *h->r2 : sizeof *h->r2_f32;
     for (size_t group = first; group < last && group < b->n_groups; group++) {
         const size_t i = b->group[group], end = b->group[group + 1];
-        /* Two buckets on, the entries; one bucket on (its hit-point indices have arrived), the radii. */
+        /* Two buckets on, the entries; one bucket on (its hit-point indices have arrived), the radii
+         * and the geometry. */
         if (group + SCREEN_PREFETCH_GROUPS < b->n_groups) {
             const grid_cands_t far = grid_bucket_cands(g, 0, sh[b->group[group + SCREEN_PREFETCH_GROUPS]].bucket);
             prefetch_cands(&far);
@@ -335,7 +344,10 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
         if (group + 1 < b->n_groups) {
             const grid_cands_t next = grid_bucket_cands(g, 0, sh[b->group[group + 1]].bucket);
             const size_t n = next.count < SCREEN_PREFETCH_MAX ? next.count : SCREEN_PREFETCH_MAX;
-            for (size_t k = 0; k < n; k++) __builtin_prefetch(radii + radius_size * next.hp[k]);
+            for (size_t k = 0; k < n; k++) {
+                __builtin_prefetch(radii + radius_size * next.hp[k]);
+                __builtin_prefetch(&next.hot[next.hp[k]]);
+            }
         }
         const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
         t.candidates += cand.count * (end - i);
@@ -343,7 +355,7 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
         for (size_t j = i; j < end; j++) {
             int rc;
 #ifdef HAVE_SCREEN_AVX2
-            if (b->avx2) rc = screen_avx2(h, rs2, skip_radius, &sh[j], prec != PRECISION_DOUBLE, &cand, &t, s, b);
+            if (b->avx2 && h->n <= HOT_GATHER_MAX) rc = screen_avx2(h, rs2, skip_radius, &sh[j], prec != PRECISION_DOUBLE, &cand, &t, s, b);
             else
 #endif
             if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);

@@ -5,7 +5,8 @@
 # disjoint reference) and draw its plot; bench-engine with one run a row must print every row,
 # both target lines, the smallppm byte-identity line and draw its picture (it fails by itself when
 # an image changes with the thread count, the scan or the screening's lanes); bench-count must
-# give its rows, the same twice.
+# give its rows, the same twice; bench-scale at a small frame must give its two rows (re-filter on
+# and off) with one image hash and fewer candidates with the re-filter.
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 run scripts/bench-convergence.sh "$PREE" "$TMP/conv" --quick
@@ -17,6 +18,10 @@ for prec in double fp32; do
   expect_eq "RMSE falls at every doubling, $prec" "$falling" yes
 done
 expect_eq "convergence plot is a PNG" "$(head -c 4 "$TMP/conv/convergence.png" | od -An -c | tr -d ' ')" "211PNG"
+SCALE_SIZES="96x72:60000" run scripts/bench-scale.sh "$PREE" "$TMP/scale"
+expect_eq "bench-scale rows" "$(tail -n +3 "$TMP/scale/scale.txt" | wc -l)" 2
+on=$(awk '$3 == "on" { print $8 }' "$TMP/scale/scale.txt"); off=$(awk '$3 == "off" { print $8 }' "$TMP/scale/scale.txt")
+[ "$on" -lt "$off" ] || fail "bench-scale: the re-filter examined $on candidates, not fewer than $off"
 RUNS=1 run scripts/bench-engine.sh "$PREE" "$TMP/eng"
 expect_eq "engine rows" "$(grep -cE '^(smallppm|cells) (double|fp32) [12] (bucket|photon) ' "$TMP/eng/engine.txt")" 8
 expect_eq "target lines" "$(grep -c '^target: ' "$TMP/eng/engine.txt")" 2
