@@ -3,12 +3,14 @@
  * launcher: MPI is initialised only when the launcher's environment says the process is one of
  * its ranks, so a plain `pree render` does not start an MPI singleton.
  *
- * Distributed rendering (issue 17, docs/scale_out.md) is not in this build yet: a render under
- * a launcher with more than one rank stops with one message from rank 0 and exit status 2 on
- * every rank, before any output is opened, rather than N ranks rendering the same image into
- * the same files. One rank renders as without a launcher. */
+ * With more than one rank only `pree render` runs (distributed: model/ppm/render_dist.c,
+ * docs/scale_out.md); any other command stops with one message from rank 0 and exit status 2.
+ * Ranks other than 0 are silent (stdout and stderr on /dev/null): rank 0 prints, for all. */
+#include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
 #include "cli.h"
 #ifdef PREE_MPI
 #include <mpi.h>
@@ -35,12 +37,16 @@ int pree_mpi_begin(int *argc, char ***argv)
     int size = 1, rank = 0;
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (size > 1) {
+    if (size > 1 && (*argc < 2 || strcmp((*argv)[1], "render"))) {
         if (rank == 0)
-            fprintf(stderr, "pree: %d MPI ranks: distributed rendering is not in this build yet "
-                    "(issue 17, docs/scale_out.md); run one rank, or without mpirun\n", size);
+            fprintf(stderr, "pree: %d MPI ranks: only 'pree render' runs distributed (docs/scale_out.md); "
+                    "run one rank, or without mpirun\n", size);
         MPI_Finalize();
         return -1;
+    }
+    if (size > 1 && rank > 0) {   /* rank 0 speaks for all: it reports every rank's failure */
+        int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) { dup2(null, 1); dup2(null, 2); close(null); }
     }
     return 1;
 #else

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # The pree program under Open MPI's mpirun (cli/cli_mpi.c, docs/scale_out.md): built with MPI
 # when mpicc is present; one rank renders the same bits as a run without mpirun, in both
-# precisions; two ranks (distributed rendering is not in this build yet) stop with one message
-# from rank 0, a non-zero exit and no output file.
+# precisions; a command other than render under two ranks stops with one message from rank 0
+# and a non-zero exit (two-rank renders: mpi_render.sh).
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 command -v mpirun >/dev/null || fail "mpirun missing (Debian openmpi-bin: scripts/install-deps.sh)"
@@ -17,10 +17,9 @@ for prec in double fp32; do
     expect_eq "$prec mpirun -np 1 $k" "$(json "$TMP/b.json" $k)" "$(json "$TMP/a.json" $k)"
   done
 done
-echo "+ ${MPIRUN[*]} -np 2 $PREE ${args[*]} --out $TMP/c.ppm"
-"${MPIRUN[@]}" -np 2 "$PREE" "${args[@]}" --out "$TMP/c.ppm" --quiet 2>"$TMP/err" && fail "two ranks exited 0"
+echo "+ ${MPIRUN[*]} -np 2 $PREE check $ROOT/scenes/cornell3"
+"${MPIRUN[@]}" -np 2 "$PREE" check "$ROOT/scenes/cornell3" 2>"$TMP/err" && fail "two ranks of pree check exited 0"
 sed 's/^/  | /' "$TMP/err"
-expect_eq "two ranks: pree messages" "$(grep -c '^pree' "$TMP/err")" 1
-grep -q '^pree: 2 MPI ranks' "$TMP/err" || fail "two ranks: the message does not name the rank count"
-[ -e "$TMP/c.ppm" ] && fail "two ranks wrote $TMP/c.ppm"
-echo "ok: two ranks stop with one message and no output"
+expect_eq "two ranks of pree check: pree messages" "$(grep -c '^pree' "$TMP/err")" 1
+grep -q "^pree: 2 MPI ranks: only 'pree render'" "$TMP/err" || fail "two ranks: the message does not say what runs distributed"
+echo "ok: a command other than render stops under two ranks with one message"
