@@ -62,7 +62,7 @@ include $(sort $(filter-out mk/model.mk,$(wildcard mk/*.mk)))
 # The pree program: the command line (cli/) over the engine (libpree.a); no Verilator. Its
 # `cosim` command runs the co-simulation programs of mk/cosim.mk.
 $(BUILD)/pree: $(CLI_OBJ) $(LIBPREE)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS)
+	$(CXX) $(LDFLAGS) $(filter %.o %.a,$^) -o $@ $(LDLIBS)
 
 build: $(DEPS_STAMP) $(BUILD)/pree
 

@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "cli.h"
+#include "render_dist.h"
 #include "checkpoint.h"
 #include "cli_options.h"
 #include "cli_outputs.h"
@@ -256,7 +257,14 @@ int pree_cmd_render(int argc, char **argv)
         status = 1;
     } else {
         warn_result(&j, &opt, &res.stats, rc);
-        status = write_outputs(&j, &opt, &res, rc) ? 1 : rc == 1 ? 130 : 0;
+        /* Under MPI rank 0 holds the image and writes it (docs/scale_out.md). */
+        status = render_dist_rank() == 0 && write_outputs(&j, &opt, &res, rc) ? 1 : rc == 1 ? 130 : 0;
+        const render_stats_t *st = &res.stats;
+        if (st->mpi_ranks > 1 && opt.progress)
+            fprintf(stderr, "pree render: %d MPI ranks: %.1f bytes sent per photon; %.1f%% of the kept candidates "
+                    "cross ranks (their hit point's owner is not the rank that traced the photon)\n", st->mpi_ranks,
+                    st->photons_emitted ? (double)st->mpi_bytes_sent / (double)st->photons_emitted : 0.0,
+                    st->mpi_kept ? 100.0 * (double)st->mpi_kept_foreign / (double)st->mpi_kept : 0.0);
         if (opt.progress)
             fprintf(stderr, "pree render: %llu hit points, %llu photons, %llu candidates, %llu accepted, %.3f s\n",
                     res.stats.hit_points, res.stats.photons_emitted, res.stats.upd.candidates,

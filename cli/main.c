@@ -87,10 +87,14 @@ int main(int argc, char **argv)
     std_fds_open();
     if (argc < 2) { usage(stderr); return 2; }
     if (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h")) { usage(stdout); return 0; }
-    if (!strcmp(argv[1], "--version")) { printf("pree %s\n", pree_version()); return 0; }
+    if (!strcmp(argv[1], "--version")) { printf("pree %s\nMPI: %s\n", pree_version(), pree_mpi_build()); return 0; }
     for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
-        if (!strcmp(argv[1], commands[i].name))
-            return commands[i].run(argc - 1, argv + 1);
+        if (!strcmp(argv[1], commands[i].name)) {
+            if (pree_mpi_begin(&argc, &argv) < 0) return 2;
+            const int rc = commands[i].run(argc - 1, argv + 1);
+            pree_mpi_end();
+            return rc;
+        }
     fprintf(stderr, "pree: unknown command '%s' (try 'pree --help')\n", argv[1]);
     return 2;
 }

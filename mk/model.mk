@@ -54,4 +54,22 @@ $(shell mkdir -p $(BUILD) && { echo '$(VERSION_LINE)' | cmp -s - $(VERSION_H) ||
 $(BUILD)/cli/cli_version.o: $(VERSION_H)
 $(BUILD)/cli/cli_version.o: CFLAGS += -I$(BUILD)
 
+# MPI (cli/cli_mpi.c, model/ppm/render_dist.c, docs/scale_out.md): with Open MPI's mpicc present
+# (Debian libopenmpi-dev, scripts/install-deps.sh) the engine is built against it (every program
+# that links libpree.a links libmpi), MPI=0 builds without. The
+# choice is kept in build/mpi.flags (rewritten at parse time only when it changes) so that a tree
+# built before the package came in is relinked with it.
+MPI ?= $(if $(shell command -v mpicc 2>/dev/null),1,0)
+ifeq ($(MPI),1)
+MPI_CFLAGS  := -DPREE_MPI $(shell mpicc --showme:compile)
+MPI_LDLIBS  := $(shell mpicc --showme:link)
+endif
+MPI_FLAGS := $(BUILD)/mpi.flags
+MPI_LINE  := MPI=$(MPI) $(MPI_CFLAGS) $(MPI_LDLIBS)
+$(shell { echo '$(MPI_LINE)' | cmp -s - $(MPI_FLAGS) || echo '$(MPI_LINE)' >$(MPI_FLAGS); })
+$(BUILD)/cli/cli_mpi.o $(BUILD)/model/ppm/render_dist.o: CFLAGS += $(MPI_CFLAGS)
+$(BUILD)/cli/cli_mpi.o $(BUILD)/model/ppm/render_dist.o: $(MPI_FLAGS)
+LDLIBS += $(MPI_LDLIBS)
+$(BUILD)/pree: $(MPI_FLAGS)
+
 -include $(wildcard $(BUILD)/model/*/*.d $(BUILD)/cli/*.d $(BUILD)/tests/*.d)

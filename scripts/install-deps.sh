@@ -32,7 +32,8 @@ fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
       libassimp-dev libjansson-dev libnanoflann-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
       openimageio-tools chromium
-      clang-14 libclang-rt-14-dev)   # clang + libFuzzer: make fuzz, tests/checks/fuzz_short.sh
+      clang-14 libclang-rt-14-dev    # clang + libFuzzer: make fuzz, tests/checks/fuzz_short.sh
+      openmpi-bin libopenmpi-dev)    # mpirun and mpicc: build/pree under MPI (docs/scale_out.md)
 missing=()
 for p in "${pkgs[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

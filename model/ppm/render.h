@@ -88,6 +88,11 @@ typedef struct {
     pm_stats_t pm;           /* the photon-map estimator's figures */
     unsigned long long photons_resumed; /* photons done in the checkpoint the render resumed from */
     int time_limited;        /* the time limit stopped the photon pass early */
+    /* Under MPI with more than one rank (docs/scale_out.md): the ranks, the bytes all ranks sent
+     * to others, and, of the candidates that screening kept from each rank's own traced blocks,
+     * those whose hit point another rank owns (the crossing candidates). */
+    int mpi_ranks;
+    unsigned long long mpi_bytes_sent, mpi_kept, mpi_kept_foreign;
 } render_stats_t;
 
 typedef struct {

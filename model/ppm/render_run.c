@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "checkpoint.h"
+#include "render_dist.h"
 #include "pm_render.h"
 #include "render_session.h"
 
@@ -60,6 +61,11 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
         if (opt->checkpoint || opt->resume || opt->time_limit > 0) {
             memset(res, 0, sizeof *res);
             snprintf(err, errlen, "--checkpoint, --resume and --time-limit apply to the PPM estimator only");
+            return -1;
+        }
+        if (render_dist_size() > 1) {
+            memset(res, 0, sizeof *res);
+            snprintf(err, errlen, "the photon-map estimator runs in one process (under MPI: one rank)");
             return -1;
         }
         return pm_render(scene, opt, res, err, errlen);

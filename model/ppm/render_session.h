@@ -36,6 +36,15 @@ struct render_session {
     uint64_t blocks;         /* blocks updated: the grid is re-filtered after blocks 1, 2, 4, 8, ... */
     uint64_t fingerprint;    /* checkpoint_fingerprint, with a checkpoint or a resume */
     int failed;              /* a step failed: close only releases */
+    /* More than one MPI rank (render_dist.c, docs/scale_out.md): rank `rank` of `nranks` owns the
+     * hit points [own_lo[rank], own_lo[rank + 1]) of the spatial order; the others' are routed
+     * to part T, which no thread applies. */
+    int nranks, rank;
+    size_t *own_lo;
+    void *sendbuf, *recvbuf;
+    size_t send_cap, recv_cap, *counts;
+    unsigned long long bytes_sent;   /* this rank's bytes to the other ranks */
+    int own_block;                   /* the block being applied is the one this rank traced */
 };
 
 /* The update counters summed over the threads. */

@@ -17,6 +17,7 @@ static const json_field_t counts[] = {
     SK(radiance_skipped, JF_U64, "skip_radiance_zero_weight"), SK(peak_rss_kb, JF_LONG, "peak_rss_kib"),
     S(peak_bytes_per_hit_point, JF_REAL), S(hit_point_bytes, JF_U64), S(grid_entry_bytes, JF_U64),
     S(image_hash, JF_HEX64), S(state_hash, JF_HEX64), S(time_limited, JF_BOOL), S(photons_resumed, JF_U64),
+    S(mpi_ranks, JF_INT), S(mpi_bytes_sent, JF_U64), S(mpi_kept, JF_U64), S(mpi_kept_foreign, JF_U64),
 };
 static const json_field_t contents[] = {
     SK(scene_spheres, JF_U64, "spheres"), SK(scene_triangles, JF_U64, "triangles"),

@@ -15,7 +15,7 @@ run "$PREE" render scenes/cornell3 --width 40 --height 30 --photons 3000 --photo
 iinfo -v "$TMP/m.exr" >"$TMP/info" || fail "iinfo cannot read $TMP/m.exr"
 sed 's/^/  | /' "$TMP/info"
 meta() { sed -n "s/^ *pree:$1: \"\(.*\)\"$/\1/p" "$TMP/info"; }
-version=$("$PREE" --version | sed 's/^pree //')
+version=$("$PREE" --version | sed -n '1s/^pree //p')
 if git rev-parse --git-dir >/dev/null 2>&1; then
   case "$version" in ""|unknown) fail "pree --version is '$version' in a git tree";; esac
   git rev-parse -q --verify "${version%-dirty}^{commit}" >/dev/null 2>&1 || \

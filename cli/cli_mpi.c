@@ -1,0 +1,90 @@
+/* cli_mpi.c: the program under an MPI launcher (mpirun, srun). Built with Open MPI when make
+ * finds mpicc (MPI=1, the default then; MPI=0 builds without). The same binary runs without a
+ * launcher: MPI is initialised only when the launcher's environment says the process is one of
+ * its ranks, so a plain `pree render` does not start an MPI singleton.
+ *
+ * With more than one rank only `pree render` runs (distributed: model/ppm/render_dist.c,
+ * docs/scale_out.md); any other command stops with one message from rank 0 and exit status 2.
+ * Ranks other than 0 are silent (stdout and stderr on /dev/null): rank 0 prints, for all. */
+#include <fcntl.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "cli.h"
+#ifdef PREE_MPI
+#include <mpi.h>
+#endif
+
+/* The launchers' variables that name a process as one of their ranks (Open MPI's mpirun, PMIx
+ * as under Slurm's srun --mpi=pmix, PMI-1/2 as under srun --mpi=pmi2). */
+static int under_launcher(void)
+{
+    static const char *const vars[] = {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", NULL};
+    for (const char *const *v = vars; *v; v++)
+        if (getenv(*v)) return 1;
+    return 0;
+}
+
+int pree_mpi_begin(int *argc, char ***argv)
+{
+    if (!under_launcher()) return 1;
+#ifdef PREE_MPI
+    if (MPI_Init(argc, argv) != MPI_SUCCESS) {
+        fprintf(stderr, "pree: MPI_Init failed under the launcher\n");
+        return -1;
+    }
+    int size = 1, rank = 0;
+    MPI_Comm_size(MPI_COMM_WORLD, &size);
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    if (size > 1 && (*argc < 2 || strcmp((*argv)[1], "render"))) {
+        if (rank == 0)
+            fprintf(stderr, "pree: %d MPI ranks: only 'pree render' runs distributed (docs/scale_out.md); "
+                    "run one rank, or without mpirun\n", size);
+        MPI_Finalize();
+        return -1;
+    }
+    if (size > 1 && rank > 0) {   /* rank 0 speaks for all: it reports every rank's failure */
+        int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) { dup2(null, 1); dup2(null, 2); close(null); }
+    }
+    return 1;
+#else
+    (void)argc;
+    (void)argv;
+    const char *n = getenv("OMPI_COMM_WORLD_SIZE");
+    if (n && atoi(n) > 1) {
+        const char *r = getenv("OMPI_COMM_WORLD_RANK");
+        if (!r || atoi(r) == 0)
+            fprintf(stderr, "pree: started as one of %s MPI ranks, but built without MPI "
+                    "(install libopenmpi-dev: scripts/install-deps.sh, then rebuild)\n", n);
+        return -1;
+    }
+    return 1;
+#endif
+}
+
+void pree_mpi_end(void)
+{
+#ifdef PREE_MPI
+    int on = 0, off = 0;
+    MPI_Initialized(&on);
+    MPI_Finalized(&off);
+    if (on && !off) MPI_Finalize();
+#endif
+}
+
+const char *pree_mpi_build(void)
+{
+#ifdef PREE_MPI
+#ifdef OMPI_MAJOR_VERSION
+#define PREE_STR2(x) #x
+#define PREE_STR(x) PREE_STR2(x)
+    return "Open MPI " PREE_STR(OMPI_MAJOR_VERSION) "." PREE_STR(OMPI_MINOR_VERSION) "." PREE_STR(OMPI_RELEASE_VERSION);
+#else
+    return "MPI " #MPI_VERSION;
+#endif
+#else
+    return "none";
+#endif
+}

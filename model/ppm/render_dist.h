@@ -1,0 +1,27 @@
+/* render_dist.h: the transport of a render over MPI ranks (docs/scale_out.md): built on MPI
+ * when make finds mpicc (PREE_MPI), otherwise one rank. Only render.c's distributed photon
+ * rounds call it, and only when render_dist_size() > 1 (the program was started by an MPI
+ * launcher with more than one rank and cli/cli_mpi.c initialised MPI). */
+#ifndef PREE_RENDER_DIST_H
+#define PREE_RENDER_DIST_H
+
+#include <stddef.h>
+
+/* The ranks of MPI_COMM_WORLD (1 when MPI is not built in or not initialised) and this one's. */
+int render_dist_size(void);
+int render_dist_rank(void);
+
+/* Every rank's v: the maximum (the ranks agree on stopping or failing). */
+int render_dist_max(int v);
+
+/* Every rank's bytes [send, send + bytes) to every rank, in rank order, into *recv (grown;
+ * *cap its size); counts[r]: rank r's bytes. 0 or -1 (memory). */
+int render_dist_allgather(const void *send, size_t bytes, void **recv, size_t *cap, size_t *counts);
+
+/* Sum v[0..n) over the ranks, on every rank. */
+void render_dist_sum(unsigned long long *v, int n);
+
+/* The elements [lo[r], lo[r + 1]) of base (elem bytes each), owned by rank r, to rank 0's base. */
+void render_dist_gather_ranges(void *base, size_t elem, const size_t *lo);
+
+#endif
