@@ -216,10 +216,16 @@ int pree_cmd_cosim(int argc, char **argv)
                     cosim_rtl_update_window(rtl), win);
             cosim_rtl_free(rtl); scene_free(&scene); return 1;
         }
+        if (cosim_rtl_b_skid(rtl) != cosim_b_skid(pipefast)) {
+            fprintf(stderr, "pree cosim: the RTL's B skid is %d, the host's table says %d\n",
+                    cosim_rtl_b_skid(rtl), cosim_b_skid(pipefast));
+            cosim_rtl_free(rtl); scene_free(&scene); return 1;
+        }
     }
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = reorder,
                               .schedule = schedule, .window = window, .gap = gap, .seed = 1,
-                              .model_only = model_only, .ppc = ppc, .win = win};
+                              .model_only = model_only, .ppc = ppc, .win = win,
+                              .skid = cosim_b_skid(pipefast)};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;

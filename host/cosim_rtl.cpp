@@ -3,7 +3,7 @@
 // (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header
 // (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath,
 // PipeFast) each: the one list of configurations. Each model's update hazard window is its
-// pree_top's public WIN_UPD.
+// pree_top's public WIN_UPD, and whether it has B's skid slot its public B_SKID.
 #include "cosim_rtl.h"
 
 #include <cstdio>
@@ -76,13 +76,14 @@ struct cosim_rtl {
     virtual const char *trace_error() = 0;
     virtual int hp_bank_w() = 0;
     virtual int update_window() = 0;
+    virtual int b_skid() = 0;
     virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int PPC, int DP, int WIN>
+template <class V, int NP, int HPB, int PPC, int DP, int WIN, int SKID>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
@@ -157,6 +158,7 @@ struct Rtl : cosim_rtl {
     }
     int hp_bank_w() override { return HPB; }
     int update_window() override { return WIN; }
+    int b_skid() override { return SKID; }
     int ppc() override { return PPC; }
     void set_reset(int on) override
     {
@@ -197,7 +199,7 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
     cosim_rtl_t *r = nullptr;
 #define X(V, NP, DP, PF) \
     if (!r && preu == (NP) && (datapath != 0) == (DP) && (pipefast != 0) == (PF)) \
-        r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP, V##_pree_top::WIN_UPD>(fst);
+        r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP, V##_pree_top::WIN_UPD, V##_pree_top::B_SKID>(fst);
     COSIM_MODELS
 #undef X
     if (!r) {
@@ -225,6 +227,7 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]) { r->px_rdata(L); }
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]) { r->counters(cnt); }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r) { return r->hp_bank_w(); }
 int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
+int cosim_rtl_b_skid(cosim_rtl_t *r) { return r->b_skid(); }
 int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)

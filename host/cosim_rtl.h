@@ -15,6 +15,7 @@
  *   cosim_rtl_hp_bank_w            the model's HpBankW parameter
  *   cosim_rtl_update_window        its update hazard window (pree_top's WIN_UPD: 1 + the PREU's
  *                                  update latency, which follows from Datapath and PipeFast)
+ *   cosim_rtl_b_skid               whether it has B's skid slot (pree_top's B_SKID: PipeFast 1)
  *   cosim_rtl_ppc                  the model's PhotonsPerCycle parameter (photon slots of ph_*)
  *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
  *                                  preu PREUs, whether or not that model is linked (-1: no such
@@ -75,6 +76,7 @@ void cosim_rtl_px_rdata(cosim_rtl_t *r, uint32_t L[3]);
 void cosim_rtl_counters(cosim_rtl_t *r, uint64_t cnt[COSIM_NCNT]);
 int cosim_rtl_hp_bank_w(cosim_rtl_t *r);   /* log2 of the model's hit-point banks */
 int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cycles */
+int cosim_rtl_b_skid(cosim_rtl_t *r);      /* 1: B's skid slot (PipeFast 1) */
 int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on);
