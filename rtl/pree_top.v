@@ -377,22 +377,6 @@ module pree_top #(
       else if (l == 0 && hp_re_i) hsel_q[l*HpBankW +: HpBankW] <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
   end
 
-  // The lanes' records at the RAM outputs (R): update, the index entry and the photon; radiance,
-  // the hit-point data {const, state} from the bank the lane read last.
-  reg  [NumPreu*SKID_W-1:0]   r_rec;
-  always @* begin : r_lanes
-    integer l;
-    for (l = 0; l < NumPreu; l = l + 1) begin
-      r_rec[l*SKID_W +: SKID_W] = {SKID_W{1'b0}};
-      if (mode_i)
-        r_rec[l*SKID_W +: CONST_W + STATE_W] = {hpc_rd[hsel_q[l*HpBankW +: HpBankW]],
-                                                hps_rd[hsel_q[l*HpBankW +: HpBankW]]};
-      else
-        r_rec[l*SKID_W +: HpAW + PH_W] = {idx_rd[b_addr_q[l*AADDR_W +: LANE_W]],
-                                          b_data_q[l*PH_W +: PH_W]};
-    end
-  end
-
   // B skid (PipeFast 1): the slot's lanes, their records and short flag; without it, nothing.
   wire [NumPreu-1:0]        s_pend;
   wire [NumPreu*SKID_W-1:0] s_rec;
@@ -404,6 +388,22 @@ module pree_top #(
       reg  [NumPreu*SKID_W-1:0]  rec_q;
       // What B leaves after this cycle's issue: the slot's own lanes, or R's (then copied).
       wire [NumPreu-1:0]         left = (full_q ? pend_q : b_pend_q) & ~b_iss;
+      // R's records (the lanes at the RAM outputs), as the slot keeps them: update, the index
+      // entry and the photon; radiance, the hit-point data {const, state} from the bank the lane
+      // read last.
+      reg  [NumPreu*SKID_W-1:0]   r_rec;
+      always @* begin : r_lanes
+        integer l;
+        for (l = 0; l < NumPreu; l = l + 1) begin
+          r_rec[l*SKID_W +: SKID_W] = {SKID_W{1'b0}};
+          if (mode_i)
+            r_rec[l*SKID_W +: CONST_W + STATE_W] = {hpc_rd[hsel_q[l*HpBankW +: HpBankW]],
+                                                    hps_rd[hsel_q[l*HpBankW +: HpBankW]]};
+          else
+            r_rec[l*SKID_W +: HpAW + PH_W] = {idx_rd[b_addr_q[l*AADDR_W +: LANE_W]],
+                                              b_data_q[l*PH_W +: PH_W]};
+        end
+      end
       always @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) begin
           full_q <= 1'b0;
@@ -431,10 +431,9 @@ module pree_top #(
     end
   endgenerate
 
-  // B's live lanes (the slot's while it holds any, else R's) and their records.
+  // B's live lanes (the slot's while it holds any, else R's); their records below (b_lanes).
   wire [NumPreu-1:0]        bl_pend  = s_full ? s_pend : b_pend_q;
   wire                      bl_short = s_full ? s_short : b_short_q;
-  wire [NumPreu*SKID_W-1:0] bl_rec   = s_full ? s_rec : r_rec;
 
   // The B lanes' keys: update, the hit-point address read from the index table; radiance, the
   // pixel of the hit point read in A.
@@ -447,8 +446,15 @@ module pree_top #(
   always @* begin : b_lanes
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}        = bl_rec[l*SKID_W +: HpAW + PH_W];
-      {b_hc[l*CONST_W +: CONST_W], b_hs[l*STATE_W +: STATE_W]} = bl_rec[l*SKID_W +: CONST_W + STATE_W];
+      if (s_full) begin
+        {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}             = s_rec[l*SKID_W +: HpAW + PH_W];
+        {b_hc[l*CONST_W +: CONST_W], b_hs[l*STATE_W +: STATE_W]} = s_rec[l*SKID_W +: CONST_W + STATE_W];
+      end else begin
+        b_hp[l*HpAW +: HpAW]       = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
+        b_ph[l*PH_W +: PH_W]       = b_data_q[l*PH_W +: PH_W];
+        b_hc[l*CONST_W +: CONST_W] = hpc_rd[hsel_q[l*HpBankW +: HpBankW]];
+        b_hs[l*STATE_W +: STATE_W] = hps_rd[hsel_q[l*HpBankW +: HpBankW]];
+      end
       b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       if (mode_i) begin
