@@ -426,7 +426,9 @@ module pree_top #(
     end else begin : g_no_skid
       assign s_full  = 1'b0;
       assign s_pend  = {NumPreu{1'b0}};
-      assign s_rec   = {NumPreu*SKID_W{1'b0}};
+      for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_rec   // (a replication per lane)
+        assign s_rec[gl*SKID_W +: SKID_W] = {SKID_W{1'b0}};
+      end
       assign s_short = 1'b0;
     end
   endgenerate
