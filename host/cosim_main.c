@@ -305,6 +305,12 @@ static cosim_rtl_t *open_rtl(const render_options_t *opt, const cosim_args_t *c,
         cosim_rtl_free(rtl);
         return NULL;
     }
+    if (cosim_rtl_b_skid(rtl) != cosim_b_skid(c->pipefast)) {
+        fprintf(stderr, "pree cosim: the RTL's B skid is %d, the host's table says %d\n", cosim_rtl_b_skid(rtl),
+                cosim_b_skid(c->pipefast));
+        cosim_rtl_free(rtl);
+        return NULL;
+    }
     return rtl;
 }
 
@@ -419,7 +425,8 @@ int pree_cmd_cosim(int argc, char **argv)
     }
     cosim_drv_opts_t dopt = {.preu = opt.preu, .datapath = dp, .hp_bank_w = hp_bank_w, .reorder = c.reorder,
                               .schedule = c.schedule, .window = c.window, .gap = c.gap, .seed = 1,
-                              .model_only = c.model_only, .ppc = ppc, .win = win};
+                              .model_only = c.model_only, .ppc = ppc, .win = win,
+                              .skid = cosim_b_skid(c.pipefast)};
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;

@@ -7,7 +7,7 @@
 
 #define IDX_MASK ((1u << COSIM_IDXAW) - 1u)
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc)
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int skid)
 {
     if (win < 1 || win > SHADOW_WIN_MAX) return NULL;   /* the in-flight rows are a fixed array */
     cosim_shadow_t *s = calloc(1, sizeof *s);
@@ -17,6 +17,7 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc)
     s->preu = preu;
     s->hp_bank_w = hp_bank_w;
     s->win = win;
+    s->skid = skid != 0;
     aftso_rule_init(&s->buf, preu, 4 * ppc, ppc, 1);
     return s;
 }
@@ -43,18 +44,21 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     s->nvalid = s->off.nvalid;
     for (int l = 0; l < s->nvalid; l++) s->ref[l] = s->off.ref[l] & IDX_MASK;
     const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
-    /* Stage B (b_issue): a prefix of the pending lanes, each free of hazard, dup and bank. */
+    /* Stage B (b_issue): a prefix of the live lanes (the skid slot's while it holds any, else
+     * those A read last), each free of hazard, dup and bank. */
+    const uint32_t bpend = s->s_full ? s->s_pend : s->b_pend;
+    const uint32_t *bhp = s->s_full ? s->s_hp : s->b_hp;
     uint32_t iss = 0;
     int pre = 1, cause = 0;
     for (int l = 0; l < np; l++) {
-        int pend = (s->b_pend >> l) & 1, haz = 0, dup = 0, bcf = 0;
+        int pend = (bpend >> l) & 1, haz = 0, dup = 0, bcf = 0;
         if (pend) {
-            haz = s->inf_cnt[s->b_hp[l]] != 0;
-            uint32_t bl = pree_hp_bank(s->b_hp[l], s->hp_bank_w);
+            haz = s->inf_cnt[bhp[l]] != 0;
+            uint32_t bl = pree_hp_bank(bhp[l], s->hp_bank_w);
             for (int m = 0; m < l; m++)
-                if ((s->b_pend >> m) & 1) {
-                    if (s->b_hp[m] == s->b_hp[l]) dup = 1;
-                    else if (pree_hp_bank(s->b_hp[m], s->hp_bank_w) == bl) bcf = 1;
+                if ((bpend >> m) & 1) {
+                    if (bhp[m] == bhp[l]) dup = 1;
+                    else if (pree_hp_bank(bhp[m], s->hp_bank_w) == bl) bcf = 1;
                 }
         }
         int ok = pend && pre && !haz && !dup && !bcf;
@@ -63,7 +67,8 @@ int cosim_shadow_eval(cosim_shadow_t *s)
         pre = pre && (!pend || ok);
     }
     s->iss = iss;
-    s->a_go = (s->b_pend & ~iss) == 0;
+    /* a_go: B empties in this cycle; with the skid, the slot is empty. */
+    s->a_go = s->skid ? !s->s_full : (s->b_pend & ~iss) == 0;
     /* Stage A (a_lanes): read in lane order, one lane per index bank (ref mod NumPreu). */
     uint32_t a_valid = ctl_valid & ~s->a_done, a_rd = 0;
     pre = 1;
@@ -79,7 +84,7 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     s->a_rd = a_rd;
     s->stall = (ctl_valid & ~s->a_done & ~a_rd) != 0;
     /* Counter cause (stall_cause): the first blocked lane in B, else A's conflict, else starved. */
-    if (iss != all && !cause) cause = s->b_short ? CNT_ABANK : CNT_STARVE;
+    if (iss != all && !cause) cause = (s->s_full ? s->s_short : s->b_short) ? CNT_ABANK : CNT_STARVE;
     s->cause = cause;
     /* AFTSO-HpUOC ready: PhotonsPerCycle entries free after this cycle's whole departures. */
     s->ready = aftso_rule_ready(&s->buf, &s->off, s->stall);
@@ -103,21 +108,34 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
     for (int k = 0; k < *row_n; k++) s->inf_cnt[row[k]]--;
     *row_n = 0;
     s->n_iss = 0;
+    const uint32_t *bhp = s->s_full ? s->s_hp : s->b_hp;
     for (int l = 0; l < np; l++)
         if ((s->iss >> l) & 1) {
-            row[(*row_n)++] = s->b_hp[l];
-            s->inf_cnt[s->b_hp[l]]++;
-            s->iss_hp[s->n_iss++] = s->b_hp[l];
+            row[(*row_n)++] = bhp[l];
+            s->inf_cnt[bhp[l]]++;
+            s->iss_hp[s->n_iss++] = bhp[l];
             s->cnt[CNT_OPS0 + l]++;
         }
     s->inf_pos = (s->inf_pos + 1) % s->win;
-    /* Stage B registers: the lanes A read (index-table data), or what is left pending. */
+    /* B skid (g_skid): what B leaves after this cycle's issue stays in, or is copied into, the
+     * slot. */
+    if (s->skid) {
+        const uint32_t left = (s->s_full ? s->s_pend : s->b_pend) & ~s->iss;
+        if (!s->s_full) {
+            memcpy(s->s_hp, s->b_hp, sizeof s->s_hp);
+            s->s_short = s->b_short;
+        }
+        s->s_pend = left;
+        s->s_full = left != 0;
+    }
+    /* Stage B registers: the lanes A read (index-table data), or what is left pending (the
+     * slot's lanes issued instead: R stays as it is). */
     if (s->a_go) {
         for (int l = 0; l < np; l++)
             if ((s->a_rd >> l) & 1) s->b_hp[l] = s->idx[s->ref[l]];
         s->b_pend = s->a_rd;
         s->b_short = (s->a_valid & ~s->a_rd) != 0;
-    } else {
+    } else if (!s->skid) {
         s->b_pend &= ~s->iss;
     }
     s->a_done = s->stall ? s->a_done | s->a_rd : 0;
@@ -129,7 +147,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
 
 int cosim_shadow_idle(const cosim_shadow_t *s)
 {
-    if (s->buf.count || s->b_pend) return 0;
+    if (s->buf.count || s->b_pend || s->s_full) return 0;
     for (int r = 0; r < s->win; r++)
         if (s->inf_n[r]) return 0;
     return 1;

@@ -2,16 +2,19 @@
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
  * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
  * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
- * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank) and the RTL's short-cycle counters. Given the same photon
+ * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank), with PipeFast 1 B's
+ * skid slot (A reads while the slot is empty; B's leftover lanes move into it), and the RTL's
+ * short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
- *   cosim_shadow_new(preu, hp_bank_w, win, ppc)  a model in reset state (NULL when out of
+ *   cosim_shadow_new(preu, hp_bank_w, win, ppc, skid)  a model in reset state (NULL when out of
  *                              memory or win > SHADOW_WIN_MAX); win: the update hazard window
  *                              (cosim_rtl_update_window, or cosim_update_window without a
- *                              model); ppc: pree_top's PhotonsPerCycle
+ *                              model); ppc: pree_top's PhotonsPerCycle; skid: its B_SKID
+ *                              (cosim_rtl_b_skid, or cosim_b_skid without a model)
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
@@ -45,6 +48,9 @@ typedef struct {
     uint32_t a_done, b_pend;
     int b_short;
     uint32_t b_hp[COSIM_MAX_PREU];
+    /* B skid (skid = 1): the slot's lanes and their index entries; it issues first. */
+    int skid, s_full, s_short;
+    uint32_t s_pend, s_hp[COSIM_MAX_PREU];
     /* In flight: the keys issued in each of the last win cycles, and a count per key. */
     uint32_t inf_hp[SHADOW_WIN_MAX][COSIM_MAX_PREU];
     int inf_n[SHADOW_WIN_MAX], inf_pos;
@@ -60,7 +66,7 @@ typedef struct {
     uint64_t cnt[COSIM_NCNT];
 } cosim_shadow_t;
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc);
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int skid);
 /* The update hazard window of pree_top (its WIN_UPD) for a datapath (0 paper, 1 stable) and
  * PipeFast, for runs without a Verilated model (--model-only); a run with one takes the model's
  * (cosim_rtl_update_window) and checks it against this. */
@@ -74,6 +80,11 @@ static inline int cosim_update_window(int datapath, int pipe_fast)
 static inline int cosim_radiance_depth(int pipe_fast)
 {
     return pipe_fast ? 59 : 12;
+}
+/* Whether pree_top has B's skid slot (its B_SKID): with PipeFast 1. */
+static inline int cosim_b_skid(int pipe_fast)
+{
+    return pipe_fast != 0;
 }
 void cosim_shadow_free(cosim_shadow_t *s);
 int cosim_shadow_eval(cosim_shadow_t *s);

@@ -19,7 +19,9 @@
 //      update: index table (bank = ref_addr mod NumPreu), radiance: hit-point memory.
 //      Lanes read in lane order; a lane whose bank an earlier unread lane of the offer already
 //      uses waits (bank conflict, "abank"); the controller is stalled until every lane of
-//      its offer has been read. A reads only when stage B empties in this cycle.
+//      its offer has been read. A reads only when stage B empties in this cycle (PipeFast 0);
+//      with PipeFast 1, whenever B's skid slot is empty at the start of the cycle (a register;
+//      see "B skid" below), so that A's reads do not wait on B's issue in the same cycle.
 //   B  the read results: hit-point address (update) or hit-point data and pixel (radiance).
 //      Issue in lane order (a prefix of the pending lanes) to the next step: a lane waits
 //      while its key (hit point / pixel) is in flight (hazard "haz"), an earlier pending lane
@@ -27,6 +29,12 @@
 //      use ("bank"; hit-point banks in update, pixel banks in radiance). Update: issue = read
 //      of the hit-point memory; radiance: issue = PREU input (the held RAM output).
 //   C  update only: the hit-point data, into the PREU (valid_i), with the photon.
+//   B skid (PipeFast 1 only): a second B slot of registers. B's lanes live at the RAM outputs
+//      (R); when A reads while lanes of R are left after this cycle's issue, the leftover lanes
+//      and their RAM outputs (update: index entry; radiance: hit-point data) are copied into the
+//      slot (S), which then issues first, in the same order, while A waits (a_go = !S full).
+//      The issue order, hence every result, is that of PipeFast 0; the cycles differ
+//      (host/cosim_shadow.c models both).
 //   The PREU result is written back: update, the hit point's state when accepted (the PREU's
 //   update latency after C: 10 stages for the paper datapath, 12 for the stable one);
 //   radiance, the pixel sum (read at PREU S10, written at S12).
@@ -145,6 +153,8 @@ module pree_top #(
   localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
+  localparam B_SKID  /*verilator public*/ = (PipeFast != 0) ? 1 : 0; // B's skid slot (B skid)
+  localparam SKID_W    = (HpAW + PH_W > CONST_W + STATE_W) ? HpAW + PH_W : CONST_W + STATE_W;
   localparam [CtrW-1:0] CNT_ONE = 1;
   localparam NCNT      = 7 + NumPreu;
   localparam PH_W      = 192;
@@ -312,11 +322,12 @@ module pree_top #(
   reg  [NumPreu*PH_W-1:0]    b_data_q;
   reg                        b_short_q;
   reg  [NumPreu-1:0]         b_iss;
+  wire                       s_full;    // B skid: the slot holds lanes (they issue first)
 
   always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni)   b_pend_q <= {NumPreu{1'b0}};
-    else if (a_go) b_pend_q <= a_rd;
-    else           b_pend_q <= b_pend_q & ~b_iss;
+    if (!rst_ni)      b_pend_q <= {NumPreu{1'b0}};
+    else if (a_go)    b_pend_q <= a_rd;
+    else if (!s_full) b_pend_q <= b_pend_q & ~b_iss;
   end
 
   always @(posedge clk_i) begin
@@ -367,15 +378,86 @@ module pree_top #(
       else if (l == 0 && hp_re_i) hsel_q[l*HpBankW +: HpBankW] <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
   end
 
+  // B skid (PipeFast 1): the slot's lanes, their records and short flag; without it, nothing.
+  wire [NumPreu-1:0]        s_pend;
+  wire [NumPreu*SKID_W-1:0] s_rec;
+  wire                      s_short;
+  generate
+    if (B_SKID != 0) begin : g_skid
+      reg                        full_q, short_q;
+      reg  [NumPreu-1:0]         pend_q;
+      reg  [NumPreu*SKID_W-1:0]  rec_q;
+      // What B leaves after this cycle's issue: the slot's own lanes, or R's (then copied).
+      wire [NumPreu-1:0]         left = (full_q ? pend_q : b_pend_q) & ~b_iss;
+      // R's records (the lanes at the RAM outputs), as the slot keeps them: update, the index
+      // entry and the photon; radiance, the hit-point data {const, state} from the bank the lane
+      // read last.
+      reg  [NumPreu*SKID_W-1:0]   r_rec;
+      always @* begin : r_lanes
+        integer l;
+        for (l = 0; l < NumPreu; l = l + 1) begin
+          r_rec[l*SKID_W +: SKID_W] = {SKID_W{1'b0}};
+          if (mode_i)
+            r_rec[l*SKID_W +: CONST_W + STATE_W] = {hpc_rd[hsel_q[l*HpBankW +: HpBankW]],
+                                                    hps_rd[hsel_q[l*HpBankW +: HpBankW]]};
+          else
+            r_rec[l*SKID_W +: HpAW + PH_W] = {idx_rd[b_addr_q[l*AADDR_W +: LANE_W]],
+                                              b_data_q[l*PH_W +: PH_W]};
+        end
+      end
+      always @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          full_q <= 1'b0;
+          pend_q <= {NumPreu{1'b0}};
+        end else begin
+          full_q <= |left;
+          pend_q <= left;
+        end
+      end
+      always @(posedge clk_i) begin
+        if (!full_q) begin
+          rec_q   <= r_rec;
+          short_q <= b_short_q;
+        end
+      end
+      assign s_full  = full_q;
+      assign s_pend  = pend_q;
+      assign s_rec   = rec_q;
+      assign s_short = short_q;
+    end else begin : g_no_skid
+      assign s_full  = 1'b0;
+      assign s_pend  = {NumPreu{1'b0}};
+      for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_rec   // (a replication per lane)
+        assign s_rec[gl*SKID_W +: SKID_W] = {SKID_W{1'b0}};
+      end
+      assign s_short = 1'b0;
+    end
+  endgenerate
+
+  // B's live lanes (the slot's while it holds any, else R's); their records below (b_lanes).
+  wire [NumPreu-1:0]        bl_pend  = s_full ? s_pend : b_pend_q;
+  wire                      bl_short = s_full ? s_short : b_short_q;
+
   // The B lanes' keys: update, the hit-point address read from the index table; radiance, the
   // pixel of the hit point read in A.
   reg  [NumPreu*KEY_W-1:0]    b_key;
   reg  [NumPreu*BBANK_W-1:0]  b_bank;
+  reg  [NumPreu*PH_W-1:0]     b_ph;     // update: the B lanes' photons
+  reg  [NumPreu*CONST_W-1:0]  b_hc;     // radiance: the B lanes' hit-point data
+  reg  [NumPreu*STATE_W-1:0]  b_hs;
 
   always @* begin : b_lanes
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      b_hp[l*HpAW +: HpAW]          = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
+      if (s_full) begin
+        {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}             = s_rec[l*SKID_W +: HpAW + PH_W];
+        {b_hc[l*CONST_W +: CONST_W], b_hs[l*STATE_W +: STATE_W]} = s_rec[l*SKID_W +: CONST_W + STATE_W];
+      end else begin
+        b_hp[l*HpAW +: HpAW]       = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
+        b_ph[l*PH_W +: PH_W]       = b_data_q[l*PH_W +: PH_W];
+        b_hc[l*CONST_W +: CONST_W] = hpc_rd[hsel_q[l*HpBankW +: HpBankW]];
+        b_hs[l*STATE_W +: STATE_W] = hps_rd[hsel_q[l*HpBankW +: HpBankW]];
+      end
       b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       if (mode_i) begin
@@ -416,16 +498,17 @@ module pree_top #(
               inf_k_q[(s*NumPreu + m)*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W])
             b_haz[l] = 1'b1;
       for (m = 0; m < l; m = m + 1)
-        if (b_pend_q[m]) begin
+        if (bl_pend[m]) begin
           if (b_key[m*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W]) b_dup[l] = 1'b1;
           else if (b_bank[m*BBANK_W +: BBANK_W] == b_bank[l*BBANK_W +: BBANK_W]) b_bcf[l] = 1'b1;
         end
-      b_iss[l] = b_pend_q[l] && b_pre && !b_haz[l] && !b_dup[l] && !b_bcf[l];
-      b_pre    = b_pre && (!b_pend_q[l] || b_iss[l]);
+      b_iss[l] = bl_pend[l] && b_pre && !b_haz[l] && !b_dup[l] && !b_bcf[l];
+      b_pre    = b_pre && (!bl_pend[l] || b_iss[l]);
     end
   end
 
-  assign a_go = &(~b_pend_q | b_iss);
+  // A reads when B empties in this cycle; with the skid, when the slot is empty (a register).
+  assign a_go = (B_SKID != 0) ? !s_full : &(~b_pend_q | b_iss);
 
   // ===============================================================================================
   // Stage C (update): the hit-point data arrives; the PREU takes it with the photon.
@@ -439,7 +522,7 @@ module pree_top #(
   end
   always @(posedge clk_i) begin
     c_hp_q   <= b_hp;
-    c_data_q <= b_data_q;
+    c_data_q <= b_ph;
   end
 
   // ===============================================================================================
@@ -460,10 +543,11 @@ module pree_top #(
 
   generate
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
-      // The lane's hit-point data from the bank it read last (radiance: in A, update: in B).
+      // The lane's hit-point data: radiance, B's (read in A); update, from the bank the lane
+      // read last (in B).
       wire [HpBankW-1:0] hsel = hsel_q[gl*HpBankW +: HpBankW];
-      wire [CONST_W-1:0] hc   = hpc_rd[hsel];     // {pixel, f, pos}
-      wire [STATE_W-1:0] hs   = hps_rd[hsel];
+      wire [CONST_W-1:0] hc   = mode_i ? b_hc[gl*CONST_W +: CONST_W] : hpc_rd[hsel]; // {pixel, f, pos}
+      wire [STATE_W-1:0] hs   = mode_i ? b_hs[gl*STATE_W +: STATE_W] : hps_rd[hsel];
       wire [95:0]        li   = px_rd[px_rbank_q[gl*PxBankW +: PxBankW]];
       wire [KEY_W-1:0]   tag;
       wire               host_hp = (gl == 0) && hp_we_i;
@@ -598,7 +682,7 @@ module pree_top #(
 
   // ===============================================================================================
   // Idle and counters.
-  assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !(|c_v_q) && !(|p_busy);
+  assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !s_full && !(|c_v_q) && !(|p_busy);
 
   reg [NCNT*CtrW-1:0] cnt_q;
   reg [2:0]            cause;    // 0 none, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve
@@ -608,11 +692,11 @@ module pree_top #(
     cause = 3'd0;
     found = 1'b0;
     for (l = 0; l < NumPreu; l = l + 1)
-      if (!found && b_pend_q[l] && !b_iss[l]) begin
+      if (!found && bl_pend[l] && !b_iss[l]) begin
         found = 1'b1;
         cause = b_haz[l] ? 3'd2 : b_dup[l] ? 3'd3 : 3'd4;
       end
-    if (b_iss != {NumPreu{1'b1}} && !found) cause = b_short_q ? 3'd5 : 3'd6;
+    if (b_iss != {NumPreu{1'b1}} && !found) cause = bl_short ? 3'd5 : 3'd6;
   end
 
   always @(posedge clk_i or negedge rst_ni) begin : counters

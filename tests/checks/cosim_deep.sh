@@ -5,7 +5,7 @@
 # (the image only when the model adds in the order of ADISO-REC's depth 59), the scheduler's cycle
 # model must predict the RTL's hazard, same-key and bank-conflict counts exactly, and the update
 # hazard window must be PipeFast 1's (46). Measured: 69,283 update cycles, utilization 0.99465,
-# hazard stalls 168 (PipeFast 0, cosim_schedule.sh: 69,033 cycles, 0.99825, 2).
+# hazard stalls 161 with B's skid slot (168 before it; PipeFast 0, cosim_schedule.sh: 69,033 cycles, 0.99825, 2).
 set -u
 cd "$(dirname "$0")/../.."
 pree=${BUILD:-build}/pree
