@@ -5,7 +5,8 @@
 # per unit test and per check, with time, failure message, log and rerun command; see
 # scripts/junit-xml.py), lists the slowest checks, and ends with one line "N passed, N failed".
 # PREE_TEST_UNITS, PREE_TEST_CHECKS, PREE_TEST_XML: other unit-binary and check folders and XML
-# path (tests/checks/junit_xml.sh runs the runner on a folder of its own).
+# path (tests/checks/junit_xml.sh runs the runner on a folder of its own). PREE_TEST_JOBS: how
+# many checks run at once (below).
 set -u
 level=${1:-full}
 cd "$(dirname "$0")/.."
@@ -35,14 +36,37 @@ for bin in "$units"/test_*; do
   printf '%-40s %d passed, %d failed\n' "$name" "$p" "$f"
 done
 
-for chk in "$checks"/*.sh; do
+# The checks run PREE_TEST_JOBS at a time (default: the core count; 1 runs them in turn). Each
+# check owns its temporary folder and build outputs; what several share is built beforehand by
+# make test-prereqs. Checks that declare "# cost: SECONDS" (measured alone on the idle 2-core
+# machine) start first, longest first, so that the slowest do not start last; the rest follow in
+# name order. Results print as checks end.
+jobs=${PREE_TEST_JOBS:-$(nproc)}
+mapfile -t order < <(for chk in "$checks"/*.sh; do
   [ -f "$chk" ] || continue
   if [ "$level" = quick ] && ! grep -q '^# level: quick' "$chk"; then continue; fi
+  cost=$(sed -n 's/^# cost: \([0-9]*\).*/\1/p' "$chk" | head -1)
+  printf '%s\t%s\n' "${cost:-0}" "$chk"
+done | sort -t$'\t' -k1,1nr -k2,2 | cut -f2)
+
+declare -A running=()   # pid -> check script
+trap 'kill "${!running[@]}" 2>/dev/null; exit 130' INT TERM
+
+start_check() {
+  local chk=$1 name; name=$(basename "$chk" .sh)
+  ( s=$(now); bash "$chk" >"$logdir/$name.log" 2>&1; rc=$?
+    printf '%d %s\n' $rc "$(secs "$s" "$(now)")" >"$logdir/$name.rc" ) &
+  running[$!]=$chk
+}
+
+finish_check() {
+  local pid chk name log rc t r
+  wait -n -p pid "${!running[@]}"
+  chk=${running[$pid]}; unset "running[$pid]"
   name=$(basename "$chk" .sh); log="$logdir/$name.log"
-  start=$(now)
-  bash "$chk" >"$log" 2>&1; rc=$?
-  t=$(secs "$start" "$(now)")
-  if [ $rc -eq 0 ]; then
+  read -r rc t <"$logdir/$name.rc" 2>/dev/null || { rc=1; t=0; echo "(no result: the check's shell died)" >>"$log"; }
+  rm -f "$logdir/$name.rc"
+  if [ "$rc" -eq 0 ]; then
     pass=$((pass + 1)); r=ok
   else
     fail=$((fail + 1)); r=FAIL; failed+=("$name  (log: $log; rerun: bash $chk)")
@@ -50,7 +74,14 @@ for chk in "$checks"/*.sh; do
   fi
   printf 'check\t%s\t%s\t%d\t%s\t%s\n' "$name" "$t" "$rc" "$log" "bash $chk" >>"$results"
   printf '%-40s %s (%.0fs)\n' "$name" "$r" "$t"
+}
+
+for chk in "${order[@]}"; do
+  while [ ${#running[@]} -ge "$jobs" ]; do finish_check; done
+  start_check "$chk"
 done
+while [ ${#running[@]} -gt 0 ]; do finish_check; done
+trap - INT TERM
 
 if python3 scripts/junit-xml.py write "$results" "$xml"; then
   echo "JUnit XML: $xml"

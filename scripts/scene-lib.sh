@@ -11,7 +11,11 @@ build_scene_stats() {
   ldflags=$(sed -n 's/^LDFLAGS := //p' <<<"$flags")
   ldlibs=$(sed -n 's/^LDLIBS := //p' <<<"$flags")
   if [ ! build/scene-stats -nt scripts/scene-stats.c ] || [ ! build/scene-stats -nt build/libpree.a ]; then
-    gcc $cflags -c scripts/scene-stats.c -o build/scene-stats.o &&
-      g++ $ldflags build/scene-stats.o build/libpree.a -o build/scene-stats $ldlibs || return 1
+    # Private names, then one rename: checks that run at once may build it together.
+    local tmp=build/scene-stats.$$
+    gcc $cflags -c scripts/scene-stats.c -o $tmp.o &&
+      g++ $ldflags $tmp.o build/libpree.a -o $tmp $ldlibs && mv -f $tmp build/scene-stats \
+      || { rm -f $tmp $tmp.o; return 1; }
+    rm -f $tmp.o
   fi
 }

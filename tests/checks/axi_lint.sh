@@ -2,6 +2,7 @@
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
 # verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths); Icarus
 # (-g2005) elaborates pree_axi and pree_reset_sync through it.
+# cost: 45 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 listed=$(grep -v '^//' rtl/pree.f | sort)

@@ -7,6 +7,7 @@
 # an image changes with the thread count, the scan or the screening's lanes); bench-count must
 # give its rows, the same twice; bench-scale at a small frame must give its two rows (re-filter on
 # and off) with one image hash and fewer candidates with the re-filter.
+# cost: 51 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 run scripts/bench-convergence.sh "$PREE" "$TMP/conv" --quick

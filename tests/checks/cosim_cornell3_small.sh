@@ -8,6 +8,7 @@
 # load port's lead; the 4-PREU floor is cosim_schedule.sh's), and the scheduler's cycle model
 # must predict their hazard, same-key and bank-conflict counts exactly (its starved count
 # differs by the cycles before the first photon).
+# cost: 31 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 mkdir -p build/cosim

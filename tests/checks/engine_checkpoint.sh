@@ -7,6 +7,7 @@
 # foreign file, or one beyond the photon count is a one-line error with nothing written. A time
 # limit stops after the block in progress with exit 0, and the image equals a render of the
 # photon count the statistics report.
+# cost: 46 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 SCENE=$ROOT/scenes/cornell3
 R=(render "$SCENE" --width 96 --height 72 --photons 200000 --quiet)

@@ -5,6 +5,7 @@
 # (PREE_NO_AVX2=1: the screening and the sphere group), and a triangle-mesh scene with glass;
 # and the cells grid through its hash table (PREE_GRID_HASHED=1) against its dense cell map.
 # level: quick
+# cost: 66 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 hashes() { echo "$(json "$1" image_hash)/$(json "$1" state_hash)/$(json "$1" hpuo_candidates)/$(json "$1" hpuo_normal_passed)/$(json "$1" hpuo_accepted)"; }
 for scene in cornell3 cornell-water; do

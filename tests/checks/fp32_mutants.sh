@@ -5,6 +5,7 @@
 # bit, shift amount) in a copy of rtl/, and both the Verilator bench and the Icarus testbench of
 # the affected unit must then report mismatches and exit non-zero. A mutant that passes either
 # fails this check.
+# cost: 93 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
 make --no-print-directory -s build/fp32/fp32_gen.o build/fp32/fp32_vecgen >/dev/null \

@@ -4,6 +4,7 @@
 # both datapaths (paper, stable), and one hit point fed 100,000 accepted photons through each
 # datapath's PREU with its state written back every time (make sim-preu-chain; 10 million there).
 # level: quick
+# cost: 305 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
 for cmd in "make -s lint-preu" "make -s yosys-check-preu" "make -s sim-preu-vl PREU_N=20000 PREU_SEED=7" \

@@ -10,6 +10,7 @@
 # elaborating the deep units, not in the vectors (PipeFast 1 paper, 100 vectors, 630 cycles: 449 s
 # wall on the shared 2-core machine; 1,000 vectors of both ran over 60 minutes); run it with
 # make sim-preu-iv PREU_CFGS=0f_1f PREU_IV_N=100. Fails on any mismatch, latency or protocol error.
+# cost: 255 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
 fail=0

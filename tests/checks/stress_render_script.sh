@@ -5,6 +5,7 @@
 # both scenes, and each scale-1 copy identical to itself. (The scale rows' figures are the host's
 # limits, reported in docs/numerics.md, not judged here.)
 # Usage: tests/checks/stress_render_script.sh   (PREE=path/to/pree to test another build)
+# cost: 36 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 run scripts/stress-render.sh "$PREE" "$TMP/sr" --quick

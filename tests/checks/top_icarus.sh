@@ -5,6 +5,7 @@
 # every hit-point and pixel word against the fp32 model; then the mutants of pree_top.v (hazard
 # stall off, same-cycle duplicate check off) must fail with mismatches. Runs and mutants are
 # listed in mk/top_icarus.mk (make sim-top-icarus).
+# cost: 184 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
 build=${BUILD:-build}

@@ -3,6 +3,7 @@
 # the paper's configuration (PipeFast 0, PhotonsPerCycle 1) and the deep, wide one (PipeFast 1,
 # PhotonsPerCycle NumPreu / 4, as the co-simulation builds).
 # (Full level: it also lints the PREU and fp32 units as instantiated under the top.)
+# cost: 180 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
 srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
