@@ -9,6 +9,10 @@
 # many checks run at once (below).
 set -u
 level=${1:-full}
+jobs=${PREE_TEST_JOBS:-$(nproc)}
+if ! [[ $jobs =~ ^[1-9][0-9]*$ ]]; then
+  echo "run-tests: PREE_TEST_JOBS must be a whole number of at least 1, not '$jobs'" >&2; exit 2
+fi
 cd "$(dirname "$0")/.."
 units=${PREE_TEST_UNITS:-build/tests}; checks=${PREE_TEST_CHECKS:-tests/checks}
 xml=${PREE_TEST_XML:-build/test-results.xml}
@@ -38,10 +42,9 @@ done
 
 # The checks run PREE_TEST_JOBS at a time (default: the core count; 1 runs them in turn). Each
 # check owns its temporary folder and build outputs; what several share is built beforehand by
-# make test-prereqs. Checks that declare "# cost: SECONDS" (measured alone on the idle 2-core
-# machine) start first, longest first, so that the slowest do not start last; the rest follow in
-# name order. Results print as checks end.
-jobs=${PREE_TEST_JOBS:-$(nproc)}
+# make test-prereqs. Checks that declare "# cost: SECONDS" (their time in a serial run; it only
+# orders the start) start first, longest first, so that the slowest do not start last; the rest
+# follow in name order. Results print as checks end.
 mapfile -t order < <(for chk in "$checks"/*.sh; do
   [ -f "$chk" ] || continue
   if [ "$level" = quick ] && ! grep -q '^# level: quick' "$chk"; then continue; fi
