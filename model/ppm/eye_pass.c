@@ -6,6 +6,9 @@
 #include "eye_pass.h"
 #include "optics.h"
 
+/* Image rows traced together before they join the result (a band of the image). */
+#define EYE_CHUNK_ROWS 64
+
 typedef struct {
     const scene_t *scene;
     const tracer_t *tr;
@@ -80,33 +83,40 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
     vec3 dir, cx, cy;
     camera_axes(cam, w, h, &dir, &cx, &cy);
     if (eye_camera_check(cam, w, h, err, errlen)) return -1;
-    hitpoints_t *rows = calloc((size_t)h, sizeof *rows);
+    /* Rows are traced in parallel into row buffers and appended in row order, EYE_CHUNK_ROWS at a
+     * time, so that the buffers never hold more than a band of the image beside the result. */
+    hitpoints_t *rows = calloc(EYE_CHUNK_ROWS, sizeof *rows);
     if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
     eye_stats_t total = {0, 0};
     int failed = 0, stopped = 0;
+    for (int y0 = 0; y0 < h && !failed && !stopped; y0 += EYE_CHUNK_ROWS) {
+        const int y1 = y0 + EYE_CHUNK_ROWS < h ? y0 + EYE_CHUNK_ROWS : h;
 #pragma omp parallel reduction(+ : failed, stopped)
-    {
-        eye_ctx_t c = {scene, tr, NULL, {0, 0}, 0};
-#pragma omp for schedule(dynamic, 4)
-        for (int y = 0; y < h; y++) {
-            if (stopped || stop_requested(stop)) { stopped = 1; continue; }
-            c.out = &rows[y];
-            for (int x = 0; x < w; x++) {
-                vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
-                eye_trace(&c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(1, 1, 1), y * w + x);
-            }
-        }
-#pragma omp critical
         {
-            total.rays += c.st.rays;
-            total.glass_splits += c.st.glass_splits;
+            eye_ctx_t c = {scene, tr, NULL, {0, 0}, 0};
+#pragma omp for schedule(dynamic, 1)
+            for (int y = y0; y < y1; y++) {
+                if (stopped || stop_requested(stop)) { stopped = 1; continue; }
+                c.out = &rows[y - y0];
+                for (int x = 0; x < w; x++) {
+                    vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
+                    eye_trace(&c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(1, 1, 1), y * w + x);
+                }
+            }
+#pragma omp critical
+            {
+                total.rays += c.st.rays;
+                total.glass_splits += c.st.glass_splits;
+            }
+            failed += c.failed;
         }
-        failed += c.failed;
+        for (int y = y0; y < y1; y++) {
+            if (!failed && !stopped && hitpoints_append(out, &rows[y - y0])) failed = 1;
+            hitpoints_free(&rows[y - y0]);
+        }
     }
-    for (int y = 0; y < h && !failed && !stopped; y++)
-        if (hitpoints_append(out, &rows[y])) failed = 1;
-    for (int y = 0; y < h; y++) hitpoints_free(&rows[y]);
     free(rows);
+    if (!failed && !stopped && hitpoints_trim(out)) failed = 1;
     if (failed || stopped) {
         snprintf(err, errlen, "%s", failed ? "out of memory in the eye pass" : STOP_MESSAGE);
         return -1;

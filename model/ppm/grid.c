@@ -169,8 +169,7 @@ static void cell_box(const grid_t *g, const hp_hot_t *p, double rs, int64_t a[3]
 /* Whether GRID_CELLS lists hit point i: all of them, or those of non-zero weight. */
 static int listed(const hitpoints_t *h, size_t i, int include_zero)
 {
-    const vec3 w = h->weight[i];
-    return include_zero || w.x != 0 || w.y != 0 || w.z != 0;
+    return include_zero || !hitpoints_zero_weight(h, i);
 }
 
 /* Visit every cell of hit point p's safe-radius box. */
@@ -223,9 +222,6 @@ static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t i
     return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, grid_cell_key(ix, iy, iz));
 }
 
-/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
- * the grid is small enough, else in an open-addressing table of packed keys (size a power of
- * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
 /* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
 static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
@@ -233,15 +229,44 @@ static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int
     if (*d == GRID_NO_BUCKET) *d = (*next)++;
 }
 
-typedef struct { uint64_t *keys; size_t mask, distinct; } hash_ctx_t;
+/* An open-addressing table of packed cell keys; when it grows (counting), it doubles before it is
+ * half full, so it stays within four times the distinct cells. */
+typedef struct { uint64_t *keys; size_t mask, distinct; int grow, failed; } hash_ctx_t;
+
+static int hash_alloc(hash_ctx_t *c, size_t size)
+{
+    c->keys = malloc(size * sizeof(uint64_t));
+    if (!c->keys) return -1;
+    memset(c->keys, 0xFF, size * sizeof(uint64_t));
+    c->mask = size - 1;
+    return 0;
+}
+
+static int hash_double(hash_ctx_t *c)
+{
+    hash_ctx_t big = *c;
+    if (hash_alloc(&big, 2 * (c->mask + 1))) return -1;
+    for (size_t sl = 0; sl <= c->mask; sl++)
+        if (c->keys[sl] != EMPTY_KEY) big.keys[find_slot(big.keys, big.mask, c->keys[sl])] = c->keys[sl];
+    free(c->keys);
+    *c = big;
+    return 0;
+}
 
 static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
     (void)g;   /* the cell visitor's signature; the hashed numbering needs only the cell */
     hash_ctx_t *c = ctx;
+    if (c->failed) return;
     uint64_t key = grid_cell_key(ix, iy, iz);
     size_t sl = find_slot(c->keys, c->mask, key);
-    if (c->keys[sl] == EMPTY_KEY) { c->keys[sl] = key; c->distinct++; }
+    if (c->keys[sl] != EMPTY_KEY) return;
+    if (c->grow && 2 * (c->distinct + 1) > c->mask + 1) {
+        if (hash_double(c)) { c->failed = 1; return; }
+        sl = find_slot(c->keys, c->mask, key);
+    }
+    c->keys[sl] = key;
+    c->distinct++;
 }
 
 /* Number the distinct cells that listed hit points touch: in a dense array of every cell when
@@ -260,23 +285,18 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char 
         g->num_buckets = next ? next : 1;
         return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
     }
-    /* Count the distinct cells in a table sized for every (hit point, cell) pair, then build the
-     * real one at twice the distinct count, so that look-ups probe a compact table. */
+    /* Count the distinct cells in a table that grows with them, then build the real one at twice
+     * the distinct count, so that look-ups probe a compact table. (A first table sized for every
+     * (hit point, cell) pair took 512 MB at 1600x1200.) */
     size_t bound = 0;
-    for (size_t i = 0; i < h->n; i++) {
-        if (!listed(h, i, include_zero)) continue;
-        int64_t a[3], b[3];
-        cell_box(g, &h->hot[i], g->r_safe, a, b);
-        bound += (size_t)((b[0] - a[0] + 1) * (b[1] - a[1] + 1) * (b[2] - a[2] + 1));
-    }
     for (int round = 0; round < 2; round++) {
         size_t size = 1024;
         while (size < 2 * bound) size *= 2;
-        hash_ctx_t c = {malloc(size * sizeof(uint64_t)), size - 1, 0};
-        if (!c.keys) goto oom;
-        memset(c.keys, 0xFF, size * sizeof(uint64_t));
-        for (size_t i = 0; i < h->n; i++)
+        hash_ctx_t c = {NULL, 0, 0, round == 0, 0};
+        if (hash_alloc(&c, size)) goto oom;
+        for (size_t i = 0; i < h->n && !c.failed; i++)
             if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+        if (c.failed) { free(c.keys); goto oom; }
         if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
         if (round == 0) { free(c.keys); bound = c.distinct; continue; }
         g->num_buckets = size;

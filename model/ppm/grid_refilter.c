@@ -10,17 +10,13 @@
 #include "fp32_ops.h"
 #include "grid_refilter.h"
 
-/* The cell of every bucket, as a packed key (UINT64_MAX: no cell). NULL when out of memory. */
+/* The cell of every dense-numbered bucket, as a packed key (UINT64_MAX: no cell). NULL when out
+ * of memory. (A hashed grid's buckets are its table's slots, whose keys it holds already.) */
 static uint64_t *bucket_cells(const grid_t *g)
 {
     uint64_t *key = malloc(g->num_buckets * sizeof *key);
     if (!key) return NULL;
     for (size_t b = 0; b < g->num_buckets; b++) key[b] = UINT64_MAX;
-    if (!g->dense) {
-        const uint64_t *k = g->parts[0].keys;
-        for (size_t b = 0; b < g->num_buckets; b++) key[b] = k[b];
-        return key;
-    }
     for (int64_t iz = 0; iz <= g->cell_max[2]; iz++)
         for (int64_t iy = 0; iy <= g->cell_max[1]; iy++)
             for (int64_t ix = 0; ix <= g->cell_max[0]; ix++) {
@@ -63,17 +59,22 @@ static size_t refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, i
     part->start[g->num_buckets] = (uint32_t)w;
     const size_t dropped = part->num_entries - w;
     part->num_entries = w;
+    /* The padding beyond the last entry is zeros again, and the space dropped goes back. */
+    for (size_t k = w; k < w + GRID_ENTRY_PAD; k++) part->hp[k] = 0;
+    uint32_t *shrunk = realloc(part->hp, (w + GRID_ENTRY_PAD) * sizeof *part->hp);
+    if (shrunk) part->hp = shrunk;
     return dropped;
 }
 
 long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int nthreads)
 {
     if (g->kind != GRID_CELLS || !g->parts) return 0;
-    uint64_t *key = bucket_cells(g);
-    if (!key) return -1;
+    uint64_t *own = g->dense ? bucket_cells(g) : NULL;
+    if (g->dense && !own) return -1;
+    const uint64_t *key = own ? own : g->parts[0].keys;
     size_t dropped = 0;
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1) reduction(+ : dropped)
     for (int p = 0; p < g->num_parts; p++) dropped += refilter_part(g, h, prec, p, key);
-    free(key);
+    free(own);
     return (long long)dropped;
 }

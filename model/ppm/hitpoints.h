@@ -1,9 +1,11 @@
 /* hitpoints.h: the measurement points of progressive photon mapping and their state.
  *
  * Geometry (position, normal, weight, pixel) comes from the eye pass, in creation order
- * (pixel order, then path order). The state (radius squared, photon count, flux) is held in
- * double for the double mode and, for the fp32 mode, as binary32 words in the PREU's layout
- * (model/pree/preu_fp32.h) or, with the stable datapath, in its layout (model/pree/preu_stable.h).
+ * (pixel order, then path order). Each mode then adds only the arrays its state needs:
+ *   double  r2 and flux in double (hitpoints_init_double), the count in hp_hot_t, the weight;
+ *   fp32    binary32 words in the PREU's layout (model/pree/preu_fp32.h) or, with the stable
+ *           datapath, in its layout (model/pree/preu_stable.h), which hold the weight too, so the
+ *           double weight is dropped (hitpoints_drop_weight) for a byte that says it was zero.
  * Index i is the hit point's address in the PREE hit-point memory. */
 #ifndef PREE_HITPOINTS_H
 #define PREE_HITPOINTS_H
@@ -25,9 +27,10 @@ typedef struct {
 typedef struct {
     size_t n, cap;
     hp_hot_t *hot;
-    vec3 *weight;      /* BRDF colour times eye-path throughput */
-    vec3 *flux;        /* accumulated flux tau (double mode) */
-    double *r2;        /* radius squared (double mode), compact for the distance test */
+    vec3 *weight;      /* BRDF colour times eye-path throughput (NULL in fp32 mode after its set-up) */
+    uint8_t *dark;     /* fp32 mode: 1 where the weight was zero in every channel (else NULL) */
+    vec3 *flux;        /* accumulated flux tau (double mode; else NULL) */
+    double *r2;        /* radius squared (double mode; else NULL), compact for the distance test */
     uint32_t *r2_f32;  /* fp32 mode: a compact copy of fp32[i].r2 for the distance test; stable
                         * datapath: a binary32 bound on the accepted d2 (preu_stable_screen_r2) */
     int32_t *pixel;    /* pixel index y * width + x */
@@ -40,7 +43,20 @@ typedef struct {
 
 int hitpoints_push(hitpoints_t *h, vec3 pos, vec3 nrm, vec3 weight, int32_t pixel, uint32_t object);
 int hitpoints_append(hitpoints_t *dst, const hitpoints_t *src);
+/* Give back the growth margin: the arrays hold exactly n. 0 or -1. */
+int hitpoints_trim(hitpoints_t *h);
+/* The double mode's state before the first photon: r2 = r0^2, flux 0, count 0. 0 or -1. */
+int hitpoints_init_double(hitpoints_t *h, double r0);
+/* fp32 mode, once its state words hold the weight: free the double weight, keeping whether it
+ * was zero (dark). 0 or -1. */
+int hitpoints_drop_weight(hitpoints_t *h);
 void hitpoints_free(hitpoints_t *h);
+/* Whether hit point i's weight is zero in every channel (it can add no radiance). */
+static inline int hitpoints_zero_weight(const hitpoints_t *h, size_t i)
+{
+    if (!h->weight) return h->dark[i];
+    return h->weight[i].x == 0 && h->weight[i].y == 0 && h->weight[i].z == 0;
+}
 /* Bytes held per hit point by the arrays h has (geometry, weight, pixel, double and fp32 state). */
 size_t hitpoints_bytes_each(const hitpoints_t *h);
 

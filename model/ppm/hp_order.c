@@ -77,46 +77,63 @@ uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, doubl
     return perm;
 }
 
-/* Replace *arr (n elements of size sz) by its gathered (new[k] = old[perm[k]]) or scattered
- * (new[perm[k]] = old[k]) copy. */
-static int permute(void **arr, size_t sz, size_t n, size_t cap, const uint32_t *perm, int scatter)
+/* The largest array element that is permuted (preu_shp_t). */
+#define PERMUTE_MAX_ELEM 128
+
+/* Permute arr (n elements of size sz) in place, cycle by cycle: gathered (new[k] = old[perm[k]])
+ * or scattered (new[perm[k]] = old[k]). done is n bits of scratch; a copy of the array would
+ * add up to 56 bytes a hit point to the render's peak. */
+static void permute(void *arr, size_t sz, size_t n, const uint32_t *perm, int scatter, uint64_t *done)
 {
-    if (!*arr) return 0;
-    unsigned char *dst = malloc((cap ? cap : 1) * sz);
-    if (!dst) return -1;
-    const unsigned char *src = *arr;
-    /* Constant sizes let the compiler turn each copy into a few moves. */
-#define PERMUTE_COPY(SZ)                                                                  \
-    for (size_t k = 0; k < n; k++) {                                                      \
-        if (scatter) memcpy(dst + (size_t)perm[k] * (SZ), src + k * (SZ), (SZ));          \
-        else memcpy(dst + k * (SZ), src + (size_t)perm[k] * (SZ), (SZ));                  \
+    if (!arr) return;
+    unsigned char *a = arr, carry[PERMUTE_MAX_ELEM], t[PERMUTE_MAX_ELEM];
+    memset(done, 0, (n + 63) / 64 * sizeof *done);
+#define DONE(i) (done[(i) >> 6] >> ((i) & 63) & 1)
+#define MARK(i) (done[(i) >> 6] |= (uint64_t)1 << ((i) & 63))
+    for (size_t k = 0; k < n; k++) {
+        if (DONE(k)) continue;
+        MARK(k);
+        if (perm[k] == k) continue;
+        if (scatter) {   /* carry old[k] to its place perm[k], taking what stood there on */
+            memcpy(carry, a + k * sz, sz);
+            for (size_t j = perm[k]; j != k; j = perm[j]) {
+                memcpy(t, a + j * sz, sz);
+                memcpy(a + j * sz, carry, sz);
+                memcpy(carry, t, sz);
+                MARK(j);
+            }
+            memcpy(a + k * sz, carry, sz);
+        } else {   /* pull old[perm[j]] into j along the cycle */
+            memcpy(carry, a + k * sz, sz);
+            size_t j = k;
+            for (size_t next = perm[j]; next != k; j = next, next = perm[j]) {
+                memcpy(a + j * sz, a + next * sz, sz);
+                MARK(next);
+            }
+            memcpy(a + j * sz, carry, sz);
+        }
     }
-    switch (sz) {
-    case 4: PERMUTE_COPY(4) break;
-    case 8: PERMUTE_COPY(8) break;
-    case 24: PERMUTE_COPY(24) break;
-    case 64: PERMUTE_COPY(64) break;
-    default: PERMUTE_COPY(sz) break;
-    }
-#undef PERMUTE_COPY
-    free(*arr);
-    *arr = dst;
-    return 0;
+#undef DONE
+#undef MARK
 }
 
 static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
 {
-    /* fp32, stable and r2_f32 are sized n (allocated by the render), the others cap. */
-    int rc = 0;
-    rc |= permute((void **)&h->hot, sizeof *h->hot, h->n, h->cap, perm, scatter);
-    rc |= permute((void **)&h->weight, sizeof *h->weight, h->n, h->cap, perm, scatter);
-    rc |= permute((void **)&h->flux, sizeof *h->flux, h->n, h->cap, perm, scatter);
-    rc |= permute((void **)&h->r2, sizeof *h->r2, h->n, h->cap, perm, scatter);
-    rc |= permute((void **)&h->pixel, sizeof *h->pixel, h->n, h->cap, perm, scatter);
-    rc |= permute((void **)&h->fp32, sizeof *h->fp32, h->n, h->n, perm, scatter);
-    rc |= permute((void **)&h->stable, sizeof *h->stable, h->n, h->n, perm, scatter);
-    rc |= permute((void **)&h->r2_f32, sizeof *h->r2_f32, h->n, h->n, perm, scatter);
-    return rc ? -1 : 0;
+    _Static_assert(sizeof *h->stable <= PERMUTE_MAX_ELEM && sizeof *h->fp32 <= PERMUTE_MAX_ELEM &&
+                   sizeof *h->hot <= PERMUTE_MAX_ELEM, "an element larger than permute's buffers");
+    uint64_t *done = malloc(((h->n + 63) / 64 + 1) * sizeof *done);
+    if (!done) return -1;
+    permute(h->hot, sizeof *h->hot, h->n, perm, scatter, done);
+    permute(h->weight, sizeof *h->weight, h->n, perm, scatter, done);
+    permute(h->flux, sizeof *h->flux, h->n, perm, scatter, done);
+    permute(h->r2, sizeof *h->r2, h->n, perm, scatter, done);
+    permute(h->pixel, sizeof *h->pixel, h->n, perm, scatter, done);
+    permute(h->dark, sizeof *h->dark, h->n, perm, scatter, done);
+    permute(h->fp32, sizeof *h->fp32, h->n, perm, scatter, done);
+    permute(h->stable, sizeof *h->stable, h->n, perm, scatter, done);
+    permute(h->r2_f32, sizeof *h->r2_f32, h->n, perm, scatter, done);
+    free(done);
+    return 0;
 }
 
 int hp_order_apply(hitpoints_t *h, const uint32_t *perm) { return permute_all(h, perm, 0); }

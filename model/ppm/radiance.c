@@ -4,11 +4,6 @@
 #include "radiance.h"
 #include "adiso_order.h"
 
-static int zero_weight(const hitpoints_t *h, size_t i)
-{
-    return h->weight[i].x == 0 && h->weight[i].y == 0 && h->weight[i].z == 0;
-}
-
 /* fp32: the PREE's radiance pass, hit points in ADISO-REC issue order (model/pree/adiso_order.h). */
 int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu, int stages,
                         uint32_t *L, unsigned long long *skipped)
@@ -21,7 +16,7 @@ int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, i
     const uint32_t ne = preu_n_emitted(emitted);
     for (size_t k = 0; k < h->n; k++) {
         const uint32_t i = order[k];
-        if (skip_zero && zero_weight(h, i)) { sk++; continue; }
+        if (skip_zero && hitpoints_zero_weight(h, i)) { sk++; continue; }
         if (h->stable) preu_stable_radiance(L + 3 * (size_t)h->pixel[i], &h->stable[i], ne);
         else preu_radiance(L + 3 * (size_t)h->pixel[i], &h->fp32[i], ne);
     }
@@ -38,7 +33,7 @@ int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emit
     if (prec == PRECISION_DOUBLE) {
         const double batches = (double)(emitted / 1000);
         for (size_t i = h->n; i-- > 0;) {
-            if (skip_zero && zero_weight(h, i)) { sk++; continue; }
+            if (skip_zero && hitpoints_zero_weight(h, i)) { sk++; continue; }
             double *px = rgb + 3 * (size_t)h->pixel[i];
             double k = 1.0 / (((PREE_PI * h->r2[i]) * batches) * 1000.0);
             px[0] = px[0] + h->flux[i].x * k;

@@ -30,18 +30,14 @@ long render_peak_rss_kb(void)
 }
 
 /* Hit-point state before the first photon: radius r0, no photons, no flux; the update rule's
- * alpha and, in fp32 mode, the datapath's state layout. */
+ * alpha and, in fp32 mode, the datapath's state layout, which holds the weight (so the double
+ * weight is dropped). */
 static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
 {
     h->alpha = render_alpha(opt);
     h->alpha32 = preu_f32(h->alpha);
     h->kappa32 = preu_kappa(h->alpha32);
-    for (size_t i = 0; i < h->n; i++) {
-        h->r2[i] = r0 * r0;
-        h->hot[i].count = 0;
-        h->flux[i] = v3(0, 0, 0);
-    }
-    if (opt->precision != PRECISION_FP32) return 0;
+    if (opt->precision != PRECISION_FP32) return hitpoints_init_double(h, r0);
     const int stable = opt->datapath == DATAPATH_STABLE;
     const size_t n = h->n ? h->n : 1;
     if (stable) h->stable = malloc(n * sizeof *h->stable);
@@ -69,7 +65,7 @@ static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
             h->r2_f32[i] = r2;
         }
     }
-    return 0;
+    return hitpoints_drop_weight(h);
 }
 
 /* Trace the photons of sequence indices [first, first + count) into the ordered chunk buffers;
@@ -131,18 +127,24 @@ static void progress(render_options_t *opt, uint64_t done, uint64_t total, doubl
     if (fflush(stderr) != 0 || ferror(stderr)) opt->progress = 0;
 }
 
-static void session_free(render_session_t *s)
+/* What only the photon pass uses: the grid, the traced hits and the candidate lists (freed before
+ * the radiance pass, so that its peak does not add to theirs). */
+static void free_photon_pass(render_session_t *s)
 {
-    if (s->bb) {
+    if (s->bb)
         for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&s->bb->chunk[c]);
-        free(s->bb);
-    }
     grid_free(&s->grid);
-    free(s->perm);
-    free(s->owner);
     update_batch_free(&s->batch);
     if (s->scratch)
         for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
+}
+
+static void session_free(render_session_t *s)
+{
+    free_photon_pass(s);
+    free(s->bb);
+    free(s->perm);
+    free(s->owner);
     free(s->scratch);
     free(s->ust);
     update_ops_free(&s->ops);
@@ -234,10 +236,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
         goto fail;
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
-    for (size_t i = 0; i < res->hp.n; i++) {
-        vec3 w = res->hp.weight[i];
-        st->hit_points_zero_weight += (w.x == 0 && w.y == 0 && w.z == 0);
-    }
+    for (size_t i = 0; i < res->hp.n; i++) st->hit_points_zero_weight += hitpoints_zero_weight(&res->hp, i);
 
     /* Initial radius, hit-point state, and the grid. */
     phase = "grid build";
@@ -249,10 +248,11 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
                  "bounding box) is 0: use a larger image", res->hp.n);
         goto fail;
     }
-    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
-    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c). */
+    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c); the state is
+     * set per hit point, so it is made after the reordering, which then moves fewer arrays. */
     s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
     if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
+    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
      * grid of every hit point and routes what it keeps to the owning part. */
     s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
@@ -563,6 +563,7 @@ int render_close(render_session_t *s, char *err, size_t errlen)
             goto done;
         }
     }
+    free_photon_pass(s);
     st->photon_hits_no_cell = s->bb->no_cell;
     st->photon_hits += s->bb->no_cell;
     st->photons_emitted = res->hp.n ? s->done_photons : s->emitted_target;

@@ -14,7 +14,7 @@ static hitpoints_t one_hit_point(vec3 weight)
     hitpoints_t h;
     memset(&h, 0, sizeof h);
     assert_int_equal(hitpoints_push(&h, v3(1, 2, 3), v3(0, 1, 0), weight, 0, 0), 0);
-    h.r2[0] = 1.0;
+    assert_int_equal(hitpoints_init_double(&h, 1.0), 0);
     h.alpha = UPDATE_ALPHA;
     return h;
 }
