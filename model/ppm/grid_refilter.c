@@ -7,6 +7,7 @@
  * their numbers (the cell map is untouched) and their entries keep their order. */
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "fp32_ops.h"
 #include "grid_refilter.h"
 
@@ -44,19 +45,51 @@ static int still_reaches(const grid_t *g, const hitpoints_t *h, precision_t prec
     return 1;
 }
 
-/* Compact part p's buckets in place. Returns the entries dropped. */
-static size_t refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, int p, const uint64_t *key)
+/* Bucket ranges that threads compact at once (more than threads, for balance). */
+#define REFILTER_RANGES 256
+
+/* Compact the buckets [b0, b1) of a part in place within their own entries, which start at lo
+ * and end at hi (start[b0] and start[b1] before any change): start[b] becomes the bucket's new
+ * first entry. Returns the entries kept. */
+static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t prec, grid_part_t *part,
+                             const uint64_t *key, size_t b0, size_t b1, size_t lo, size_t hi)
+{
+    size_t w = lo, from = lo;
+    for (size_t b = b0; b < b1; b++) {
+        const size_t to = b + 1 == b1 ? hi : part->start[b + 1];
+        part->start[b] = (uint32_t)w;
+        for (size_t k = from; k < to; k++)
+            if (still_reaches(g, h, prec, part->hp[k], key[b])) part->hp[w++] = part->hp[k];
+        from = to;
+    }
+    return w - lo;
+}
+
+/* Compact part p's buckets in place: ranges of buckets in parallel, then each range's entries
+ * moved down to follow the previous range's. Returns the entries dropped, or -1 (memory). */
+static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, int p, const uint64_t *key,
+                               int nthreads)
 {
     grid_part_t *part = &g->parts[p];
+    const size_t nb = g->num_buckets, nr = nb < REFILTER_RANGES ? nb : REFILTER_RANGES;
+    size_t *edge = malloc((nr + 1) * sizeof *edge), *kept = malloc((nr ? nr : 1) * sizeof *kept);
+    if (!edge || !kept) { free(edge); free(kept); return -1; }
+    for (size_t r = 0; r <= nr; r++) edge[r] = part->start[nb * r / nr];
+#pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1)
+    for (size_t r = 0; r < nr; r++)
+        kept[r] = refilter_range(g, h, prec, part, key, nb * r / nr, nb * (r + 1) / nr, edge[r], edge[r + 1]);
     size_t w = 0;
-    for (size_t b = 0; b < g->num_buckets; b++) {
-        const size_t lo = part->start[b], hi = part->start[b + 1];
-        part->start[b] = (uint32_t)w;
-        for (size_t k = lo; k < hi; k++) {
-            if (still_reaches(g, h, prec, part->hp[k], key[b])) part->hp[w++] = part->hp[k];
+    for (size_t r = 0; r < nr; r++) {
+        const size_t shift = edge[r] - w;
+        if (shift) {
+            memmove(part->hp + w, part->hp + edge[r], kept[r] * sizeof *part->hp);
+            for (size_t b = nb * r / nr; b < nb * (r + 1) / nr; b++) part->start[b] -= (uint32_t)shift;
         }
+        w += kept[r];
     }
-    part->start[g->num_buckets] = (uint32_t)w;
+    free(edge);
+    free(kept);
+    part->start[nb] = (uint32_t)w;
     const size_t dropped = part->num_entries - w;
     part->num_entries = w;
     /* The padding beyond the last entry is zeros again, and the space dropped goes back. */
@@ -72,9 +105,11 @@ long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int n
     uint64_t *own = g->dense ? bucket_cells(g) : NULL;
     if (g->dense && !own) return -1;
     const uint64_t *key = own ? own : g->parts[0].keys;
-    size_t dropped = 0;
-#pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1) reduction(+ : dropped)
-    for (int p = 0; p < g->num_parts; p++) dropped += refilter_part(g, h, prec, p, key);
+    long long dropped = 0;
+    for (int p = 0; p < g->num_parts && dropped >= 0; p++) {
+        const long long d = refilter_part(g, h, prec, p, key, nthreads);
+        dropped = d < 0 ? -1 : dropped + d;
+    }
     free(own);
-    return (long long)dropped;
+    return dropped;
 }
