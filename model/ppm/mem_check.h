@@ -2,9 +2,10 @@
  * limit, so that an image or scene too large for the machine is a one-line error naming the
  * limit instead of swapping, crawling on failed reallocations or being killed.
  *
- * The costs are measured (docs/engine.md, "Memory"): per hit point 559 bytes (cells grid),
- * 599 (smallppm), 636 (fp32 stable), 261 (brute) between 0.6 M and 2.4 M hit points (cornell3,
- * peak resident size); the photon blocks add about 32 MiB whatever the photon count; the BVH
+ * The costs are measured (docs/engine.md, "Memory"): per hit point 148 bytes (cells grid,
+ * double), 159 (smallppm), 142 (fp32 paper), 161 (fp32 stable) between 0.6 M and 2.4 M hit points
+ * (cornell3, peak resident size; 200 allowed); the photon blocks add about 32 MiB whatever the
+ * photon count; the BVH
  * holds 24 to 98 bytes a triangle once built (conference, sibenik), 128 allowed for its build. */
 #ifndef PREE_MEM_CHECK_H
 #define PREE_MEM_CHECK_H
@@ -12,7 +13,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#define MEM_HIT_POINT_BYTES 640u
+#define MEM_HIT_POINT_BYTES 200u
 #define MEM_PIXEL_BYTES 48u
 #define MEM_TRIANGLE_BYTES 128u
 #define MEM_BASE_BYTES (64u << 20)

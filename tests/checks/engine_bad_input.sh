@@ -168,7 +168,7 @@ ls -a "$TMP" | grep -q '\.tmp[-.]' && fail "a temporary file was left behind"
 echo "ok: 255-byte output names are written"
 # Memory: the estimate is checked before anything large is allocated, against --max-memory here
 # (the machine's own limits, RLIMIT_AS and MemAvailable, otherwise).
-expect_error "8192x8192 beyond --max-memory" "needs? about 4[0-9].[0-9]+ GiB .* but --max-memory is 1.00 GiB" render "$good" --width 8192 --height 8192 --max-memory 1G "${out[@]}"
-expect_error "2.4 M hit points beyond --max-memory" "the hit points' state and grid.* but --max-memory is 0.98 GiB" render "$good" --width 1280 --height 960 --photons 1000 --max-memory 1000M "${out[@]}"
+expect_error "8192x8192 beyond --max-memory" "needs? about 1[0-9].[0-9]+ GiB .* but --max-memory is 1.00 GiB" render "$good" --width 8192 --height 8192 --max-memory 1G "${out[@]}"
+expect_error "2.4 M hit points beyond --max-memory" "the hit points' state and grid.* but --max-memory is 0.44 GiB" render "$good" --width 1280 --height 960 --photons 1000 --max-memory 450M "${out[@]}"
 expect_error "bad --max-memory" "--max-memory: '2x' is not a size" render "$good" --max-memory 2x "${out[@]}"
 expect_error "tiny --max-memory" "--max-memory: 1K is out of range" render "$good" --max-memory 1K "${out[@]}"

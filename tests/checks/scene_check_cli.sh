@@ -10,8 +10,8 @@ expect_eq "cornell3 materials" "$(awk '$1=="materials"{print $2}' c3.txt)" 7
 expect_eq "cornell3 lights" "$(awk '$1=="lights"{print $2}' c3.txt)" 1
 expect_eq "cornell3 triangles" "$(awk '$1=="triangles"{print $2}' c3.txt)" 0
 expect_eq "cornell3 hit points estimate" "$(awk '$1=="hit_points_estimate"{print $2}' c3.txt)" 76800
-# 64 MiB + 76800 pixels * (48 + 640) bytes
-expect_eq "cornell3 memory estimate" "$(awk '$1=="memory_estimate_bytes"{print $2}' c3.txt)" $((67108864 + 76800 * 688))
+# 64 MiB + 76800 pixels * (48 + 200) bytes
+expect_eq "cornell3 memory estimate" "$(awk '$1=="memory_estimate_bytes"{print $2}' c3.txt)" $((67108864 + 76800 * 248))
 "$PREE" check "$ROOT/scenes/cornell-teapot" > tp.txt 2>/dev/null || fail "check cornell-teapot"
 [ "$(awk '$1=="triangles"{print $2}' tp.txt)" -gt 1000 ] || fail "cornell-teapot: no mesh triangles: $(cat tp.txt)"
 echo "ok: cornell-teapot: $(awk '$1=="triangles"' tp.txt)"
@@ -27,7 +27,7 @@ expect_fail() {   # expect_fail NAME PATTERN ARGS...: exit 1, one stderr line ma
 expect_fail "/dev/zero" "/dev/zero: not a regular file" /dev/zero
 printf '%s\n' "camera origin 0 0 0 dir 0 0 -1 scale 0.5 near 0" "depth 5 6" > bad.scene
 expect_fail "extra value" "bad.scene:2: depth: unexpected '6'" bad.scene
-expect_fail "memory" "would need about 43.07 GiB .* but --max-memory is 2.00 GiB" "$ROOT/scenes/cornell3" --width 8192 --height 8192 --max-memory 2G
+expect_fail "memory" "would need about 15.5[6-9] GiB .* but --max-memory is 2.00 GiB" "$ROOT/scenes/cornell3" --width 8192 --height 8192 --max-memory 2G
 printf '%s\n' "camera origin 0 0 0 dir 1 0 0 scale 0.5 near 0" "material m diffuse .5 .5 .5" "sphere 1 5 0 0 m" "light point 0 5 0 flux 1 1 1" > x.scene
 expect_fail "camera rays" "camera: the eye rays .* have no direction" x.scene
 "$PREE" check "$ROOT/scenes/cornell3" --bogus 2>err.txt; [ $? -eq 2 ] && grep -q "unknown option '--bogus'" err.txt || fail "unknown option: $(cat err.txt)"
