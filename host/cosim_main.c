@@ -174,13 +174,15 @@ static int hp_words_differ(const preu_hpw_t *a, uint32_t pa, const preu_hpw_t *b
 }
 
 /* The RTL's hit-point memory got[0..hp->n) against the model's hit points (got[i] holds the
- * model's hit point model[i], or i where model is NULL): differing words; the hit points that
+ * model's hit point part->model[i], in rank r's PREE where part->lo[r] <= i < part->lo[r + 1];
+ * or, where part is NULL, i): differing words; the hit points that
  * differ and the first (its index in got) in *points and *first (SIZE_MAX: none). The first
  * five are printed. PREE_TEST_CORRUPT_HP=N flips a bit of the model's hit point N first: the
  * failure path's check (tests/checks/fail_trace.sh, mpi_cosim.sh). */
-static unsigned long long compare_hit_points(const hp_read_t *got, const uint32_t *model, const hitpoints_t *hp,
+static unsigned long long compare_hit_points(const hp_read_t *got, const cosim_part_t *part, const hitpoints_t *hp,
                                              int dp, unsigned long long *points, size_t *first)
 {
+    const uint32_t *model = part ? part->model : NULL;
     const char *env = getenv("PREE_TEST_CORRUPT_HP");
     const size_t corrupt = env ? (size_t)strtoull(env, NULL, 10) : SIZE_MAX;
     unsigned long long words = 0;
@@ -194,7 +196,11 @@ static unsigned long long compare_hit_points(const hp_read_t *got, const uint32_
         int dw = hp_words_differ(&got[i].w, got[i].px, &m, (uint32_t)hp->pixel[j], dp);
         if (!dw) continue;
         if (*points < 5) {
-            fprintf(stderr, "pree cosim: hit point %zu differs: state words RTL/model", j);
+            fprintf(stderr, "pree cosim: hit point %zu differs", j);
+            for (int r = 0; part && r < part->nranks; r++)
+                if (i >= part->lo[r] && i < part->lo[r + 1])
+                    fprintf(stderr, " (rank %d's PREE, address %zu)", r, i - part->lo[r]);
+            fprintf(stderr, ": state words RTL/model");
             for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", got[i].w.st[k], m.st[k]);
             fputc('\n', stderr);
         }
@@ -437,8 +443,9 @@ static int finish_report(cosim_report_t *rep, const cosim_args_t *c, int progres
         }
         fprintf(stderr, "pree cosim: %d PREEs of %d PREUs: load imbalance %.4f (max / mean update cycles), "
                 "utilization %.4f%% over the longest; differing words: hit points %llu, image %llu%s "
-                "(against one PREE's radiance order: %llu)\n", rep->mpi_ranks, rep->preu, rep->imbalance,
-                100 * rep->util_all, rep->hp_diff, rep->img_diff, rep->pass ? "" : " FAIL", rep->img_diff_one_pree);
+                "(against one PREE's radiance order, which adds a pixel's hit points in another order: %llu, at most %llu "
+                "ulps)\n", rep->mpi_ranks, rep->preu, rep->imbalance, 100 * rep->util_all, rep->hp_diff, rep->img_diff,
+                rep->pass ? "" : " FAIL", rep->img_diff_one_pree, rep->img_max_ulp_one_pree);
     } else if (progress)
         fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
                 "differing words: hit points %llu, image %llu%s\n",
@@ -671,12 +678,17 @@ int pree_cmd_cosim(int argc, char **argv)
         rep.sec_rad_rtl = now() - t0;
         cosim_drv_counters(ctx.drv, rep.cnt_all);
         if (part.rank > 0) { status = 0; goto out; }
-        rep.hp_diff = compare_hit_points(got, part.model, &res.hp, dp, &rep.hp_diff_points, &first_hp);
+        rep.hp_diff = compare_hit_points(got, &part, &res.hp, dp, &rep.hp_diff_points, &first_hp);
         rep.img_diff = image_words_differ(Lr, Lm, npix, 1);
         unsigned long long skipped;
         if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(c.pipefast), L1,
                                 &skipped)) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
         rep.img_diff_one_pree = image_words_differ(Lr, L1, npix, 0);
+        for (size_t j = 0; j < npix * 3; j++) {   /* the ulps of binary32 sums in two orders */
+            const long long d = (long long)(int32_t)Lr[j] - (long long)(int32_t)L1[j];
+            const unsigned long long u = (unsigned long long)(d < 0 ? -d : d);
+            if (u > rep.img_max_ulp_one_pree) rep.img_max_ulp_one_pree = u;
+        }
         rep.mpi_ranks = part.nranks;
         rep.ranks = figs;
         for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);

@@ -132,6 +132,7 @@ static json_t *mpi_ranks(const cosim_report_t *r)
     json_set_real(o, "load_imbalance", r->imbalance);
     json_set_real(o, "update_preu_utilization", r->util_all);
     json_set_u64(o, "image_words_differing_vs_one_pree", r->img_diff_one_pree);
+    json_set_u64(o, "image_max_ulps_vs_one_pree", r->img_max_ulp_one_pree);
     return o;
 }
 

@@ -49,7 +49,8 @@ typedef struct {
      * of the ranks' update-pass cycles) and the utilization of the PREEs over the longest. */
     int mpi_ranks;
     const cosim_rank_t *ranks;
-    unsigned long long img_diff_one_pree;   /* the combined image against one PREE's radiance order */
+    unsigned long long img_diff_one_pree;   /* the combined image against one PREE's radiance order: */
+    unsigned long long img_max_ulp_one_pree;   /* its words that differ, and by how many ulps at most */
     double imbalance, util_all;
 } cosim_report_t;
 
