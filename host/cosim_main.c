@@ -4,8 +4,9 @@
  * are streamed into the RTL in photon order; after the last photon the RTL's hit-point memory is compared word for word with
  * the fp32 model, the radiance pass runs in RTL, and its pixel memory (the image) is compared
  * with the model's radiance in the same order. A double-precision render of the same scene
- * gives SSIM and SNR. Exit status: 0 when both comparisons show 0 differing words, 1 otherwise
- * or on a failure, 2 on a usage error. */
+ * gives SSIM and SNR. Under mpirun with N ranks, N PREEs (cosim_part_t): each rank runs the same
+ * engine and drives a PREE that holds its partition of the hit points. Exit status: 0 when both
+ * comparisons show 0 differing words, 1 otherwise or on a failure, 2 on a usage error. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -104,7 +105,10 @@ static void cosim_usage(FILE *f)
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
         "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
         "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
-        "  --quiet                no progress on stderr\n");
+        "  --quiet                no progress on stderr\n"
+        "under mpirun -np N: N PREEs, each rank's holding its partition of the hit points (the\n"
+        "distributed render's) and sent only their operations; rank 0 compares the whole and\n"
+        "writes the outputs, with each rank's figures and the load imbalance (docs/scale_out.md)\n");
 }
 
 /* Hit point i of the model in the PREE memory's words. */
