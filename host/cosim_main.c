@@ -671,6 +671,7 @@ int pree_cmd_cosim(int argc, char **argv)
             cosim_drv_counters(ctx.drv, rep.cnt_upd);
             mine.hit_points = part.n_local;
             mine.photons_sent = ctx.photons_sent;
+            mine.photons_other = ctx.photons_other;
             mine.ops_sent = cosim_drv_ops_sent(ctx.drv);
             for (int l = 0; l < opt.preu; l++) mine.ops += rep.cnt_upd[CNT_OPS0 + l];
             mine.cycles = rep.cnt_upd[CNT_CYC_UPD];

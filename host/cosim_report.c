@@ -121,6 +121,7 @@ static json_t *mpi_ranks(const cosim_report_t *r)
         json_set_u64(e, "rank", (uint64_t)k);
         json_set_u64(e, "hit_points", q->hit_points);
         json_set_u64(e, "photons_sent", q->photons_sent);
+        json_set_u64(e, "photons_other_ranks", q->photons_other);
         json_set_u64(e, "update_operations", q->ops);
         json_set_u64(e, "update_cycles", q->cycles);
         json_set_real(e, "update_preu_utilization", q->utilization);

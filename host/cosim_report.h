@@ -11,9 +11,10 @@
 #include "cosim_rtl.h"
 #include "cosim_sched.h"
 
-/* One rank's PREE under mpirun (pree cosim with more than one rank). */
+/* One rank's PREE under mpirun (pree cosim with more than one rank); photons_other: photons
+ * with candidates, none of them on this PREE (not sent to it). */
 typedef struct {
-    uint64_t hit_points, photons_sent, ops_sent, ops, cycles, radiance_ops, radiance_cycles, image_words_differing;
+    uint64_t hit_points, photons_sent, photons_other, ops_sent, ops, cycles, radiance_ops, radiance_cycles, image_words_differing;
     double utilization;
 } cosim_rank_t;
 
