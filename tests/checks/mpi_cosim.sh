@@ -20,7 +20,7 @@ base=(cosim scenes/cornell3 --width 64 --height 48 --photons 20000 --preu 4 --no
 
 run "$PREE" "${base[@]}" --quiet --stats "$TMP/one.json"
 echo "+ ${MPIRUN[*]} $PREE ${base[*]} --stats $TMP/two.json"
-"${MPIRUN[@]}" "$PREE" "${base[@]}" --stats "$TMP/two.json" 2>"$TMP/err" || { cat "$TMP/err"; fail "two ranks: exit $?"; }
+"${MPIRUN[@]}" "$PREE" "${base[@]}" --stats "$TMP/two.json" 2>"$TMP/err" || { rc=$?; cat "$TMP/err"; fail "two ranks: exit $rc"; }
 grep '^pree cosim' "$TMP/err" | sed 's/^/  | /'
 for r in 0 1; do
   grep -q "^pree cosim: rank $r of 2: 4 PREUs, [0-9]* hit points: [0-9]* ops in [0-9]* cycles" "$TMP/err" ||
