@@ -15,6 +15,8 @@ const char *pree_version(void);
  * status 2; pree_mpi_end finalises what begin initialised. pree_mpi_build: the MPI the program
  * was built with ("Open MPI 4.1.4"), or "none". */
 int pree_mpi_begin(int *argc, char ***argv);
+/* The co-simulation program's (host/cosim_main.c): every rank prints its own messages. */
+int pree_mpi_begin_cosim(int *argc, char ***argv);
 void pree_mpi_end(void);
 const char *pree_mpi_build(void);
 /* host/cosim_main.c: the co-simulation program's own entry (pree-cosim-*). */

@@ -3,9 +3,10 @@
  * launcher: MPI is initialised only when the launcher's environment says the process is one of
  * its ranks, so a plain `pree render` does not start an MPI singleton.
  *
- * With more than one rank only `pree render` runs (distributed: model/ppm/render_dist.c,
- * docs/scale_out.md); any other command stops with one message from rank 0 and exit status 2.
- * Ranks other than 0 are silent (stdout and stderr on /dev/null): rank 0 prints, for all. */
+ * With more than one rank only `pree render` (distributed: model/ppm/render_dist.c,
+ * docs/scale_out.md) and `pree cosim` (one Verilated PREE a rank: host/cosim_main.c) run; any
+ * other command stops with one message from rank 0 and exit status 2. Ranks of a render other
+ * than 0 are silent (stdout and stderr on /dev/null): rank 0 prints, for all. */
 #include <fcntl.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,7 +27,10 @@ static int under_launcher(void)
     return 0;
 }
 
-int pree_mpi_begin(int *argc, char ***argv)
+/* MPI_Init under the launcher. cmd: the command, which must be one that runs distributed
+ * (render, or cosim in the co-simulation program) when there is more than one rank; silence:
+ * ranks other than 0 print nothing. 1, or -1 with rank 0's message. */
+static int begin(int *argc, char ***argv, const char *cmd, int silence)
 {
     if (!under_launcher()) return 1;
 #ifdef PREE_MPI
@@ -37,14 +41,14 @@ int pree_mpi_begin(int *argc, char ***argv)
     int size = 1, rank = 0;
     MPI_Comm_size(MPI_COMM_WORLD, &size);
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-    if (size > 1 && (*argc < 2 || strcmp((*argv)[1], "render"))) {
+    if (size > 1 && (!cmd || (strcmp(cmd, "render") && strcmp(cmd, "cosim")))) {
         if (rank == 0)
-            fprintf(stderr, "pree: %d MPI ranks: only 'pree render' runs distributed (docs/scale_out.md); "
-                    "run one rank, or without mpirun\n", size);
+            fprintf(stderr, "pree: %d MPI ranks: only 'pree render' and 'pree cosim' run distributed "
+                    "(docs/scale_out.md); run one rank, or without mpirun\n", size);
         MPI_Finalize();
         return -1;
     }
-    if (size > 1 && rank > 0) {   /* rank 0 speaks for all: it reports every rank's failure */
+    if (size > 1 && rank > 0 && silence) {   /* rank 0 speaks for all: it reports every rank's failure */
         int null = open("/dev/null", O_WRONLY);
         if (null >= 0) { dup2(null, 1); dup2(null, 2); close(null); }
     }
@@ -52,6 +56,8 @@ int pree_mpi_begin(int *argc, char ***argv)
 #else
     (void)argc;
     (void)argv;
+    (void)cmd;
+    (void)silence;
     const char *n = getenv("OMPI_COMM_WORLD_SIZE");
     if (n && atoi(n) > 1) {
         const char *r = getenv("OMPI_COMM_WORLD_RANK");
@@ -63,6 +69,18 @@ int pree_mpi_begin(int *argc, char ***argv)
     return 1;
 #endif
 }
+
+/* `pree cosim` execs its co-simulation program, which initialises MPI itself (no exec after
+ * MPI_Init). */
+int pree_mpi_begin(int *argc, char ***argv)
+{
+    const char *cmd = *argc > 1 ? (*argv)[1] : NULL;
+    if (cmd && !strcmp(cmd, "cosim")) return 1;
+    return begin(argc, argv, cmd, 1);
+}
+
+/* Every rank of a co-simulation speaks for itself: its errors are its own. */
+int pree_mpi_begin_cosim(int *argc, char ***argv) { return begin(argc, argv, "cosim", 0); }
 
 void pree_mpi_end(void)
 {

@@ -4,8 +4,9 @@
  * are streamed into the RTL in photon order; after the last photon the RTL's hit-point memory is compared word for word with
  * the fp32 model, the radiance pass runs in RTL, and its pixel memory (the image) is compared
  * with the model's radiance in the same order. A double-precision render of the same scene
- * gives SSIM and SNR. Exit status: 0 when both comparisons show 0 differing words, 1 otherwise
- * or on a failure, 2 on a usage error. */
+ * gives SSIM and SNR. Under mpirun with N ranks, N PREEs (cosim_part_t): each rank runs the same
+ * engine and drives a PREE that holds its partition of the hit points. Exit status: 0 when both
+ * comparisons show 0 differing words, 1 otherwise or on a failure, 2 on a usage error. */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -20,9 +21,11 @@
 #include "cosim_sched.h"
 #include "cosim_shadow.h"
 #include "fail_trace.h"
+#include "fp32_ops.h"
 #include "image.h"
 #include "radiance.h"
 #include "render.h"
+#include "render_dist.h"
 
 /* 1 in the AXI program (build/pree-cosim-axi-*: host/cosim_axi.c through rtl/pree_axi.v). */
 #ifndef COSIM_DRV_AXI
@@ -33,7 +36,31 @@ typedef struct {
     cosim_drv_t *drv;
     double sec_rtl, cpu_rtl;     /* wall and CPU time spent clocking the RTL in the update phase */
     unsigned long long photons_sent, photons_empty;
+    unsigned long long photons_other;   /* photons with candidates, none of them this rank's */
 } cosim_ctx_t;
+
+/* A hit point's address in another rank's PREE (render_hp_address translated by cosim_part_t). */
+#define OTHER_RANK UINT32_MAX
+
+/* Under mpirun with more than one rank (docs/scale_out.md, "Multi-PREE co-simulation"): every
+ * rank runs the whole fp32 engine alone (opt.one_rank) and drives one PREE, which holds only
+ * the hit points the rank owns, [lo[rank], lo[rank + 1]) of the photon pass's spatial order
+ * (render_dist_lo: the distributed render's partition), at the local addresses i - lo[rank];
+ * it is sent only the operations on them. Without mpirun (or with one rank): nranks 1, addr
+ * the session's own addresses. */
+typedef struct {
+    int nranks, rank;
+    size_t *lo;                 /* nranks + 1 */
+    uint32_t *addr;             /* photon-pass index -> this PREE's address, or OTHER_RANK */
+    uint32_t *model;            /* photon-pass index -> the model's index after render_close */
+    size_t n_local;
+} cosim_part_t;
+
+/* The RTL's words of one hit point and its pixel, as gathered from the ranks. */
+typedef struct {
+    preu_hpw_t w;
+    uint32_t px;
+} hp_read_t;
 
 static double now(void)
 {
@@ -78,7 +105,10 @@ static void cosim_usage(FILE *f)
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
         "                         back-pressure and gaps on every stream and AXI4-Lite channel)\n"
         "  --axi                  run through the AXI4 wrapper rtl/pree_axi.v (build/pree-cosim-axi-*)\n"
-        "  --quiet                no progress on stderr\n");
+        "  --quiet                no progress on stderr\n"
+        "under mpirun -np N: N PREEs, each rank's holding its partition of the hit points (the\n"
+        "distributed render's) and sent only their operations; rank 0 compares the whole and\n"
+        "writes the outputs, with each rank's figures and the load imbalance (docs/scale_out.md)\n");
 }
 
 /* Hit point i of the model in the PREE memory's words. */
@@ -89,27 +119,31 @@ static void model_words(const hitpoints_t *hp, size_t i, preu_hpw_t *w)
 }
 
 /* The hit points with their initial state into the RTL's memory, each at its address (the
- * session holds them in photon-pass order). 0, or -1 with a message. */
-static int load_hit_points(cosim_ctx_t *c, const hitpoints_t *hp, const uint32_t *addr, char *err, size_t errlen)
+ * session holds them in photon-pass order), n_local of them (another rank's: none). 0, or -1
+ * with a message. */
+static int load_hit_points(cosim_ctx_t *c, const hitpoints_t *hp, const uint32_t *addr, size_t n_local,
+                           char *err, size_t errlen)
 {
-    if (hp->n > (1u << COSIM_HPAW)) {
-        snprintf(err, errlen, "%zu hit points, more than the RTL's hit-point memory (%u)", hp->n, 1u << COSIM_HPAW);
+    if (n_local > (1u << COSIM_HPAW)) {
+        snprintf(err, errlen, "%zu hit points, more than the RTL's hit-point memory (%u)", n_local, 1u << COSIM_HPAW);
         return -1;
     }
-    preu_hpw_t *w = malloc((hp->n ? hp->n : 1) * sizeof *w);
-    int32_t *px = malloc((hp->n ? hp->n : 1) * sizeof *px);
+    preu_hpw_t *w = malloc((n_local ? n_local : 1) * sizeof *w);
+    int32_t *px = malloc((n_local ? n_local : 1) * sizeof *px);
     if (!w || !px) { free(w); free(px); snprintf(err, errlen, "out of memory"); return -1; }
     for (size_t j = 0; j < hp->n; j++) {
+        if (addr[j] == OTHER_RANK) continue;
         model_words(hp, j, &w[addr[j]]);
         px[addr[j]] = hp->pixel[j];
     }
-    cosim_drv_load_hp(c->drv, w, px, hp->n);
+    cosim_drv_load_hp(c->drv, w, px, n_local);
     free(w);
     free(px);
     return 0;
 }
 
-/* A block's operations into the RTL, photon by photon, hit points by address. 0 or -1. */
+/* A block's operations into the RTL, photon by photon, hit points by address (those of another
+ * rank's PREE left out). 0 or -1. */
 static int stream_block(cosim_ctx_t *c, const update_ops_t *ops, const uint32_t *addr, uint32_t **buf, size_t *cap)
 {
     for (size_t i = 0; i < ops->n_hits; i++) {
@@ -121,9 +155,12 @@ static int stream_block(cosim_ctx_t *c, const update_ops_t *ops, const uint32_t 
             *buf = q;
             *cap = n;
         }
-        for (size_t k = 0; k < n; k++) (*buf)[k] = addr[ops->hp[b + k]];
+        size_t m = 0;
+        for (size_t k = 0; k < n; k++)
+            if (addr[ops->hp[b + k]] != OTHER_RANK) (*buf)[m++] = addr[ops->hp[b + k]];
+        if (m == 0) { c->photons_other++; continue; }
         double t0 = now(), c0 = cpu_now();
-        int rc = cosim_drv_photon(c->drv, &ops->ph[i], *buf, n);
+        int rc = cosim_drv_photon(c->drv, &ops->ph[i], *buf, m);
         c->sec_rtl += now() - t0;
         c->cpu_rtl += cpu_now() - c0;
         c->photons_sent++;
@@ -140,29 +177,35 @@ static int hp_words_differ(const preu_hpw_t *a, uint32_t pa, const preu_hpw_t *b
     return d;
 }
 
-/* The RTL's hit-point memory against the model's hit points (address i holds the session's
- * hit point i here): differing words; the hit points that differ and the first in *points and
- * *first (SIZE_MAX: none). The first five are printed. PREE_TEST_CORRUPT_HP=N flips a bit of the
- * model's hit point N first: the failure path's check (tests/checks/fail_trace.sh). */
-static unsigned long long compare_hit_points(cosim_drv_t *drv, const hitpoints_t *hp, int dp,
-                                             unsigned long long *points, size_t *first)
+/* The RTL's hit-point memory got[0..hp->n) against the model's hit points (got[i] holds the
+ * model's hit point part->model[i], in rank r's PREE where part->lo[r] <= i < part->lo[r + 1];
+ * or, where part is NULL, i): differing words; the hit points that
+ * differ and the first (its index in got) in *points and *first (SIZE_MAX: none). The first
+ * five are printed. PREE_TEST_CORRUPT_HP=N flips a bit of the model's hit point N first: the
+ * failure path's check (tests/checks/fail_trace.sh, mpi_cosim.sh). */
+static unsigned long long compare_hit_points(const hp_read_t *got, const cosim_part_t *part, const hitpoints_t *hp,
+                                             int dp, unsigned long long *points, size_t *first)
 {
+    const uint32_t *model = part ? part->model : NULL;
     const char *env = getenv("PREE_TEST_CORRUPT_HP");
     const size_t corrupt = env ? (size_t)strtoull(env, NULL, 10) : SIZE_MAX;
     unsigned long long words = 0;
     *points = 0;
     *first = SIZE_MAX;
     for (size_t i = 0; i < hp->n; i++) {
-        preu_hpw_t h, m;
-        uint32_t px;
-        cosim_drv_read_hp(drv, (uint32_t)i, &h, &px);
-        model_words(hp, i, &m);
-        if (i == corrupt) m.st[0] ^= 1;
-        int dw = hp_words_differ(&h, px, &m, (uint32_t)hp->pixel[i], dp);
+        const size_t j = model ? model[i] : i;
+        preu_hpw_t m;
+        model_words(hp, j, &m);
+        if (j == corrupt) m.st[0] ^= 1;
+        int dw = hp_words_differ(&got[i].w, got[i].px, &m, (uint32_t)hp->pixel[j], dp);
         if (!dw) continue;
         if (*points < 5) {
-            fprintf(stderr, "pree cosim: hit point %zu differs: state words RTL/model", i);
-            for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", h.st[k], m.st[k]);
+            fprintf(stderr, "pree cosim: hit point %zu differs", j);
+            for (int r = 0; part && r < part->nranks; r++)
+                if (i >= part->lo[r] && i < part->lo[r + 1])
+                    fprintf(stderr, " (rank %d's PREE, address %zu)", r, i - part->lo[r]);
+            fprintf(stderr, ": state words RTL/model");
+            for (int k = 0; k < preu_state_words(dp); k++) fprintf(stderr, " %08x/%08x", got[i].w.st[k], m.st[k]);
             fputc('\n', stderr);
         }
         if (*first == SIZE_MAX) *first = i;
@@ -314,6 +357,18 @@ static cosim_rtl_t *open_rtl(const render_options_t *opt, const cosim_args_t *c,
     return rtl;
 }
 
+/* The pixel words of Lr that differ from Lm's; with print, the first five are printed. */
+static unsigned long long image_words_differ(const uint32_t *Lr, const uint32_t *Lm, size_t npix, int print)
+{
+    unsigned long long diff = 0;
+    for (size_t j = 0; j < npix * 3; j++) {
+        if (Lr[j] != Lm[j] && diff < 5 && print)
+            fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
+        diff += Lr[j] != Lm[j];
+    }
+    return diff;
+}
+
 /* The radiance pass in RTL (pixel words into Lr) and in the model (into Lm), in the same order:
  * the differing words (the first five printed), or -1 with a message printed. */
 static long long compare_image(cosim_drv_t *drv, const render_result_t *res, int preu, int pipefast, size_t npix,
@@ -330,13 +385,7 @@ static long long compare_image(cosim_drv_t *drv, const render_result_t *res, int
         fprintf(stderr, "pree cosim: out of memory\n");
         return -1;
     }
-    long long diff = 0;
-    for (size_t j = 0; j < npix * 3; j++) {
-        if (Lr[j] != Lm[j] && diff < 5)
-            fprintf(stderr, "pree cosim: pixel %zu channel %zu differs: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
-        diff += Lr[j] != Lm[j];
-    }
-    return diff;
+    return (long long)image_words_differ(Lr, Lm, npix, 1);
 }
 
 /* SSIM, SNR and the rest of the RTL image rgb against a double-precision render of the same
@@ -347,7 +396,7 @@ static int reference_metrics(const scene_t *scene, const render_options_t *opt, 
     const size_t npix = (size_t)opt->width * (size_t)opt->height;
     render_options_t ropt = {.width = opt->width, .height = opt->height, .photons = opt->photons,
                              .precision = PRECISION_DOUBLE, .grid = opt->grid, .threads = opt->threads,
-                             .no_skip = opt->no_skip, .preu = opt->preu};
+                             .no_skip = opt->no_skip, .preu = opt->preu, .one_rank = 1};
     render_result_t ref = {0};
     if (render_run(scene, &ropt, &ref, err, sizeof err)) {
         fprintf(stderr, "pree cosim: reference: %s\n", err);
@@ -387,12 +436,140 @@ static int finish_report(cosim_report_t *rep, const cosim_args_t *c, int progres
     if (progress && c->model_only)
         fprintf(stderr, "pree cosim: cycle model, %d PREUs: %llu ops in %llu cycles (utilization %.4f%%)\n",
                 rep->preu, (unsigned long long)rep->ops_upd, (unsigned long long)rep->cyc_upd, 100 * rep->util_upd);
-    else if (progress)
+    else if (progress && rep->mpi_ranks > 1) {
+        for (int k = 0; k < rep->mpi_ranks; k++) {
+            const cosim_rank_t *q = &rep->ranks[k];
+            fprintf(stderr, "pree cosim: rank %d of %d: %d PREUs, %llu hit points: %llu ops in %llu cycles "
+                    "(utilization %.4f%%); radiance %llu cycles; image words differing %llu\n", k, rep->mpi_ranks,
+                    rep->preu, (unsigned long long)q->hit_points, (unsigned long long)q->ops,
+                    (unsigned long long)q->cycles, 100 * q->utilization, (unsigned long long)q->radiance_cycles,
+                    (unsigned long long)q->image_words_differing);
+        }
+        fprintf(stderr, "pree cosim: %d PREEs of %d PREUs: load imbalance %.4f (max / mean update cycles), "
+                "utilization %.4f%% over the longest; differing words: hit points %llu, image %llu%s "
+                "(against one PREE's radiance order, which adds a pixel's hit points in another order: %llu, at most %llu "
+                "ulps)\n", rep->mpi_ranks, rep->preu, rep->imbalance, 100 * rep->util_all, rep->hp_diff, rep->img_diff,
+                rep->pass ? "" : " FAIL", rep->img_diff_one_pree, rep->img_max_ulp_one_pree);
+    } else if (progress)
         fprintf(stderr, "pree cosim: %d PREUs: %llu ops in %llu cycles (utilization %.4f%%), %.0f ops/CPU-s; "
                 "differing words: hit points %llu, image %llu%s\n",
                 rep->preu, (unsigned long long)rep->ops_upd, (unsigned long long)rep->cyc_upd, 100 * rep->util_upd,
                 rep->sim_ops_per_cpu_s, rep->hp_diff, rep->img_diff, rep->pass ? "" : " FAIL");
     return rep->pass || c->model_only ? 0 : 1;
+}
+
+/* This rank's partition of n hit points (p->nranks and p->rank set); perm: render_hp_address.
+ * 0, or -1 (memory). */
+static int part_open(cosim_part_t *p, size_t n, const uint32_t *perm)
+{
+    p->lo = malloc((size_t)(p->nranks + 1) * sizeof *p->lo);
+    p->addr = malloc((n ? n : 1) * sizeof *p->addr);
+    p->model = malloc((n ? n : 1) * sizeof *p->model);
+    if (!p->lo || !p->addr || !p->model) return -1;
+    for (int r = 0; r <= p->nranks; r++) p->lo[r] = render_dist_lo(n, r, p->nranks);
+    const size_t lo = p->lo[p->rank], hi = p->lo[p->rank + 1];
+    for (size_t i = 0; i < n; i++) {
+        p->model[i] = perm[i];
+        p->addr[i] = p->nranks == 1 ? perm[i] : i >= lo && i < hi ? (uint32_t)(i - lo) : OTHER_RANK;
+    }
+    p->n_local = hi - lo;
+    return 0;
+}
+
+static void part_free(cosim_part_t *p)
+{
+    free(p->lo);
+    free(p->addr);
+    free(p->model);
+}
+
+/* The fp32 model's radiance pass over this rank's hit points in its PREE's order (address
+ * order), as compare_image's over all: into L (zeroed here). 0 or -1 (memory). */
+static int part_model_radiance(const cosim_part_t *p, const render_result_t *res, int preu, int pipefast,
+                               size_t npix, uint32_t *L)
+{
+    const hitpoints_t *h = &res->hp;
+    const size_t n = p->n_local, lo = p->lo[p->rank];
+    hitpoints_t sub = {.n = n};
+    sub.pixel = malloc((n ? n : 1) * sizeof *sub.pixel);
+    if (h->stable) sub.stable = malloc((n ? n : 1) * sizeof *sub.stable);
+    else sub.fp32 = malloc((n ? n : 1) * sizeof *sub.fp32);
+    int rc = -1;
+    if (sub.pixel && (sub.stable || sub.fp32)) {
+        for (size_t a = 0; a < n; a++) {
+            const size_t j = p->model[lo + a];
+            sub.pixel[a] = h->pixel[j];
+            if (h->stable) sub.stable[a] = h->stable[j];
+            else sub.fp32[a] = h->fp32[j];
+        }
+        unsigned long long skipped;
+        memset(L, 0, npix * 3 * sizeof *L);
+        rc = radiance_fp32_words(&sub, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L, &skipped);
+    }
+    free(sub.pixel);
+    free(sub.stable);
+    free(sub.fp32);
+    return rc;
+}
+
+/* Under mpirun, after the update pass (every rank alike; fail: this rank's state so far): the
+ * ranks' PREE memories gathered into rank 0's got (photon-pass order); each PREE's radiance pass
+ * over its own hit points, and the model's over the same hit points in the same order, compared
+ * (mine->image_words_differing); rank 0 adds the ranks' pixel words in rank order in binary32,
+ * as the host of a board of PREEs would, into Lr (the RTL's) and Lm (the model's); every rank's
+ * figures into figs on rank 0. 0, or 1 when any rank failed (its message printed by it). */
+static int dist_gather(cosim_ctx_t *ctx, const cosim_part_t *p, const render_result_t *res, int preu, int pipefast,
+                       size_t npix, int fail, hp_read_t *got, uint32_t *Lr, uint32_t *Lm, cosim_rank_t *mine,
+                       cosim_rank_t *figs)
+{
+    const size_t lo = p->lo[p->rank], words = npix * 3;
+    if (!fail)
+        for (size_t a = 0; a < p->n_local; a++) cosim_drv_read_hp(ctx->drv, (uint32_t)a, &got[lo + a].w, &got[lo + a].px);
+    if (render_dist_max(fail)) return 1;
+    render_dist_gather_ranges(got, sizeof *got, p->lo);
+    uint32_t *part = malloc(2 * words * sizeof *part);   /* the RTL's pixel words, then the model's */
+    if (!part) { fprintf(stderr, "pree cosim: out of memory\n"); fail = 1; }
+    else if (cosim_drv_radiance(ctx->drv, (uint32_t)p->n_local, preu_n_emitted(res->stats.photons_emitted), npix, part)) {
+        fprintf(stderr, "pree cosim: rank %d: radiance pass: %s\n", p->rank, cosim_drv_error(ctx->drv));
+        fail = 1;
+    } else if (part_model_radiance(p, res, preu, pipefast, npix, part + words)) {
+        fprintf(stderr, "pree cosim: out of memory\n");
+        fail = 1;
+    }
+    if (!fail) {
+        uint64_t cnt[COSIM_NCNT];
+        cosim_drv_counters(ctx->drv, cnt);
+        mine->radiance_cycles = cnt[CNT_CYC_RAD];
+        mine->radiance_ops = 0;
+        for (int l = 0; l < preu; l++) mine->radiance_ops += cnt[CNT_OPS0 + l];
+        mine->radiance_ops -= mine->ops;
+        mine->image_words_differing = 0;
+        for (size_t j = 0; j < words; j++) mine->image_words_differing += part[j] != part[words + j];
+    }
+    void *recv = NULL, *rf = NULL;
+    size_t cap = 0, fcap = 0, *counts = malloc((size_t)p->nranks * sizeof *counts);
+    if (!counts) fail = 1;
+    if (render_dist_max(fail) || render_dist_allgather(part, 2 * words * sizeof *part, &recv, &cap, counts) ||
+        render_dist_allgather(mine, sizeof *mine, &rf, &fcap, counts)) {
+        free(part);
+        free(recv);
+        free(rf);
+        free(counts);
+        return 1;
+    }
+    memcpy(figs, rf, (size_t)p->nranks * sizeof *figs);
+    free(rf);
+    const uint32_t *all = recv;
+    for (int r = 0; r < p->nranks; r++)
+        for (size_t j = 0; j < words; j++) {
+            const uint32_t *q = all + (size_t)r * 2 * words;
+            Lr[j] = r ? fp32_add(Lr[j], q[j]) : q[j];
+            Lm[j] = r ? fp32_add(Lm[j], q[words + j]) : q[words + j];
+        }
+    free(part);
+    free(recv);
+    free(counts);
+    return 0;
 }
 
 int pree_cmd_cosim(int argc, char **argv)
@@ -405,6 +582,15 @@ int pree_cmd_cosim(int argc, char **argv)
     const size_t npix = (size_t)opt.width * (size_t)opt.height;
     char err[1024];
     scene_t scene;
+    cosim_part_t part = {.nranks = render_dist_size(), .rank = render_dist_rank()};
+    const int dist = part.nranks > 1;
+    if (dist && (c.model_only || c.trace || c.axi)) {
+        if (part.rank == 0)
+            fprintf(stderr, "pree cosim: under mpirun with %d ranks: --model-only, --trace and --axi are not "
+                    "supported\n", part.nranks);
+        return 2;
+    }
+    if (dist && part.rank > 0) opt.progress = 0;   /* rank 0 prints the engine's progress and the report */
     if (scene_load(c.scene, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
     const int dp = opt.datapath == DATAPATH_STABLE;
@@ -430,10 +616,14 @@ int pree_cmd_cosim(int argc, char **argv)
     cosim_ctx_t ctx = {0};
     ctx.drv = cosim_drv_new(rtl, &dopt);
     opt.record_ops = 1;
+    opt.one_rank = 1;   /* under mpirun too: each rank runs the whole engine (cosim_part_t) */
 
     int status = 1;
     render_result_t res = {0};
-    uint32_t *Lr = NULL, *Lm = NULL, *abuf = NULL;
+    uint32_t *Lr = NULL, *Lm = NULL, *L1 = NULL, *abuf = NULL;
+    hp_read_t *got = NULL;
+    cosim_rank_t *figs = NULL;
+    int agreed = 0;     /* under mpirun: every rank got past the gather, and agrees on the status */
     size_t acap = 0;
     double *rgb = NULL;
     double t_start = now();
@@ -441,10 +631,12 @@ int pree_cmd_cosim(int argc, char **argv)
      * (the candidates that pass the host's tests) go to the RTL after the model applied them. */
     render_session_t *rs = ctx.drv ? render_open(&scene, &opt, &res, err, sizeof err) : NULL;
     if (!ctx.drv) snprintf(err, sizeof err, "out of memory");
-    int rc = !rs ? -1 : c.model_only ? 0 : load_hit_points(&ctx, &res.hp, render_hp_address(rs), err, sizeof err);
+    int rc = !rs ? -1 : 0;
+    if (rc == 0 && part_open(&part, res.hp.n, render_hp_address(rs))) { snprintf(err, sizeof err, "out of memory"); rc = -1; }
+    if (rc == 0 && !c.model_only) rc = load_hit_points(&ctx, &res.hp, part.addr, part.n_local, err, sizeof err);
     int streamed = 0;
     while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
-        if (stream_block(&ctx, render_block_ops(rs), render_hp_address(rs), &abuf, &acap)) { streamed = -1; break; }
+        if (stream_block(&ctx, render_block_ops(rs), part.addr, &abuf, &acap)) { streamed = -1; break; }
     }
     if (rs) {
         int rc2 = render_close(rs, err, sizeof err);
@@ -455,16 +647,66 @@ int pree_cmd_cosim(int argc, char **argv)
                           .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .update_window = win,
                           .alpha = (double)fp32_from_bits(alpha), .gap = c.gap};
     rep.sec_engine = now() - t_start;
+    int fail = 0;
     if (rc != 0 || streamed) {
         fprintf(stderr, "pree cosim: %s: %s\n", c.scene, streamed ? cosim_drv_error(ctx.drv) : err);
-        goto out;
+        fail = 1;
     }
     double t0 = now(), c0 = cpu_now();
-    if (cosim_drv_drain(ctx.drv)) { fprintf(stderr, "pree cosim: %s\n", cosim_drv_error(ctx.drv)); goto out; }
+    if (!fail && cosim_drv_drain(ctx.drv)) { fprintf(stderr, "pree cosim: %s\n", cosim_drv_error(ctx.drv)); fail = 1; }
+    if (fail && !dist) goto out;
     rep.sec_update_rtl = ctx.sec_rtl + (now() - t0);
     rep.cpu_update_rtl = ctx.cpu_rtl + (cpu_now() - c0);
     size_t first_hp = SIZE_MAX;
-    if (c.model_only) {        /* the cycle model's counters stand for the RTL's */
+    if (dist) {                /* every rank its PREE; rank 0 compares the whole */
+        cosim_rank_t mine = {0};
+        figs = calloc((size_t)part.nranks, sizeof *figs);
+        got = calloc(res.hp.n ? res.hp.n : 1, sizeof *got);
+        Lr = calloc(npix * 3, sizeof *Lr);
+        Lm = calloc(npix * 3, sizeof *Lm);
+        L1 = calloc(npix * 3, sizeof *L1);
+        rgb = malloc(npix * 3 * sizeof *rgb);
+        if (!figs || !got || !Lr || !Lm || !L1 || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); fail = 1; }
+        if (!fail) {
+            cosim_drv_counters(ctx.drv, rep.cnt_upd);
+            mine.hit_points = part.n_local;
+            mine.photons_sent = ctx.photons_sent;
+            mine.photons_other = ctx.photons_other;
+            mine.ops_sent = cosim_drv_ops_sent(ctx.drv);
+            for (int l = 0; l < opt.preu; l++) mine.ops += rep.cnt_upd[CNT_OPS0 + l];
+            mine.cycles = rep.cnt_upd[CNT_CYC_UPD];
+            mine.utilization = mine.cycles ? (double)mine.ops / ((double)opt.preu * (double)mine.cycles) : 0;
+        }
+        t0 = now();
+        if (dist_gather(&ctx, &part, &res, opt.preu, c.pipefast, npix, fail, got, Lr, Lm, &mine, figs)) goto out;
+        agreed = 1;
+        rep.sec_rad_rtl = now() - t0;
+        cosim_drv_counters(ctx.drv, rep.cnt_all);
+        if (part.rank > 0) { status = 0; goto out; }
+        rep.hp_diff = compare_hit_points(got, &part, &res.hp, dp, &rep.hp_diff_points, &first_hp);
+        rep.img_diff = image_words_differ(Lr, Lm, npix, 1);
+        unsigned long long skipped;
+        if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(c.pipefast), L1,
+                                &skipped)) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
+        rep.img_diff_one_pree = image_words_differ(Lr, L1, npix, 0);
+        for (size_t j = 0; j < npix * 3; j++) {   /* the ulps of binary32 sums in two orders */
+            const long long d = (long long)(int32_t)Lr[j] - (long long)(int32_t)L1[j];
+            const unsigned long long u = (unsigned long long)(d < 0 ? -d : d);
+            if (u > rep.img_max_ulp_one_pree) rep.img_max_ulp_one_pree = u;
+        }
+        rep.mpi_ranks = part.nranks;
+        rep.ranks = figs;
+        for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
+        if (c.out && pree_image_write(c.out, opt.width, opt.height, rgb, err, sizeof err)) {
+            fprintf(stderr, "pree cosim: %s\n", err);
+            goto out;
+        }
+        if (c.reference) {
+            int m = reference_metrics(&scene, &opt, rgb, &rep.m);
+            if (m == -1) goto out;
+            rep.have_metrics = m == 0;
+        }
+    } else if (c.model_only) {        /* the cycle model's counters stand for the RTL's */
         cosim_sched_stats_t ss;
         cosim_drv_sched_stats(ctx.drv, &ss);
         memcpy(rep.cnt_upd, ss.cnt, sizeof rep.cnt_upd);
@@ -472,7 +714,10 @@ int pree_cmd_cosim(int argc, char **argv)
     } else {
         cosim_drv_counters(ctx.drv, rep.cnt_upd);
         /* Hit-point memory against the fp32 model's final state, then the image. */
-        rep.hp_diff = compare_hit_points(ctx.drv, &res.hp, dp, &rep.hp_diff_points, &first_hp);
+        got = malloc((res.hp.n ? res.hp.n : 1) * sizeof *got);
+        if (!got) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
+        for (size_t i = 0; i < res.hp.n; i++) cosim_drv_read_hp(ctx.drv, (uint32_t)i, &got[i].w, &got[i].px);
+        rep.hp_diff = compare_hit_points(got, NULL, &res.hp, dp, &rep.hp_diff_points, &first_hp);
         Lr = calloc(npix * 3, sizeof *Lr);
         Lm = calloc(npix * 3, sizeof *Lm);
         rgb = malloc(npix * 3 * sizeof *rgb);
@@ -502,10 +747,16 @@ int pree_cmd_cosim(int argc, char **argv)
     rep.cpu_process = cpu_now();
     rep.have_sched = cosim_drv_sched_stats(ctx.drv, &rep.sched) == 0;
     status = finish_report(&rep, &c, opt.progress);
-    if (status && !rep.pass && !c.trace && fail_trace_wanted()) leave_fail_trace(argc, argv, ctx.drv, first_hp, win);
+    if (status && !rep.pass && !c.trace && !dist && fail_trace_wanted())
+        leave_fail_trace(argc, argv, ctx.drv, first_hp, win);
 out:
+    if (agreed) status = render_dist_max(status);   /* every rank exits as rank 0 */
     free(Lr);
     free(Lm);
+    free(L1);
+    free(got);
+    free(figs);
+    part_free(&part);
     free(rgb);
     render_result_free(&res);
     free(abuf);
@@ -515,4 +766,11 @@ out:
     return status;
 }
 
-int main(int argc, char **argv) { return pree_cmd_cosim(argc, argv); }
+/* Under an MPI launcher each rank simulates one PREE (cosim_part_t). */
+int main(int argc, char **argv)
+{
+    if (pree_mpi_begin_cosim(&argc, &argv) < 0) return 2;
+    const int rc = pree_cmd_cosim(argc, argv);
+    pree_mpi_end();
+    return rc;
+}

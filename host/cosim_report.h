@@ -11,6 +11,13 @@
 #include "cosim_rtl.h"
 #include "cosim_sched.h"
 
+/* One rank's PREE under mpirun (pree cosim with more than one rank); photons_other: photons
+ * with candidates, none of them on this PREE (not sent to it). */
+typedef struct {
+    uint64_t hit_points, photons_sent, photons_other, ops_sent, ops, cycles, radiance_ops, radiance_cycles, image_words_differing;
+    double utilization;
+} cosim_rank_t;
+
 typedef struct {
     /* What was run. */
     const char *scene;
@@ -37,6 +44,15 @@ typedef struct {
     uint64_t ops_upd, ops_rad, cyc_upd, cyc_rad;
     double ops_per_cycle, util_upd, util_rad, sim_ops_per_cpu_s, sim_cycles_per_cpu_s;
     int pass;                       /* 0 differing words, and every operation counted */
+    /* Under mpirun with mpi_ranks > 1 (host/cosim_main.c): the PREEs of the ranks, rank r's at
+     * ranks[r]; the figures above are rank 0's PREE's but for hit_points, the comparison and
+     * pass, which are the combined memory's and image's. Derived: the load imbalance (max / mean
+     * of the ranks' update-pass cycles) and the utilization of the PREEs over the longest. */
+    int mpi_ranks;
+    const cosim_rank_t *ranks;
+    unsigned long long img_diff_one_pree;   /* the combined image against one PREE's radiance order: */
+    unsigned long long img_max_ulp_one_pree;   /* its words that differ, and by how many ulps at most */
+    double imbalance, util_all;
 } cosim_report_t;
 
 void cosim_report_figures(cosim_report_t *r);

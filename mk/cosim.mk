@@ -112,7 +112,7 @@ $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call C
 	@mkdir -p $$(@D)
 	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
 $(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o \
-                          $(BUILD)/cli/cli_options.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
+                          $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
 $(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))

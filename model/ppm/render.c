@@ -157,13 +157,13 @@ static void session_free(render_session_t *s)
 }
 
 /* More than one MPI rank: the partition and the options it supports. Rank r owns the hit
- * points [r n / N, (r + 1) n / N) of the spatial order (hp_order.c): contiguous runs of nearby
+ * points [r n / N, (r + 1) n / N) of the spatial order (hp_order.c, render_dist_lo): contiguous runs of nearby
  * hit points, so a photon's candidates mostly belong to one rank. The others' hit points go to
- * part T, which no thread applies. 0, or -1 with err. */
+ * part T, which no thread applies. opt.one_rank: one rank, whatever the launcher. 0, or -1 with err. */
 static int dist_open(render_session_t *s, char *err, size_t errlen)
 {
-    s->nranks = render_dist_size();
-    s->rank = render_dist_rank();
+    s->nranks = s->opt.one_rank ? 1 : render_dist_size();
+    s->rank = s->opt.one_rank ? 0 : render_dist_rank();
     s->res->stats.mpi_ranks = s->nranks;
     if (s->nranks < 2) return 0;
     if (s->photon_major || s->opt.checkpoint || s->opt.resume || s->opt.time_limit > 0) {
@@ -175,7 +175,7 @@ static int dist_open(render_session_t *s, char *err, size_t errlen)
     s->own_lo = malloc((size_t)(s->nranks + 1) * sizeof *s->own_lo);
     s->counts = malloc((size_t)s->nranks * sizeof *s->counts);
     if (!s->own_lo || !s->counts) { snprintf(err, errlen, "out of memory"); return -1; }
-    for (int r = 0; r <= s->nranks; r++) s->own_lo[r] = (size_t)((unsigned __int128)n * (unsigned)r / (unsigned)s->nranks);
+    for (int r = 0; r <= s->nranks; r++) s->own_lo[r] = render_dist_lo(n, r, s->nranks);
     for (size_t i = 0; i < n; i++)
         if (i < s->own_lo[s->rank] || i >= s->own_lo[s->rank + 1]) s->owner[i] = (uint16_t)s->T;
     return 0;

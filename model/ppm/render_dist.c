@@ -4,6 +4,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "render_dist.h"
+
+size_t render_dist_lo(size_t n, int r, int nranks)
+{
+    return (size_t)((unsigned __int128)n * (unsigned)r / (unsigned)nranks);
+}
+
 #ifdef PREE_MPI
 #include <mpi.h>
 

@@ -11,6 +11,11 @@
 int render_dist_size(void);
 int render_dist_rank(void);
 
+/* The partition (docs/scale_out.md): rank r of nranks owns the hit points [lo(r), lo(r + 1)) of
+ * the n hit points in the spatial order of the photon pass (hp_order.c), contiguous runs of
+ * nearby hit points; lo(nranks) = n. */
+size_t render_dist_lo(size_t n, int r, int nranks);
+
 /* Every rank's v: the maximum (the ranks agree on stopping or failing). */
 int render_dist_max(int v);
 

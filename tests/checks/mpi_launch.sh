@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The pree program under Open MPI's mpirun (cli/cli_mpi.c, docs/scale_out.md): built with MPI
 # when mpicc is present; one rank renders the same bits as a run without mpirun, in both
-# precisions; a command other than render under two ranks stops with one message from rank 0
+# precisions; a command other than render (and cosim) under two ranks stops with one message from rank 0
 # and a non-zero exit (two-rank renders: mpi_render.sh).
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
