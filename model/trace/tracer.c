@@ -178,7 +178,12 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
     tr->src = scene;
     tr->sphere_geom = RTC_INVALID_GEOMETRY_ID;
     double t0 = omp_get_wtime();
-    tr->device = rtcNewDevice(NULL);
+    /* Embree builds with as many threads as the render may use (--threads): with its own pool of one
+     * per core, a one-thread render's allocations would depend on which thread stole which build
+     * task, and so would the heap the later passes grow their arrays in. */
+    char config[32];
+    snprintf(config, sizeof config, "threads=%d", omp_get_max_threads());
+    tr->device = rtcNewDevice(config);
     if (!tr->device) { snprintf(err, errlen, "embree: cannot create a device"); free(tr); return NULL; }
     rtcSetDeviceErrorFunction(tr->device, embree_error, NULL);
     tr->scene = rtcNewScene(tr->device);
