@@ -6,13 +6,18 @@
 # scripts/junit-xml.py), lists the slowest checks, and ends with one line "N passed, N failed".
 # PREE_TEST_UNITS, PREE_TEST_CHECKS, PREE_TEST_XML: other unit-binary and check folders and XML
 # path (tests/checks/junit_xml.sh runs the runner on a folder of its own). PREE_TEST_JOBS: how
-# many checks run at once (below).
+# many checks run at once (below); PREE_TEST_TIMEOUT: seconds a check may run before it and its
+# processes are killed and it fails (1200; the slowest, preu_sim, takes about 270 on CI).
 set -u
 level=${1:-full}
 jobs=${PREE_TEST_JOBS:-$(nproc)}
-if ! [[ $jobs =~ ^[1-9][0-9]*$ ]]; then
-  echo "run-tests: PREE_TEST_JOBS must be a whole number of at least 1, not '$jobs'" >&2; exit 2
-fi
+limit=${PREE_TEST_TIMEOUT:-1200}
+for v in jobs limit; do
+  if ! [[ ${!v} =~ ^[1-9][0-9]*$ ]]; then
+    echo "run-tests: PREE_TEST_$([ $v = jobs ] && echo JOBS || echo TIMEOUT) must be a whole number of at least 1, not '${!v}'" >&2
+    exit 2
+  fi
+done
 cd "$(dirname "$0")/.."
 units=${PREE_TEST_UNITS:-build/tests}; checks=${PREE_TEST_CHECKS:-tests/checks}
 xml=${PREE_TEST_XML:-build/test-results.xml}
@@ -57,7 +62,8 @@ trap 'kill "${!running[@]}" 2>/dev/null; exit 130' INT TERM
 
 start_check() {
   local chk=$1 name; name=$(basename "$chk" .sh)
-  ( s=$(now); bash "$chk" >"$logdir/$name.log" 2>&1; rc=$?
+  ( s=$(now); timeout -k 10 "$limit" bash "$chk" >"$logdir/$name.log" 2>&1; rc=$?
+    [ $rc -eq 124 ] && echo "(timed out after ${limit} s: PREE_TEST_TIMEOUT)" >>"$logdir/$name.log"
     printf '%d %s\n' $rc "$(secs "$s" "$(now)")" >"$logdir/$name.rc" ) &
   running[$!]=$chk
 }

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # level: quick
 # The regression runner's CI output: scripts/run-tests.sh run over a folder of its own (a real
-# cmocka binary, a unit binary that crashes, a passing and a failing check) must write JUnit XML
+# cmocka binary, a unit binary that crashes, a passing, a failing and a hanging check, the last
+# killed with its child after PREE_TEST_TIMEOUT seconds) must write JUnit XML
 # that tests/lib/junit_validate.py accepts, with each case's status, failure message, log and
 # rerun command, list the slowest checks, and keep the closing line "N passed, N failed".
 # Then a validator self-test: three broken reports must be rejected.
@@ -17,13 +18,19 @@ printf '#!/bin/sh\necho "about to crash"\nexit 139\n' >"$TMP/units/test_crash"
 chmod +x "$TMP/units/test_crash"
 printf '#!/usr/bin/env bash\necho fine\n' >"$TMP/checks/good_one.sh"
 printf '#!/usr/bin/env bash\necho working\necho "FAIL: widget: got 3, expected 4" >&2\nexit 1\n' >"$TMP/checks/bad_one.sh"
+printf '#!/usr/bin/env bash\nsleep 300 & echo $! >"%s/hung.pid"\nwait\n' "$TMP" >"$TMP/checks/hung_one.sh"
 
 echo "+ scripts/run-tests.sh full (PREE_TEST_UNITS=$TMP/units PREE_TEST_CHECKS=$TMP/checks)"
 PREE_TEST_UNITS="$TMP/units" PREE_TEST_CHECKS="$TMP/checks" PREE_TEST_XML="$TMP/out/results.xml" \
-  scripts/run-tests.sh full >"$TMP/run.txt" 2>&1 && fail "run-tests.sh exited 0 with a failing check"
+  PREE_TEST_TIMEOUT=3 scripts/run-tests.sh full >"$TMP/run.txt" 2>&1 && fail "run-tests.sh exited 0 with a failing check"
 sed 's/^/  | /' "$TMP/run.txt"
+grep -q "timed out after 3 s" "$TMP/out/test-logs/hung_one.log" || fail "hung_one's log does not say it timed out"
+# (a killed child whose parent died may linger as a zombie until something reaps it: dead is enough)
+st=$(ps -o stat= -p "$(cat "$TMP/hung.pid")" 2>/dev/null || true)
+[ -z "$st" ] || [ "${st:0:1}" = Z ] || fail "hung_one's child outlived the timeout (state $st)"
+echo "ok: the hanging check was killed with its child after 3 s"
 n=$(python3 -c 'import re,sys; print(len(re.findall(r"cmocka_unit_test\w*\(", open(sys.argv[1]).read())))' tests/unit/test_compare.c)
-expect_eq "closing line" "$(tail -1 "$TMP/run.txt")" "$((n + 1)) passed, 2 failed"
+expect_eq "closing line" "$(tail -1 "$TMP/run.txt")" "$((n + 1)) passed, 3 failed"
 grep -q '^slowest checks:' "$TMP/run.txt" || fail "no 'slowest checks:' list"
 grep -Eq '^ +[0-9.]+s  (good_one|bad_one)$' "$TMP/run.txt" || fail "the slowest list has no check with its time"
 run $V "$TMP/out/results.xml"
