@@ -27,15 +27,23 @@ static int under_launcher(void)
     return 0;
 }
 
-/* MPI_Init under the launcher. cmd: the command, which must be one that runs distributed
+/* MPI_Init_thread under the launcher. cmd: the command, which must be one that runs distributed
  * (render, or cosim in the co-simulation program) when there is more than one rank; silence:
  * ranks other than 0 print nothing. 1, or -1 with rank 0's message. */
 static int begin(int *argc, char ***argv, const char *cmd, int silence)
 {
     if (!under_launcher()) return 1;
 #ifdef PREE_MPI
-    if (MPI_Init(argc, argv) != MPI_SUCCESS) {
-        fprintf(stderr, "pree: MPI_Init failed under the launcher\n");
+    /* FUNNELED: the render's OpenMP threads run beside MPI, and only the main thread calls it
+     * (the exchange in flight is polled by thread 0 of the tracing loop). */
+    int provided = MPI_THREAD_SINGLE;
+    if (MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+        fprintf(stderr, "pree: MPI_Init_thread failed under the launcher\n");
+        return -1;
+    }
+    if (provided < MPI_THREAD_FUNNELED) {
+        fprintf(stderr, "pree: the MPI library does not support MPI_THREAD_FUNNELED (threads beside MPI)\n");
+        MPI_Finalize();
         return -1;
     }
     int size = 1, rank = 0;

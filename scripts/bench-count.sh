@@ -32,9 +32,9 @@ st = json.load(open(stats))
 def g(name): return inc.get(name, 0)
 upd = g("update_batch_prepare") + g("update_batch_screen") + g("update_batch_apply")
 print("%-16s %12.1f %10.1f %10.1f %10.1f %10.1f %10.1f %10.1f %12.2f %12.1f" % (
-    label, total / 1e6, g("eye_pass") / 1e6, g("grid_build") / 1e6, g("trace_block._omp_fn.0") / 1e6,
+    label, total / 1e6, g("eye_pass") / 1e6, g("grid_build") / 1e6, g("render_trace_block._omp_fn.0") / 1e6,
     g("update_batch_prepare") / 1e6, g("update_batch_screen") / 1e6, g("update_batch_apply") / 1e6,
-    upd / st["hpuo_candidates"], g("trace_block._omp_fn.0") / st["photon_segments"]))
+    upd / st["hpuo_candidates"], g("render_trace_block._omp_fn.0") / st["photon_segments"]))
 EOF
 done
 echo "(phases in millions of instructions, inclusive; files in $out/count-*)" | tee -a "$out/count.txt"

@@ -21,7 +21,7 @@
 #include "render_dist.h"
 #include "render_session.h"
 
-#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
+#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time (render_round.c too) */
 
 long render_peak_rss_kb(void)
 {
@@ -68,12 +68,14 @@ static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
     return hitpoints_drop_weight(h);
 }
 
-/* Trace the photons of sequence indices [first, first + count) into the ordered chunk buffers;
- * drop hits that reach no hit point's cell when skipping. Returns 0, -1 (out of memory) or 1
- * (stop was set: the block is abandoned, the counters untouched). */
-static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g, int skip,
-                       uint64_t first, uint64_t count, const stop_flag_t *stop, block_buffers_t *bb)
+int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
 {
+    const scene_t *scene = s->scene;
+    const tracer_t *tr = s->tr;
+    const grid_t *g = &s->grid;
+    const int skip = s->skip;
+    const stop_flag_t *stop = s->opt.interrupt;
+    block_buffers_t *bb = s->bb;
     int failed = 0, stopped = 0;
     unsigned long long no_cell = 0;
     const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
@@ -88,6 +90,8 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
         if (hi > first + count) hi = first + count;
         for (uint64_t i = lo; i < hi && !failed && !stopped; i++) {
             if (stop_requested(stop)) { stopped = 1; break; }
+            /* Under MPI the previous round's exchange progresses while this one traces. */
+            if (s->pending && (i & 63) == 0 && omp_get_thread_num() == 0) render_dist_exchange_poll(s->pending);
             size_t before = out->n;
             if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
             /* Find each hit's bucket once, here in parallel; with skips, drop the hits
@@ -112,10 +116,12 @@ static int trace_block(const scene_t *scene, const tracer_t *tr, const grid_t *g
     return 0;
 }
 
-/* Progress on stderr; a failed write (EPIPE from a closed pipe, SIGPIPE ignored) only stops
- * the printing, never the render. */
-static void progress(render_options_t *opt, uint64_t done, uint64_t total, double t0, int *last_decile)
+void render_progress(render_session_t *s)
 {
+    render_options_t *opt = &s->opt;
+    const uint64_t done = s->done_photons, total = s->emitted_target;
+    const double t0 = s->t_photons;
+    int *last_decile = &s->last_decile;
     if (!opt->progress) return;
     const int tty = isatty(2);
     const int decile = (int)(10 * done / total);
@@ -151,34 +157,19 @@ static void session_free(render_session_t *s)
     tracer_destroy(s->tr);
     free(s->own_lo);
     free(s->counts);
-    free(s->sendbuf);
+    render_dist_exchange_wait(s->pending);   /* a failed or stopped render's exchange in flight */
+    for (int k = 0; k < 2; k++) {
+        free(s->slot[k].send);
+        free(s->slot[k].recv);
+        free(s->slot[k].sendcounts);
+        free(s->slot[k].recvcounts);
+    }
+    free(s->rank_of);
+    update_batch_scratch_free(&s->xs);
+    free(s->rhits);
+    free(s->rhit_ptr);
     free(s->recvbuf);
     free(s);
-}
-
-/* More than one MPI rank: the partition and the options it supports. Rank r owns the hit
- * points [r n / N, (r + 1) n / N) of the spatial order (hp_order.c, render_dist_lo): contiguous runs of nearby
- * hit points, so a photon's candidates mostly belong to one rank. The others' hit points go to
- * part T, which no thread applies. opt.one_rank: one rank, whatever the launcher. 0, or -1 with err. */
-static int dist_open(render_session_t *s, char *err, size_t errlen)
-{
-    s->nranks = s->opt.one_rank ? 1 : render_dist_size();
-    s->rank = s->opt.one_rank ? 0 : render_dist_rank();
-    s->res->stats.mpi_ranks = s->nranks;
-    if (s->nranks < 2) return 0;
-    if (s->photon_major || s->opt.checkpoint || s->opt.resume || s->opt.time_limit > 0) {
-        snprintf(err, errlen, "under MPI with %d ranks: --scan photon, --checkpoint, --resume, --time-limit and "
-                 "recording operations are not supported", s->nranks);
-        return -1;
-    }
-    const size_t n = s->res->hp.n;
-    s->own_lo = malloc((size_t)(s->nranks + 1) * sizeof *s->own_lo);
-    s->counts = malloc((size_t)s->nranks * sizeof *s->counts);
-    if (!s->own_lo || !s->counts) { snprintf(err, errlen, "out of memory"); return -1; }
-    for (int r = 0; r <= s->nranks; r++) s->own_lo[r] = render_dist_lo(n, r, s->nranks);
-    for (size_t i = 0; i < n; i++)
-        if (i < s->own_lo[s->rank] || i >= s->own_lo[s->rank + 1]) s->owner[i] = (uint16_t)s->T;
-    return 0;
 }
 
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
@@ -259,7 +250,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
     if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
-    if (dist_open(s, err, errlen)) goto fail;
+    if (render_round_open(s, err, errlen)) goto fail;
     if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
                                 !s->skip, opt->interrupt, err, errlen))
         goto fail;
@@ -302,9 +293,8 @@ static int update_block(render_session_t *s)
         return ops && ops->failed ? -1 : 0;
     }
     int failed = update_batch_prepare(&s->batch, bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
-    const int dist = s->nranks > 1;   /* part T: the other ranks' hit points, never applied */
-    s->batch.owner = T > 1 || dist ? s->owner : NULL;
-    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], T + dist);
+    s->batch.owner = T > 1 ? s->owner : NULL;
+    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], T);
     if (failed) return -1;
     /* Screening: any thread, bucket groups; applying: each thread its own part. */
 #pragma omp parallel num_threads(T) reduction(| : failed)
@@ -318,22 +308,20 @@ static int update_block(render_session_t *s)
         for (int q = 0; q < T; q++)
             failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[p]);
     }
-    for (int p = 0; dist && s->own_block && p < T; p++)
-        for (int q = 0; q <= T; q++) {
-            s->res->stats.mpi_kept += s->scratch[p].list[q].n;
-            if (q == T) s->res->stats.mpi_kept_foreign += s->scratch[p].list[q].n;
-        }
     return failed ? -1 : 0;
 }
 
 /* Radii only shrink: after blocks 1, 2, 4, 8, ... drop the grid entries that the current radii
  * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor when recording the
  * co-simulation's operations (the host does not read the PREE's radii), nor with the environment
- * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). 0 or -1 (memory). */
-static int refilter_block(render_session_t *s)
+ * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). */
+int render_refilter_enabled(const render_session_t *s)
 {
-    s->blocks++;
-    if (!s->skip || s->opt.record_ops || (s->blocks & (s->blocks - 1)) || getenv("PREE_NO_REFILTER")) return 0;
+    return s->skip && !s->opt.record_ops && !getenv("PREE_NO_REFILTER");
+}
+
+int render_refilter_now(render_session_t *s)
+{
     render_stats_t *st = &s->res->stats;
     const double t = omp_get_wtime();
     const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, s->T);
@@ -342,6 +330,14 @@ static int refilter_block(render_session_t *s)
     st->grid_entries_final -= (size_t)dropped;
     st->sec_refilter += omp_get_wtime() - t;
     return 0;
+}
+
+/* After each block: a re-filter when the block count is a power of two. 0 or -1 (memory). */
+static int refilter_block(render_session_t *s)
+{
+    s->blocks++;
+    if ((s->blocks & (s->blocks - 1)) || !render_refilter_enabled(s)) return 0;
+    return render_refilter_now(s);
 }
 
 static int step_block(render_session_t *s, char *err, size_t errlen)
@@ -356,8 +352,7 @@ static int step_block(render_session_t *s, char *err, size_t errlen)
              (unsigned long long)((s->done_photons - s->res->stats.photons_resumed) / PHOTON_BLOCK + 1));
     render_test_interrupt(block_name);
     double t = omp_get_wtime();
-    const int traced = trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + s->done_photons, count,
-                                   s->opt.interrupt, s->bb);
+    const int traced = render_trace_block(s, s->opt.photon_offset + s->done_photons, count);
     if (traced < 0) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
     if (traced > 0) {   /* interrupted: the image keeps the whole blocks done */
         s->interrupted = 1;
@@ -376,7 +371,7 @@ static int step_block(render_session_t *s, char *err, size_t errlen)
         s->bb->chunk[c].segments = 0;
     }
     s->done_photons += count;
-    progress(&s->opt, s->done_photons, s->emitted_target, s->t_photons, &s->last_decile);
+    render_progress(s);
     if (s->opt.interrupt && *s->opt.interrupt && s->done_photons < s->emitted_target) {
         /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
         s->interrupted = 1;
@@ -385,157 +380,10 @@ static int step_block(render_session_t *s, char *err, size_t errlen)
     return 1;
 }
 
-/* The traced block in bb as bytes: the photon count, then per chunk its hit count, segments and
- * hits. 0 or -1 (memory). */
-static int block_pack(render_session_t *s, uint64_t count, size_t *bytes)
-{
-    size_t n = sizeof(uint64_t);
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++) n += 2 * sizeof(uint64_t) + s->bb->chunk[c].n * sizeof(photon_hit_t);
-    if (n > s->send_cap) {
-        void *p = realloc(s->sendbuf, n);
-        if (!p) return -1;
-        s->sendbuf = p;
-        s->send_cap = n;
-    }
-    char *o = s->sendbuf;
-    memcpy(o, &count, sizeof count), o += sizeof count;
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-        const photon_hits_t *ch = &s->bb->chunk[c];
-        const uint64_t hdr[2] = {ch->n, ch->segments};
-        memcpy(o, hdr, sizeof hdr), o += sizeof hdr;
-        if (ch->n) memcpy(o, ch->hits, ch->n * sizeof *ch->hits), o += ch->n * sizeof *ch->hits;
-    }
-    *bytes = n;
-    return 0;
-}
-
-/* A packed block back into bb; its photon count. -1 (memory). */
-static long long block_unpack(render_session_t *s, const char *in)
-{
-    uint64_t count;
-    memcpy(&count, in, sizeof count), in += sizeof count;
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-        photon_hits_t *ch = &s->bb->chunk[c];
-        uint64_t hdr[2];
-        memcpy(hdr, in, sizeof hdr), in += sizeof hdr;
-        if (hdr[0] > ch->cap) {
-            void *p = realloc(ch->hits, hdr[0] * sizeof *ch->hits);
-            if (!p) return -1;
-            ch->hits = p;
-            ch->cap = hdr[0];
-        }
-        ch->n = hdr[0];
-        ch->segments = hdr[1];
-        if (ch->n) memcpy(ch->hits, in, ch->n * sizeof *ch->hits), in += ch->n * sizeof *ch->hits;
-    }
-    return (long long)count;
-}
-
-/* One round under MPI (docs/scale_out.md): rank r traces the round's block r (blocks keep their
- * photon indices); the ranks agree on failing or stopping; every rank receives every block and
- * applies them in photon order to the hit points it owns. 1 (a round done), 0 (ended), -1. */
-static int dist_round(render_session_t *s, char *err, size_t errlen)
-{
-    render_stats_t *st = &s->res->stats;
-    if (s->interrupted || s->done_photons >= s->emitted_target || !s->res->hp.n) return 0;
-    enum { GO = 0, STOP_AFTER = 1, ABANDONED = 2, FAILED = 3 };
-    const uint64_t first = s->done_photons + (uint64_t)s->rank * PHOTON_BLOCK;
-    uint64_t count = first < s->emitted_target ? s->emitted_target - first : 0;
-    if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
-    char mine[512] = "";
-    int status = GO;
-    double t = omp_get_wtime();
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++) s->bb->chunk[c].n = s->bb->chunk[c].segments = 0;
-    if (count) {
-        char block_name[32];
-        snprintf(block_name, sizeof block_name, "block%llu", (unsigned long long)(first / PHOTON_BLOCK + 1));
-        render_test_interrupt(block_name);
-        const int traced = trace_block(s->scene, s->tr, &s->grid, s->skip, s->opt.photon_offset + first, count,
-                                       s->opt.interrupt, s->bb);
-        if (traced < 0) { snprintf(mine, sizeof mine, "out of memory in the photon pass"); status = FAILED; }
-        else if (traced > 0) status = ABANDONED;
-        else if (s->opt.precision == PRECISION_FP32 && render_fp32_check_hits(s->bb->chunk, TRACE_CHUNKS, mine, sizeof mine))
-            status = FAILED;
-    }
-    if (status == GO && s->opt.interrupt && *s->opt.interrupt) status = STOP_AFTER;
-    size_t bytes = 0;
-    if (status == GO || status == STOP_AFTER) {
-        if (block_pack(s, count, &bytes)) { snprintf(mine, sizeof mine, "out of memory in the photon pass"); status = FAILED; }
-    }
-    st->sec_trace += omp_get_wtime() - t;
-    status = render_dist_max(status);
-    if (status == FAILED) {   /* rank 0 reports the first failing rank's message */
-        if (render_dist_allgather(mine, sizeof mine, &s->recvbuf, &s->recv_cap, s->counts)) {
-            snprintf(err, errlen, "out of memory in the photon pass");
-            return -1;
-        }
-        err[0] = '\0';
-        for (int r = 0; r < s->nranks && !err[0]; r++) snprintf(err, errlen, "%s", (const char *)s->recvbuf + (size_t)r * sizeof mine);
-        if (!err[0]) snprintf(err, errlen, "a rank failed in the photon pass");
-        return -1;
-    }
-    if (status == ABANDONED) {   /* the image keeps the rounds done */
-        s->interrupted = 1;
-        if (s->opt.progress) fputc('\n', stderr);
-        return 0;
-    }
-    t = omp_get_wtime();
-    if (render_dist_allgather(s->sendbuf, bytes, &s->recvbuf, &s->recv_cap, s->counts)) {
-        snprintf(err, errlen, "out of memory in the photon pass");
-        return -1;
-    }
-    s->bytes_sent += (unsigned long long)bytes * (unsigned long long)(s->nranks - 1);
-    st->sec_trace += omp_get_wtime() - t;
-    const char *in = s->recvbuf;
-    for (int r = 0; r < s->nranks; in += s->counts[r], r++) {
-        const long long n = block_unpack(s, in);
-        if (n < 0) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
-        if (!n) continue;
-        t = omp_get_wtime();
-        s->own_block = r == s->rank;   /* the crossing figure counts each block once, on its tracer */
-        if (update_block(s) || refilter_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
-        st->sec_update += omp_get_wtime() - t;
-        for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-            st->photon_hits += s->bb->chunk[c].n;
-            st->photon_segments += s->bb->chunk[c].segments;
-        }
-        s->done_photons += (uint64_t)n;
-    }
-    progress(&s->opt, s->done_photons, s->emitted_target, s->t_photons, &s->last_decile);
-    if (status == STOP_AFTER && s->done_photons < s->emitted_target) {
-        s->interrupted = 1;
-        if (s->opt.progress) fputc('\n', stderr);
-    }
-    return 1;
-}
-
-/* Under MPI, after the photon pass: every rank's hit points to rank 0 (in the spatial order,
- * before it is undone), and the counters summed. */
-static void dist_close(render_session_t *s)
-{
-    hitpoints_t *h = &s->res->hp;
-    render_stats_t *st = &s->res->stats;
-    const size_t *lo = s->own_lo;
-    render_dist_gather_ranges(h->hot, sizeof *h->hot, lo);
-    if (h->flux) render_dist_gather_ranges(h->flux, sizeof *h->flux, lo);
-    if (h->r2) render_dist_gather_ranges(h->r2, sizeof *h->r2, lo);
-    if (h->r2_f32) render_dist_gather_ranges(h->r2_f32, sizeof *h->r2_f32, lo);
-    if (h->fp32) render_dist_gather_ranges(h->fp32, sizeof *h->fp32, lo);
-    if (h->stable) render_dist_gather_ranges(h->stable, sizeof *h->stable, lo);
-    /* Every rank traced its own blocks (no_cell) and applied only its hit points (accepted). */
-    unsigned long long v[5] = {s->bb->no_cell, st->upd.accepted, s->bytes_sent, st->mpi_kept, st->mpi_kept_foreign};
-    render_dist_sum(v, 5);
-    s->bb->no_cell = v[0];
-    st->upd.accepted = v[1];
-    st->mpi_bytes_sent = v[2];
-    st->mpi_kept = v[3];
-    st->mpi_kept_foreign = v[4];
-}
-
 int render_step(render_session_t *s, char *err, size_t errlen)
 {
     if (s->nranks > 1) {
-        const int r = dist_round(s, err, errlen);
+        const int r = render_round_step(s, err, errlen);
         if (r < 0) s->failed = 1;
         return r;
     }
@@ -557,7 +405,7 @@ int render_close(render_session_t *s, char *err, size_t errlen)
     if (s->interrupted && !s->done_photons) { snprintf(err, errlen, STOP_MESSAGE " during the first photon block"); goto done; }
     st->upd = render_session_update_totals(s);
     if (s->nranks > 1) {
-        dist_close(s);
+        render_round_close(s);
         if (s->rank) {   /* rank 0 evaluates and writes */
             rc = s->interrupted ? 1 : 0;
             goto done;

@@ -23,6 +23,20 @@ int render_dist_max(int v);
  * *cap its size); counts[r]: rank r's bytes. 0 or -1 (memory). */
 int render_dist_allgather(const void *send, size_t bytes, void **recv, size_t *cap, size_t *counts);
 
+/* An exchange in flight: every rank's send[...] in pieces to every rank, sendcounts[d] bytes
+ * (consecutive, in rank order) to rank d, into *recv (grown; *cap its size) in rank order,
+ * recvcounts[r] bytes from rank r. Start (the counts travel at once; 0, or -1 on memory on any
+ * rank, with no exchange), poll (lets it progress; call it from the thread that started MPI),
+ * wait (until *recv holds everything; then send and recv may be reused). */
+typedef struct render_dist_xchg render_dist_xchg_t;
+int render_dist_exchange_start(render_dist_xchg_t **x, const void *send, const size_t *sendcounts, void **recv,
+                               size_t *cap, size_t *recvcounts);
+void render_dist_exchange_poll(render_dist_xchg_t *x);
+void render_dist_exchange_wait(render_dist_xchg_t *x);
+
+/* Each rank's elements [lo[r], lo[r + 1]) of base (elem bytes each) to every rank. */
+void render_dist_share_ranges(void *base, size_t elem, const size_t *lo);
+
 /* Sum v[0..n) over the ranks, on every rank. */
 void render_dist_sum(unsigned long long *v, int n);
 

@@ -5,6 +5,7 @@
 
 #include "photon_pass.h"
 #include "render.h"
+#include "render_dist.h"
 #include "update_batch.h"
 
 #define PHOTON_BLOCK RENDER_PHOTON_BLOCK   /* whole batches of 1000 photons */
@@ -15,6 +16,12 @@ typedef struct {
     photon_hits_t chunk[TRACE_CHUNKS];
     unsigned long long no_cell;
 } block_buffers_t;
+
+/* A round's exchange buffers: what this rank sends each owner, and what it receives. */
+typedef struct {
+    void *send, *recv;
+    size_t send_cap, recv_cap, *sendcounts, *recvcounts;
+} round_slot_t;
 
 struct render_session {
     const scene_t *scene;
@@ -36,16 +43,40 @@ struct render_session {
     uint64_t blocks;         /* blocks updated: the grid is re-filtered after blocks 1, 2, 4, 8, ... */
     uint64_t fingerprint;    /* checkpoint_fingerprint, with a checkpoint or a resume */
     int failed;              /* a step failed: close only releases */
-    /* More than one MPI rank (render_dist.c, docs/scale_out.md): rank `rank` of `nranks` owns the
-     * hit points [own_lo[rank], own_lo[rank + 1]) of the spatial order; the others' are routed
-     * to part T, which no thread applies. */
+    /* More than one MPI rank (render_round.c, docs/scale_out.md): rank `rank` of `nranks` owns
+     * the hit points [own_lo[rank], own_lo[rank + 1]) of the spatial order (rank_of[i]: hit point
+     * i's rank); the others' are in part T, which no thread applies. */
     int nranks, rank;
     size_t *own_lo;
-    void *sendbuf, *recvbuf;
-    size_t send_cap, recv_cap, *counts;
+    uint16_t *rank_of;
+    void *recvbuf;                   /* the ranks' error messages */
+    size_t recv_cap, *counts;
+    round_slot_t slot[2];            /* rounds alternate: one exchange in flight, one being packed */
+    render_dist_xchg_t *pending;     /* the exchange in flight (slot[pending_slot]), or NULL */
+    int pending_slot;
+    uint64_t next_photon;            /* the first photon of the next round */
+    update_scratch_t xs;             /* one owner's kept candidates, grouped by hit, to pack */
+    photon_hit_t *rhits;             /* a received segment's photons */
+    const photon_hit_t **rhit_ptr;
+    size_t rhits_cap, rptr_cap;
     unsigned long long bytes_sent;   /* this rank's bytes to the other ranks */
-    int own_block;                   /* the block being applied is the one this rank traced */
 };
+
+/* The photon pass's steps that render_round.c shares (render.c): trace the photons of sequence
+ * indices [first, first + count) into the block buffers, dropping hits that reach no hit point's
+ * cell when skipping (0, -1 out of memory, or 1: stopped, the block abandoned); progress on
+ * stderr (a failed write only stops the printing); whether the grid is re-filtered, and a
+ * re-filter now (0 or -1). */
+int render_trace_block(render_session_t *s, uint64_t first, uint64_t count);
+void render_progress(render_session_t *s);
+int render_refilter_enabled(const render_session_t *s);
+int render_refilter_now(render_session_t *s);
+
+/* More than one MPI rank (render_round.c): the partition (0, or -1 with err), a round of photon
+ * blocks (1, 0 when ended, -1 with err), and every rank's state and counters to rank 0. */
+int render_round_open(render_session_t *s, char *err, size_t errlen);
+int render_round_step(render_session_t *s, char *err, size_t errlen);
+void render_round_close(render_session_t *s);
 
 /* The update counters summed over the threads. */
 update_stats_t render_session_update_totals(const render_session_t *s);

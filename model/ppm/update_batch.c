@@ -167,13 +167,18 @@ int update_batch_scratch_reset(update_scratch_t *s, int num_parts)
     return 0;
 }
 
-/* Keep a candidate in the list of the part that owns its hit point. */
-static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint32_t hp, double v2)
+int update_batch_keep_in(update_scratch_t *s, int q, uint32_t hit, uint32_t hp, double v2)
 {
-    kept_list_t *l = &s->list[b->owner ? b->owner[hp] : 0];
+    kept_list_t *l = &s->list[q];
     if (l->n == l->cap && grow_array(&l->v, &l->cap, l->n + 1, sizeof(kept_t))) return -1;
     ((kept_t *)l->v)[l->n++] = (kept_t){hit, hp, v2};
     return 0;
+}
+
+/* Keep a candidate in the list of the part that owns its hit point. */
+static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint32_t hp, double v2)
+{
+    return update_batch_keep_in(s, b->owner ? b->owner[hp] : 0, hit, hp, v2);
 }
 
 /* Phase 1 for one hit against its bucket's entries (double mode). */
@@ -314,6 +319,19 @@ static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthrea
     }
     out->n_sorted = total;
     return 0;
+}
+
+int update_batch_gather(update_scratch_t *out, update_scratch_t *all, int nthreads, int q, size_t n_hits)
+{
+    return group_by_hit(out, all, nthreads, q, n_hits);
+}
+
+void update_batch_sorted_at(const update_scratch_t *s, size_t i, uint32_t *hit, uint32_t *hp, double *v2)
+{
+    const kept_t *k = (const kept_t *)s->sorted + i;
+    *hit = k->hit;
+    *hp = k->hp;
+    *v2 = k->v2;
 }
 
 /* Ask for the first lines of a bucket's entries: buckets are screened in memory order but

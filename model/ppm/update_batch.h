@@ -56,4 +56,11 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
 int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b, int p,
                        update_scratch_t *all, int nthreads, update_stats_t *st);
 
+/* For the distributed render (render_round.c): the candidates that all nthreads threads kept in
+ * list q (all[0..nthreads)), grouped by hit in out (as the apply groups a part's); the i-th of
+ * them; and a candidate put in list q of s directly (received from another rank). */
+int update_batch_gather(update_scratch_t *out, update_scratch_t *all, int nthreads, int q, size_t n_hits);
+void update_batch_sorted_at(const update_scratch_t *s, size_t i, uint32_t *hit, uint32_t *hp, double *v2);
+int update_batch_keep_in(update_scratch_t *s, int q, uint32_t hit, uint32_t hp, double v2);
+
 #endif

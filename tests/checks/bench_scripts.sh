@@ -35,6 +35,8 @@ expect_eq "engine picture is a PNG" "$(head -c 4 "$TMP/eng/engine.png" | od -An 
 run scripts/bench-count.sh "$PREE" "$TMP/cnt1" --quick
 run scripts/bench-count.sh "$PREE" "$TMP/cnt2" --quick
 expect_eq "count rows" "$(grep -cE '^(smallppm|cells) ' "$TMP/cnt1/count.txt")" 3
+# every phase found under its function's name (a renamed function would print 0.0)
+expect_eq "phases with no count" "$(awk '/^(smallppm|cells) /{for (i = 3; i <= NF; i++) if ($i + 0 == 0) n++} END{print n + 0}' "$TMP/cnt1/count.txt")" 0
 rep=$(python3 - "$TMP/cnt1/count.txt" "$TMP/cnt2/count.txt" <<'PY'
 import re, sys
 rows = [[l.split() for l in open(f) if re.match(r"(smallppm|cells) ", l)] for f in sys.argv[1:]]

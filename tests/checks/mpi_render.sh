@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Distributed render (model/ppm/render_dist.c, docs/scale_out.md): `mpirun -np 2` renders of
+# Distributed render (model/ppm/render_round.c, docs/scale_out.md): `mpirun -np 2` renders of
 # cornell3 (1 thread a rank) and a mesh scene (cornell3-teapot, 2 threads a rank), in double, fp32
 # (paper) and fp32 (stable), hold the image and state hashes and the accepted count of one process;
 # rank 0 alone writes, and the communication figures are in the statistics. 100000 photons are
@@ -31,3 +31,27 @@ run mpirun --oversubscribe --allow-run-as-root --bind-to none -np 3 "$PREE" "${a
 expect_eq "cornell3 fp32 -np 3 hashes/accepted" \
   "$(json "$TMP/c.json" image_hash)/$(json "$TMP/c.json" state_hash)/$(json "$TMP/c.json" hpuo_accepted)" \
   "$(json "$TMP/a.json" image_hash)/$(json "$TMP/a.json" state_hash)/$(json "$TMP/a.json" hpuo_accepted)"
+# Ctrl-C on one rank (PREE_TEST_INTERRUPT raises SIGINT in the rank that begins block 3: rank 0,
+# in the second round): every rank stops after that round's tracing, the first round (blocks 1-2,
+# 64000 photons) is applied, and rank 0 writes its image: the bits of one process interrupted at
+# block 3, with its exit status.
+args=(render "$ROOT/scenes/cornell3" --width 40 --height 30 --photons 200000 --quiet)
+PREE_TEST_INTERRUPT=block3 "$PREE" "${args[@]}" --out "$TMP/i1.ppm" --stats "$TMP/i1.json"; rc1=$?
+PREE_TEST_INTERRUPT=block3 "${MPIRUN[@]}" "$PREE" "${args[@]}" --threads 1 --out "$TMP/i2.ppm" --stats "$TMP/i2.json" \
+  2>"$TMP/i2.err"; rc2=$?
+expect_eq "exit status, interrupted at block 3, one process" $rc1 130
+expect_eq "exit status, interrupted at block 3, -np 2" $rc2 130
+expect_eq "photons after an interrupt at block 3, -np 2" "$(json "$TMP/i2.json" photons_emitted)" 64000
+expect_eq "image after an interrupt at block 3, -np 2" "$(json "$TMP/i2.json" image_hash)" "$(json "$TMP/i1.json" image_hash)"
+# An error on the ranks (fp32: the light's flux beyond binary32 at the PREE boundary): one
+# message (rank 0's), a non-zero exit, and nothing written.
+sed 's/intensity 2500 2500 2500/intensity 1e38 1e38 1e38/' "$ROOT/scenes/cornell3" > "$TMP/hot.scene"
+rm -f "$TMP/h.ppm" "$TMP/h.json"
+"${MPIRUN[@]}" "$PREE" render "$TMP/hot.scene" --width 16 --height 12 --photons 1000 --precision fp32 --quiet \
+  --threads 1 --out "$TMP/h.ppm" --stats "$TMP/h.json" 2>"$TMP/h.err"; rc=$?
+[ $rc -ne 0 ] || fail "-np 2 with a flux beyond binary32: exit 0"
+expect_eq "-np 2 error: pree messages" "$(grep -c '^pree' "$TMP/h.err")" 1
+grep -q "^pree render: .*photon 0's flux .* beyond binary32's range" "$TMP/h.err" \
+  || fail "-np 2 error: message '$(grep '^pree' "$TMP/h.err")'"
+[ ! -e "$TMP/h.ppm" ] && [ ! -e "$TMP/h.json" ] || fail "-np 2 error: an output was written"
+echo "ok: -np 2: an error on the ranks is one message, nothing written"
