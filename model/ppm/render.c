@@ -292,21 +292,28 @@ static int update_block(render_session_t *s)
         }
         return ops && ops->failed ? -1 : 0;
     }
-    int failed = update_batch_prepare(&s->batch, bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
-    s->batch.owner = T > 1 ? s->owner : NULL;
-    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], T);
+    if (render_screen_block(s, T > 1 ? s->owner : NULL, T)) return -1;
+    int failed = 0;   /* applying: each thread its own part */
+#pragma omp parallel for num_threads(T) schedule(static, 1) reduction(| : failed)
+    for (int q = 0; q < T; q++)
+        failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[omp_get_thread_num()]);
+    return failed ? -1 : 0;
+}
+
+int render_screen_block(render_session_t *s, const uint16_t *owner, int lists)
+{
+    const int T = s->T;
+    int failed = update_batch_prepare(&s->batch, s->bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
+    s->batch.owner = owner;
+    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], lists);
     if (failed) return -1;
-    /* Screening: any thread, bucket groups; applying: each thread its own part. */
 #pragma omp parallel num_threads(T) reduction(| : failed)
     {
         const int p = omp_get_thread_num();
 #pragma omp for schedule(dynamic, 1)
         for (size_t gi = 0; gi < s->batch.n_groups; gi += SCREEN_GROUPS)
-            failed |= update_batch_screen(h, &s->grid, prec, s->skip, &s->batch, gi, gi + SCREEN_GROUPS,
-                                          &s->ust[p], &s->scratch[p]);
-#pragma omp for schedule(static, 1)
-        for (int q = 0; q < T; q++)
-            failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[p]);
+            failed |= update_batch_screen(&s->res->hp, &s->grid, s->opt.precision, s->skip, &s->batch, gi,
+                                          gi + SCREEN_GROUPS, &s->ust[p], &s->scratch[p]);
     }
     return failed ? -1 : 0;
 }

@@ -16,7 +16,6 @@
 #include "render_dist.h"
 #include "render_session.h"
 
-#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time (as render.c) */
 /* The threads' kept lists: one per owning rank when screening, one per part when applying (the
  * same count for both, so that the lists keep their memory from round to round). */
 #define LISTS(s) ((s)->nranks > (s)->T ? (s)->nranks : (s)->T)
@@ -101,22 +100,9 @@ static int reserve(void **buf, size_t *cap, size_t need)
  * rank order; sendcounts[d]: owner d's bytes. 0 or -1 (memory). */
 static int screen_and_pack(render_session_t *s, uint64_t photons, round_slot_t *x)
 {
-    hitpoints_t *h = &s->res->hp;
     const int T = s->T, N = s->nranks;
     const precision_t prec = s->opt.precision;
-    int failed = update_batch_prepare(&s->batch, s->bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
-    s->batch.owner = s->rank_of;
-    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], LISTS(s));
-    if (failed) return -1;
-#pragma omp parallel num_threads(T) reduction(| : failed)
-    {
-        const int p = omp_get_thread_num();
-#pragma omp for schedule(dynamic, 1)
-        for (size_t gi = 0; gi < s->batch.n_groups; gi += SCREEN_GROUPS)
-            failed |= update_batch_screen(h, &s->grid, prec, s->skip, &s->batch, gi, gi + SCREEN_GROUPS,
-                                          &s->ust[p], &s->scratch[p]);
-    }
-    if (failed) return -1;
+    if (render_screen_block(s, s->rank_of, LISTS(s))) return -1;
     size_t used = 0;
     for (int d = 0; d < N; d++) {
         if (update_batch_gather(&s->xs, s->scratch, T, d, s->batch.n)) return -1;
