@@ -420,6 +420,26 @@ static int reference_metrics(const scene_t *scene, const render_options_t *opt, 
     return rc;
 }
 
+/* The RTL's image (binary32 words Lr, widened into rgb) to --out, and with a reference its
+ * metrics in rep: 0, or -1 with a message printed. */
+static int rtl_image_out(const cosim_args_t *c, const scene_t *scene, const render_options_t *opt, const uint32_t *Lr,
+                         double *rgb, cosim_report_t *rep)
+{
+    char err[1024];
+    const size_t npix = (size_t)opt->width * (size_t)opt->height;
+    for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
+    if (c->out && pree_image_write(c->out, opt->width, opt->height, rgb, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
+        return -1;
+    }
+    if (c->reference) {
+        const int m = reference_metrics(scene, opt, rgb, &rep->m);
+        if (m == -1) return -1;
+        rep->have_metrics = m == 0;
+    }
+    return 0;
+}
+
 /* The report's figures, its JSON (--stats) and the closing line: the exit status (0 when both
  * comparisons show 0 differing words, or with --model-only), or 1 when the JSON is not written. */
 static int finish_report(cosim_report_t *rep, const cosim_args_t *c, int progress)
@@ -696,16 +716,7 @@ int pree_cmd_cosim(int argc, char **argv)
         }
         rep.mpi_ranks = part.nranks;
         rep.ranks = figs;
-        for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
-        if (c.out && pree_image_write(c.out, opt.width, opt.height, rgb, err, sizeof err)) {
-            fprintf(stderr, "pree cosim: %s\n", err);
-            goto out;
-        }
-        if (c.reference) {
-            int m = reference_metrics(&scene, &opt, rgb, &rep.m);
-            if (m == -1) goto out;
-            rep.have_metrics = m == 0;
-        }
+        if (rtl_image_out(&c, &scene, &opt, Lr, rgb, &rep)) goto out;
     } else if (c.model_only) {        /* the cycle model's counters stand for the RTL's */
         cosim_sched_stats_t ss;
         cosim_drv_sched_stats(ctx.drv, &ss);
@@ -728,16 +739,7 @@ int pree_cmd_cosim(int argc, char **argv)
         rep.img_diff = (unsigned long long)img;
         rep.sec_rad_rtl = now() - t0;
         cosim_drv_counters(ctx.drv, rep.cnt_all);
-        for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
-        if (c.out && pree_image_write(c.out, opt.width, opt.height, rgb, err, sizeof err)) {
-            fprintf(stderr, "pree cosim: %s\n", err);
-            goto out;
-        }
-        if (c.reference) {
-            int m = reference_metrics(&scene, &opt, rgb, &rep.m);
-            if (m == -1) goto out;
-            rep.have_metrics = m == 0;
-        }
+        if (rtl_image_out(&c, &scene, &opt, Lr, rgb, &rep)) goto out;
     }
     rep.photons_emitted = res.stats.photons_emitted;
     rep.hit_points = res.hp.n;
