@@ -77,62 +77,95 @@ uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, doubl
     return perm;
 }
 
-/* The largest array element that is permuted (preu_shp_t). */
-#define PERMUTE_MAX_ELEM 128
+/* The arrays a permutation moves: the non-NULL ones of a hit-point set. */
+#define PERMUTE_ARRAYS 9
+typedef struct {
+    unsigned char *a[PERMUTE_ARRAYS];
+    size_t sz[PERMUTE_ARRAYS], off[PERMUTE_ARRAYS], n, bytes;   /* bytes: one element of each */
+} hp_arrays_t;
 
-/* Permute arr (n elements of size sz) in place, cycle by cycle: gathered (new[k] = old[perm[k]])
- * or scattered (new[perm[k]] = old[k]). done is n bits of scratch; a copy of the array would
- * add up to 56 bytes a hit point to the render's peak. */
-static void permute(void *arr, size_t sz, size_t n, const uint32_t *perm, int scatter, uint64_t *done)
+static void arrays_add(hp_arrays_t *s, void *a, size_t sz)
 {
-    if (!arr) return;
-    unsigned char *a = arr, carry[PERMUTE_MAX_ELEM], t[PERMUTE_MAX_ELEM];
-    memset(done, 0, (n + 63) / 64 * sizeof *done);
+    if (!a) return;
+    s->a[s->n] = a;
+    s->sz[s->n] = sz;
+    s->off[s->n] = s->bytes;
+    s->bytes += sz;
+    s->n++;
+}
+
+/* One element of size sz: the fixed sizes inline, the rest through memcpy's call. */
+static inline void move_elem(unsigned char *dst, const unsigned char *src, size_t sz)
+{
+    switch (sz) {
+    case 1: *dst = *src; break;
+    case 4: memcpy(dst, src, 4); break;
+    case 8: memcpy(dst, src, 8); break;
+    case 24: memcpy(dst, src, 24); break;
+    case 56: memcpy(dst, src, 56); break;
+    default: memcpy(dst, src, sz);
+    }
+}
+
+/* Element j of every array to (or from) buf, packed. */
+static void save_all(const hp_arrays_t *s, unsigned char *buf, size_t j)
+{
+    for (size_t i = 0; i < s->n; i++) move_elem(buf + s->off[i], s->a[i] + j * s->sz[i], s->sz[i]);
+}
+
+static void load_all(const hp_arrays_t *s, size_t j, const unsigned char *buf)
+{
+    for (size_t i = 0; i < s->n; i++) move_elem(s->a[i] + j * s->sz[i], buf + s->off[i], s->sz[i]);
+}
+
+/* Permute every array in place, cycle by cycle and all arrays in one walk (each step touches
+ * the permutation and the scratch bits once for all of them): gathered (new[k] = old[perm[k]])
+ * or scattered (new[perm[k]] = old[k]). A copy of an array would add up to 128 bytes a hit
+ * point to the render's peak. 0 or -1 (memory). */
+static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
+{
+    hp_arrays_t s = {0};
+    arrays_add(&s, h->hot, sizeof *h->hot);
+    arrays_add(&s, h->weight, sizeof *h->weight);
+    arrays_add(&s, h->flux, sizeof *h->flux);
+    arrays_add(&s, h->r2, sizeof *h->r2);
+    arrays_add(&s, h->pixel, sizeof *h->pixel);
+    arrays_add(&s, h->dark, sizeof *h->dark);
+    arrays_add(&s, h->fp32, sizeof *h->fp32);
+    arrays_add(&s, h->stable, sizeof *h->stable);
+    arrays_add(&s, h->r2_f32, sizeof *h->r2_f32);
+    const size_t n = h->n;
+    uint64_t *done = calloc((n + 63) / 64 + 1, sizeof *done);
+    unsigned char *carry = malloc(2 * s.bytes + 1), *t = carry + s.bytes;
+    if (!done || !carry) { free(done); free(carry); return -1; }
 #define DONE(i) (done[(i) >> 6] >> ((i) & 63) & 1)
 #define MARK(i) (done[(i) >> 6] |= (uint64_t)1 << ((i) & 63))
     for (size_t k = 0; k < n; k++) {
         if (DONE(k)) continue;
         MARK(k);
         if (perm[k] == k) continue;
+        save_all(&s, carry, k);
         if (scatter) {   /* carry old[k] to its place perm[k], taking what stood there on */
-            memcpy(carry, a + k * sz, sz);
             for (size_t j = perm[k]; j != k; j = perm[j]) {
-                memcpy(t, a + j * sz, sz);
-                memcpy(a + j * sz, carry, sz);
-                memcpy(carry, t, sz);
+                save_all(&s, t, j);
+                load_all(&s, j, carry);
+                memcpy(carry, t, s.bytes);
                 MARK(j);
             }
-            memcpy(a + k * sz, carry, sz);
+            load_all(&s, k, carry);
         } else {   /* pull old[perm[j]] into j along the cycle */
-            memcpy(carry, a + k * sz, sz);
             size_t j = k;
             for (size_t next = perm[j]; next != k; j = next, next = perm[j]) {
-                memcpy(a + j * sz, a + next * sz, sz);
+                for (size_t i = 0; i < s.n; i++) move_elem(s.a[i] + j * s.sz[i], s.a[i] + next * s.sz[i], s.sz[i]);
                 MARK(next);
             }
-            memcpy(a + j * sz, carry, sz);
+            load_all(&s, j, carry);
         }
     }
 #undef DONE
 #undef MARK
-}
-
-static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
-{
-    _Static_assert(sizeof *h->stable <= PERMUTE_MAX_ELEM && sizeof *h->fp32 <= PERMUTE_MAX_ELEM &&
-                   sizeof *h->hot <= PERMUTE_MAX_ELEM, "an element larger than permute's buffers");
-    uint64_t *done = malloc(((h->n + 63) / 64 + 1) * sizeof *done);
-    if (!done) return -1;
-    permute(h->hot, sizeof *h->hot, h->n, perm, scatter, done);
-    permute(h->weight, sizeof *h->weight, h->n, perm, scatter, done);
-    permute(h->flux, sizeof *h->flux, h->n, perm, scatter, done);
-    permute(h->r2, sizeof *h->r2, h->n, perm, scatter, done);
-    permute(h->pixel, sizeof *h->pixel, h->n, perm, scatter, done);
-    permute(h->dark, sizeof *h->dark, h->n, perm, scatter, done);
-    permute(h->fp32, sizeof *h->fp32, h->n, perm, scatter, done);
-    permute(h->stable, sizeof *h->stable, h->n, perm, scatter, done);
-    permute(h->r2_f32, sizeof *h->r2_f32, h->n, perm, scatter, done);
     free(done);
+    free(carry);
     return 0;
 }
 
