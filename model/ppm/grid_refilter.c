@@ -8,6 +8,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include <omp.h>
 #include "fp32_ops.h"
 #include "grid_refilter.h"
 
@@ -27,39 +28,69 @@ static uint64_t *bucket_cells(const grid_t *g)
     return key;
 }
 
-/* Whether hit point i may still accept a photon in the cell of key k. */
-static int still_reaches(const grid_t *g, const hitpoints_t *h, precision_t prec, uint32_t i, uint64_t k)
-{
-    const double r2 = prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
-    if (!(r2 >= 0) || k == UINT64_MAX) return 1;   /* nothing to prove: keep */
-    const double rs = grid_safe_radius(sqrt(r2), g->max_abs_coord);
-    if (rs >= g->r_safe) return 1;
-    const hp_hot_t *p = &h->hot[i];
+/* The cells that hit point i may still accept photons in: its safe box on its current radius,
+ * from cell a to cell b on each axis, or every cell (all) when that cannot be proven smaller. */
+typedef struct {
+    uint32_t hp, all;
     int64_t a[3], b[3];
-    if (!grid_cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), a) ||
-        !grid_cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), b)) return 1;
+} reach_t;
+
+static void reach_of(const grid_t *g, const hitpoints_t *h, precision_t prec, uint32_t i, reach_t *m)
+{
+    m->hp = i;
+    m->all = 1;
+    const double r2 = prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
+    if (!(r2 >= 0)) return;   /* nothing to prove: keep */
+    const double rs = grid_safe_radius(sqrt(r2), g->max_abs_coord);
+    if (rs >= g->r_safe) return;
+    const hp_hot_t *p = &h->hot[i];
+    if (!grid_cell_coords(g, v3(p->px - rs, p->py - rs, p->pz - rs), m->a) ||
+        !grid_cell_coords(g, v3(p->px + rs, p->py + rs, p->pz + rs), m->b)) return;
+    m->all = 0;
+}
+
+/* Whether the cell of key k (UINT64_MAX: none) lies in m's cells. */
+static int reaches(const reach_t *m, uint64_t k)
+{
+    if (m->all || k == UINT64_MAX) return 1;
     const uint64_t mask = ((uint64_t)1 << CELL_BITS) - 1;
     const int64_t c[3] = {(int64_t)(k & mask), (int64_t)((k >> CELL_BITS) & mask), (int64_t)(k >> (2 * CELL_BITS))};
     for (int ax = 0; ax < 3; ax++)
-        if (c[ax] < a[ax] || c[ax] > b[ax]) return 0;
+        if (c[ax] < m->a[ax] || c[ax] > m->b[ax]) return 0;
     return 1;
 }
+
+/* A hit point's entries stand in neighbouring buckets: its cells are remembered in a small
+ * direct-mapped table (a power of two of slots, by hit-point index). */
+#define REACH_MEMO 1024
+/* How many entries ahead a hit point's position and radius are fetched: the hit points of a big
+ * frame do not fit in the caches, and each entry would otherwise wait for its own. */
+#define REACH_AHEAD 16
 
 /* Bucket ranges that threads compact at once (more than threads, for balance). */
 #define REFILTER_RANGES 256
 
 /* Compact the buckets [b0, b1) of a part in place within their own entries, which start at lo
  * and end at hi (start[b0] and start[b1] before any change): start[b] becomes the bucket's new
- * first entry. Returns the entries kept. */
+ * first entry; memo: the calling thread's table (reach_t). Returns the entries kept. */
 static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t prec, grid_part_t *part,
-                             const uint64_t *key, size_t b0, size_t b1, size_t lo, size_t hi)
+                             const uint64_t *key, reach_t *memo, size_t b0, size_t b1, size_t lo, size_t hi)
 {
     size_t w = lo, from = lo;
     for (size_t b = b0; b < b1; b++) {
         const size_t to = b + 1 == b1 ? hi : part->start[b + 1];
         part->start[b] = (uint32_t)w;
-        for (size_t k = from; k < to; k++)
-            if (still_reaches(g, h, prec, part->hp[k], key[b])) part->hp[w++] = part->hp[k];
+        for (size_t k = from; k < to; k++) {
+            if (k + REACH_AHEAD < hi) {   /* the entries ahead are not yet moved (w <= k) */
+                const uint32_t ahead = part->hp[k + REACH_AHEAD];
+                __builtin_prefetch(&h->hot[ahead]);
+                __builtin_prefetch(prec == PRECISION_DOUBLE ? (const void *)&h->r2[ahead] : (const void *)&h->r2_f32[ahead]);
+            }
+            const uint32_t i = part->hp[k];
+            reach_t *m = &memo[i & (REACH_MEMO - 1)];
+            if (m->hp != i) reach_of(g, h, prec, i, m);
+            if (reaches(m, key[b])) part->hp[w++] = i;
+        }
         from = to;
     }
     return w - lo;
@@ -68,7 +99,7 @@ static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t 
 /* Compact part p's buckets in place: ranges of buckets in parallel, then each range's entries
  * moved down to follow the previous range's. Returns the entries dropped, or -1 (memory). */
 static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, int p, const uint64_t *key,
-                               int nthreads)
+                               reach_t *memo, int nthreads)
 {
     grid_part_t *part = &g->parts[p];
     const size_t nb = g->num_buckets, nr = nb < REFILTER_RANGES ? nb : REFILTER_RANGES;
@@ -77,7 +108,8 @@ static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec
     for (size_t r = 0; r <= nr; r++) edge[r] = part->start[nb * r / nr];
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1)
     for (size_t r = 0; r < nr; r++)
-        kept[r] = refilter_range(g, h, prec, part, key, nb * r / nr, nb * (r + 1) / nr, edge[r], edge[r + 1]);
+        kept[r] = refilter_range(g, h, prec, part, key, memo + (size_t)omp_get_thread_num() * REACH_MEMO,
+                                 nb * r / nr, nb * (r + 1) / nr, edge[r], edge[r + 1]);
     size_t w = 0;
     for (size_t r = 0; r < nr; r++) {
         const size_t shift = edge[r] - w;
@@ -105,11 +137,16 @@ long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int n
     uint64_t *own = g->dense ? bucket_cells(g) : NULL;
     if (g->dense && !own) return -1;
     const uint64_t *key = own ? own : g->parts[0].keys;
+    /* One memo table a thread, valid for the whole re-filter (the radii do not change in it). */
+    reach_t *memo = malloc((size_t)nthreads * REACH_MEMO * sizeof *memo);
+    if (!memo) { free(own); return -1; }
+    for (size_t m = 0; m < (size_t)nthreads * REACH_MEMO; m++) memo[m].hp = UINT32_MAX;
     long long dropped = 0;
     for (int p = 0; p < g->num_parts && dropped >= 0; p++) {
-        const long long d = refilter_part(g, h, prec, p, key, nthreads);
+        const long long d = refilter_part(g, h, prec, p, key, memo, nthreads);
         dropped = d < 0 ? -1 : dropped + d;
     }
     free(own);
+    free(memo);
     return dropped;
 }
