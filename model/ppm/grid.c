@@ -229,9 +229,9 @@ static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int
     if (*d == GRID_NO_BUCKET) *d = (*next)++;
 }
 
-/* An open-addressing table of packed cell keys; when it grows (counting), it doubles before it is
- * half full, so it stays within four times the distinct cells. */
-typedef struct { uint64_t *keys; size_t mask, distinct; int grow, failed; } hash_ctx_t;
+/* An open-addressing table of packed cell keys; it doubles before it is half full, so it stays
+ * within four times the distinct cells. */
+typedef struct { uint64_t *keys; size_t mask, distinct; int failed; } hash_ctx_t;
 
 static int hash_alloc(hash_ctx_t *c, size_t size)
 {
@@ -261,7 +261,7 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
     uint64_t key = grid_cell_key(ix, iy, iz);
     size_t sl = find_slot(c->keys, c->mask, key);
     if (c->keys[sl] != EMPTY_KEY) return;
-    if (c->grow && 2 * (c->distinct + 1) > c->mask + 1) {
+    if (2 * (c->distinct + 1) > c->mask + 1) {
         if (hash_double(c)) { c->failed = 1; return; }
         sl = find_slot(c->keys, c->mask, key);
     }
@@ -285,24 +285,19 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char 
         g->num_buckets = next ? next : 1;
         return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
     }
-    /* Count the distinct cells in a table that grows with them, then build the real one at twice
-     * the distinct count, so that look-ups probe a compact table. (A first table sized for every
-     * (hit point, cell) pair took 512 MB at 1600x1200.) */
-    size_t bound = 0;
-    for (int round = 0; round < 2; round++) {
-        size_t size = 1024;
-        while (size < 2 * bound) size *= 2;
-        hash_ctx_t c = {NULL, 0, 0, round == 0, 0};
-        if (hash_alloc(&c, size)) goto oom;
-        for (size_t i = 0; i < h->n && !c.failed; i++)
-            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
-        if (c.failed) { free(c.keys); goto oom; }
-        if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
-        if (round == 0) { free(c.keys); bound = c.distinct; continue; }
-        g->num_buckets = size;
-        if (alloc_parts(g, g->num_parts, size, err, errlen)) { free(c.keys); return -1; }
-        for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = c.keys;
-    }
+    /* Number the distinct cells in a table that grows with them (doubling before it is half
+     * full): it ends at the smallest power of two of at least twice the distinct cells, compact
+     * enough for the look-ups. (A first table sized for every (hit point, cell) pair took 512 MB
+     * at 1600x1200.) */
+    hash_ctx_t c = {NULL, 0, 0, 0};
+    if (hash_alloc(&c, 1024)) goto oom;
+    for (size_t i = 0; i < h->n && !c.failed; i++)
+        if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+    if (c.failed) { free(c.keys); goto oom; }
+    if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
+    g->num_buckets = c.mask + 1;
+    if (alloc_parts(g, g->num_parts, g->num_buckets, err, errlen)) { free(c.keys); return -1; }
+    for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = c.keys;
     return 0;
 oom:
     snprintf(err, errlen, "out of memory for the hit-point grid");
