@@ -19,7 +19,7 @@ $(OIIO_MODULE): model/image/image_io.cpp model/image/image_io.h model/image/imag
 	@mkdir -p $(@D)
 	$(CXX) $(CXXFLAGS) -fPIC -shared $< -o $@ -lOpenImageIO -lOpenImageIO_Util
 LIBPREE   := $(BUILD)/libpree.a
-LDLIBS    += -lassimp -lz -ljansson
+LDLIBS    += -lassimp -lpng -lz -ljansson
 
 UNIT_SRC  := $(wildcard tests/unit/test_*.c)
 UNIT_BIN  := $(UNIT_SRC:tests/unit/%.c=$(BUILD)/tests/%)

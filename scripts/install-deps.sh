@@ -30,7 +30,7 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
-      libassimp-dev libjansson-dev libnanoflann-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
+      libassimp-dev libjansson-dev libpng-dev libnanoflann-dev verilator iverilog yosys gtkwave gnuplot-nox zlib1g-dev python3 bc valgrind
       openimageio-tools chromium
       clang-14 libclang-rt-14-dev    # clang + libFuzzer: make fuzz, tests/checks/fuzz_short.sh
       openmpi-bin libopenmpi-dev)    # mpirun and mpicc: build/pree under MPI (docs/scale_out.md)

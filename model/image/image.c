@@ -1,14 +1,16 @@
 /* image.c: RGB image buffers, smallppm's tone map, the ASCII PPM writer, and atomic file writes
- * that choose the format by extension (PNG and EXR go through image_io.cpp).
+ * that choose the format by extension (8-bit PNG through libpng, png_write.c; EXR and every PNG
+ * read through image_io.cpp).
  *
  * Loading libOpenImageIO costs every process about 0.3 s of CPU in the dynamic loader (Debian's
  * build pulls in some 260 libraries). Built with -DPREE_OIIO_MODULE='"path/libpree_oiio.so"',
  * image_io.cpp is expected in that shared module instead of in the program, and is loaded on the
- * first PNG/EXR read or write, so runs that only touch PPM files never pay for it. */
+ * first EXR write or PNG/EXR read, so renders that write PPM or PNG never pay for it. */
 #include "image.h"
 #include "image_io.h"
 #include "file_in.h"
 #include "atomic_out.h"
+#include "png_write.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -203,6 +205,8 @@ static int write_atomic(const char *path, const char *ext, int w, int h, int is_
     int rc;
     if (!strcasecmp(ext, "ppm")) {
         rc = write_ppm_fd(fd, path, w, h, pixels, err, errlen);
+    } else if (!strcasecmp(ext, "png") && !is_float) {
+        rc = png_write_rgb8(fd, path, w, h, pixels, err, errlen);
     } else {
         close(fd);   /* OpenImageIO opens the file by name and truncates it */
         rc = PREE_OIIO_WRITE(path, tmp, ext, w, h, is_float, pixels, meta, err, errlen);
