@@ -21,7 +21,7 @@
 #include "render_dist.h"
 #include "render_session.h"
 
-#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time (render_round.c too) */
+#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
 
 long render_peak_rss_kb(void)
 {

@@ -70,11 +70,11 @@ struct render_session {
 int render_trace_block(render_session_t *s, uint64_t first, uint64_t count);
 void render_progress(render_session_t *s);
 int render_refilter_enabled(const render_session_t *s);
+int render_refilter_now(render_session_t *s);
 /* Screen the traced block (bb) with the session's T threads into their scratch lists (`lists`
  * of them), each kept candidate in list owner[hit point] (list 0 when owner is NULL). 0 or -1
  * (memory). */
 int render_screen_block(render_session_t *s, const uint16_t *owner, int lists);
-int render_refilter_now(render_session_t *s);
 
 /* More than one MPI rank (render_round.c): the partition (0, or -1 with err), a round of photon
  * blocks (1, 0 when ended, -1 with err), and every rank's state and counters to rank 0. */

@@ -298,7 +298,7 @@ static int screen_fp32(const hitpoints_t *h, double rs2, int skip_radius, const 
 
 /* Group part p's kept candidates of every screening thread by hit (counting sort). A hit's
  * candidates all come from one thread (one bucket, screened whole), in entry order. */
-static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthreads, int p, size_t n_hits)
+int update_batch_gather(update_scratch_t *out, update_scratch_t *all, int nthreads, int p, size_t n_hits)
 {
     size_t total = 0;
     for (int t = 0; t < nthreads; t++) total += all[t].list[p].n;
@@ -319,11 +319,6 @@ static int group_by_hit(update_scratch_t *out, update_scratch_t *all, int nthrea
     }
     out->n_sorted = total;
     return 0;
-}
-
-int update_batch_gather(update_scratch_t *out, update_scratch_t *all, int nthreads, int q, size_t n_hits)
-{
-    return group_by_hit(out, all, nthreads, q, n_hits);
 }
 
 void update_batch_sorted_at(const update_scratch_t *s, size_t i, uint32_t *hit, uint32_t *hp, double *v2)
@@ -389,7 +384,7 @@ int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b
                        update_scratch_t *all, int nthreads, update_stats_t *st)
 {
     update_scratch_t *s = &all[p];
-    if (group_by_hit(s, all, nthreads, p, b->n)) return -1;
+    if (update_batch_gather(s, all, nthreads, p, b->n)) return -1;
     const kept_t *k = s->sorted;
     unsigned long long accepted = 0;
     for (size_t i = 0; i < s->n_sorted; i++) {
