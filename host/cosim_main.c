@@ -42,18 +42,21 @@ typedef struct {
 /* A hit point's address in another rank's PREE (render_hp_address translated by cosim_part_t). */
 #define OTHER_RANK UINT32_MAX
 
-/* Under mpirun with more than one rank (docs/scale_out.md, "Multi-PREE co-simulation"): every
+/* Where each hit point lies in the PREE's memory (docs/pree_top.md, "Hit-point layout").
+ * Under mpirun with more than one rank (docs/scale_out.md, "Multi-PREE co-simulation"): every
  * rank runs the whole fp32 engine alone (opt.one_rank) and drives one PREE, which holds only
  * the hit points the rank owns, [lo[rank], lo[rank + 1]) of the photon pass's spatial order
  * (render_dist_lo: the distributed render's partition), at the local addresses i - lo[rank];
- * it is sent only the operations on them. Without mpirun (or with one rank): nranks 1, addr
- * the session's own addresses. */
+ * it is sent only the operations on them. Without mpirun (or with one rank): nranks 1, and
+ * addr i (--layout spatial, the default: the same spatial order) or the eye pass's order
+ * (--layout pixel: the model's own index after render_close). */
 typedef struct {
     int nranks, rank;
     size_t *lo;                 /* nranks + 1 */
     uint32_t *addr;             /* photon-pass index -> this PREE's address, or OTHER_RANK */
     uint32_t *model;            /* photon-pass index -> the model's index after render_close */
     size_t n_local;
+    int spatial;                /* addresses in the photon pass's spatial order (else model's) */
 } cosim_part_t;
 
 /* The RTL's words of one hit point and its pixel, as gathered from the ranks. */
@@ -100,6 +103,9 @@ static void cosim_usage(FILE *f)
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128; " WINDOW_16_STR " with\n"
         "                         16 PREUs)\n"
+        "  --layout L             hit-point addresses in the PREE: spatial (the engine's spatial\n"
+        "                         order, the default: a photon's candidates lie in a few address\n"
+        "                         runs, which the bank hash spreads) or pixel (the eye pass's order)\n"
         "  --model-only           the scheduler's cycle model alone (the RTL not clocked, no\n"
         "                         comparison): its predicted update pass in the --stats report\n"
         "  --gap P                idle cycles on the photon input with probability P (--axi: random\n"
@@ -201,7 +207,7 @@ static unsigned long long compare_hit_points(const hp_read_t *got, const cosim_p
         if (!dw) continue;
         if (*points < 5) {
             fprintf(stderr, "pree cosim: hit point %zu differs", j);
-            for (int r = 0; part && r < part->nranks; r++)
+            for (int r = 0; part && part->nranks > 1 && r < part->nranks; r++)
                 if (i >= part->lo[r] && i < part->lo[r + 1])
                     fprintf(stderr, " (rank %d's PREE, address %zu)", r, i - part->lo[r]);
             fprintf(stderr, ": state words RTL/model");
@@ -253,7 +259,7 @@ static void to_float(const double *rgb, size_t n, float *out)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST };
+       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST, OPT_LAYOUT };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -269,6 +275,7 @@ static const struct option cosim_longopts[] = {
     {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
     {"axi", no_argument, NULL, OPT_AXI},
     {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
+    {"layout", required_argument, NULL, OPT_LAYOUT},
     {NULL, 0, NULL, 0}
 };
 
@@ -276,6 +283,7 @@ static const struct option cosim_longopts[] = {
 typedef struct {
     const char *scene, *stats, *out, *trace;
     int reference, reorder, schedule, window, model_only, axi, pipefast;
+    int pixel_layout;                  /* --layout pixel */
     uint64_t win_from, win_to;         /* --trace-window */
     double gap;
 } cosim_args_t;
@@ -315,6 +323,11 @@ static int parse_args(int argc, char **argv, render_options_t *opt, cosim_args_t
         case OPT_MODEL_ONLY: c->model_only = 1; break;
         case OPT_AXI: c->axi = 1; break;
         case OPT_PIPE_FAST: c->pipefast = 1; break;
+        case OPT_LAYOUT:
+            if (strcmp(a.val, "spatial") && strcmp(a.val, "pixel"))
+                return cli_error(&a, "--layout: '%s' is not spatial or pixel", a.val);
+            c->pixel_layout = !strcmp(a.val, "pixel");
+            break;
         }
     }
     if (!(c->scene = cli_scene(&a))) return 2;
@@ -369,19 +382,49 @@ static unsigned long long image_words_differ(const uint32_t *Lr, const uint32_t 
     return diff;
 }
 
-/* The radiance pass in RTL (pixel words into Lr) and in the model (into Lm), in the same order:
- * the differing words (the first five printed), or -1 with a message printed. */
-static long long compare_image(cosim_drv_t *drv, const render_result_t *res, int preu, int pipefast, size_t npix,
-                               uint32_t *Lr, uint32_t *Lm)
+/* The fp32 model's radiance pass over n hit points in a PREE's address order (order[a]: the
+ * model's index of the hit point at address a; NULL: the model's own order, all of them), the
+ * order in which that PREE's ADISO-REC adds them: into L (zeroed here). 0 or -1 (memory). */
+static int model_radiance(const render_result_t *res, const uint32_t *order, size_t n, int preu, int pipefast,
+                          size_t npix, uint32_t *L)
+{
+    const hitpoints_t *h = &res->hp;
+    unsigned long long skipped;
+    memset(L, 0, npix * 3 * sizeof *L);
+    if (!order) return radiance_fp32_words(h, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L,
+                                           &skipped);
+    hitpoints_t sub = {.n = n};
+    sub.pixel = malloc((n ? n : 1) * sizeof *sub.pixel);
+    if (h->stable) sub.stable = malloc((n ? n : 1) * sizeof *sub.stable);
+    else sub.fp32 = malloc((n ? n : 1) * sizeof *sub.fp32);
+    int rc = -1;
+    if (sub.pixel && (sub.stable || sub.fp32)) {
+        for (size_t a = 0; a < n; a++) {
+            const size_t j = order[a];
+            sub.pixel[a] = h->pixel[j];
+            if (h->stable) sub.stable[a] = h->stable[j];
+            else sub.fp32[a] = h->fp32[j];
+        }
+        rc = radiance_fp32_words(&sub, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L, &skipped);
+    }
+    free(sub.pixel);
+    free(sub.stable);
+    free(sub.fp32);
+    return rc;
+}
+
+/* The radiance pass in RTL (pixel words into Lr) and in the model (into Lm), in the same order
+ * (order: as for model_radiance): the differing words (the first five printed), or -1 with a
+ * message printed. */
+static long long compare_image(cosim_drv_t *drv, const render_result_t *res, const uint32_t *order, int preu,
+                               int pipefast, size_t npix, uint32_t *Lr, uint32_t *Lm)
 {
     const uint32_t ne = preu_n_emitted(res->stats.photons_emitted);
     if (cosim_drv_radiance(drv, (uint32_t)res->hp.n, ne, npix, Lr)) {
         fprintf(stderr, "pree cosim: radiance pass: %s\n", cosim_drv_error(drv));
         return -1;
     }
-    unsigned long long skipped;
-    if (radiance_fp32_words(&res->hp, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), Lm,
-                            &skipped)) {
+    if (model_radiance(res, order, res->hp.n, preu, pipefast, npix, Lm)) {
         fprintf(stderr, "pree cosim: out of memory\n");
         return -1;
     }
@@ -490,7 +533,7 @@ static int part_open(cosim_part_t *p, size_t n, const uint32_t *perm)
     const size_t lo = p->lo[p->rank], hi = p->lo[p->rank + 1];
     for (size_t i = 0; i < n; i++) {
         p->model[i] = perm[i];
-        p->addr[i] = p->nranks == 1 ? perm[i] : i >= lo && i < hi ? (uint32_t)(i - lo) : OTHER_RANK;
+        p->addr[i] = !p->spatial ? perm[i] : i >= lo && i < hi ? (uint32_t)(i - lo) : OTHER_RANK;
     }
     p->n_local = hi - lo;
     return 0;
@@ -501,35 +544,6 @@ static void part_free(cosim_part_t *p)
     free(p->lo);
     free(p->addr);
     free(p->model);
-}
-
-/* The fp32 model's radiance pass over this rank's hit points in its PREE's order (address
- * order), as compare_image's over all: into L (zeroed here). 0 or -1 (memory). */
-static int part_model_radiance(const cosim_part_t *p, const render_result_t *res, int preu, int pipefast,
-                               size_t npix, uint32_t *L)
-{
-    const hitpoints_t *h = &res->hp;
-    const size_t n = p->n_local, lo = p->lo[p->rank];
-    hitpoints_t sub = {.n = n};
-    sub.pixel = malloc((n ? n : 1) * sizeof *sub.pixel);
-    if (h->stable) sub.stable = malloc((n ? n : 1) * sizeof *sub.stable);
-    else sub.fp32 = malloc((n ? n : 1) * sizeof *sub.fp32);
-    int rc = -1;
-    if (sub.pixel && (sub.stable || sub.fp32)) {
-        for (size_t a = 0; a < n; a++) {
-            const size_t j = p->model[lo + a];
-            sub.pixel[a] = h->pixel[j];
-            if (h->stable) sub.stable[a] = h->stable[j];
-            else sub.fp32[a] = h->fp32[j];
-        }
-        unsigned long long skipped;
-        memset(L, 0, npix * 3 * sizeof *L);
-        rc = radiance_fp32_words(&sub, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L, &skipped);
-    }
-    free(sub.pixel);
-    free(sub.stable);
-    free(sub.fp32);
-    return rc;
 }
 
 /* Under mpirun, after the update pass (every rank alike; fail: this rank's state so far): the
@@ -552,7 +566,7 @@ static int dist_gather(cosim_ctx_t *ctx, const cosim_part_t *p, const render_res
     else if (cosim_drv_radiance(ctx->drv, (uint32_t)p->n_local, preu_n_emitted(res->stats.photons_emitted), npix, part)) {
         fprintf(stderr, "pree cosim: rank %d: radiance pass: %s\n", p->rank, cosim_drv_error(ctx->drv));
         fail = 1;
-    } else if (part_model_radiance(p, res, preu, pipefast, npix, part + words)) {
+    } else if (model_radiance(res, p->model + lo, p->n_local, preu, pipefast, npix, part + words)) {
         fprintf(stderr, "pree cosim: out of memory\n");
         fail = 1;
     }
@@ -604,12 +618,13 @@ int pree_cmd_cosim(int argc, char **argv)
     scene_t scene;
     cosim_part_t part = {.nranks = render_dist_size(), .rank = render_dist_rank()};
     const int dist = part.nranks > 1;
-    if (dist && (c.model_only || c.trace || c.axi)) {
+    if (dist && (c.model_only || c.trace || c.axi || c.pixel_layout)) {
         if (part.rank == 0)
-            fprintf(stderr, "pree cosim: under mpirun with %d ranks: --model-only, --trace and --axi are not "
-                    "supported\n", part.nranks);
+            fprintf(stderr, "pree cosim: under mpirun with %d ranks: --model-only, --trace, --axi and --layout pixel "
+                    "are not supported\n", part.nranks);
         return 2;
     }
+    part.spatial = !c.pixel_layout;
     if (dist && part.rank > 0) opt.progress = 0;   /* rank 0 prints the engine's progress and the report */
     if (scene_load(c.scene, &scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
 
@@ -664,7 +679,7 @@ int pree_cmd_cosim(int argc, char **argv)
     }
     cosim_report_t rep = {.scene = c.scene, .width = opt.width, .height = opt.height, .datapath = dp,
                           .preu = opt.preu, .ppc = ppc, .model_only = c.model_only, .axi = c.axi,
-                          .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .update_window = win,
+                          .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .pixel_layout = c.pixel_layout, .update_window = win,
                           .alpha = (double)fp32_from_bits(alpha), .gap = c.gap};
     rep.sec_engine = now() - t_start;
     int fail = 0;
@@ -705,9 +720,10 @@ int pree_cmd_cosim(int argc, char **argv)
         if (part.rank > 0) { status = 0; goto out; }
         rep.hp_diff = compare_hit_points(got, &part, &res.hp, dp, &rep.hp_diff_points, &first_hp);
         rep.img_diff = image_words_differ(Lr, Lm, npix, 1);
-        unsigned long long skipped;
-        if (radiance_fp32_words(&res.hp, res.stats.photons_emitted, 0, opt.preu, cosim_radiance_depth(c.pipefast), L1,
-                                &skipped)) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
+        if (model_radiance(&res, part.model, res.hp.n, opt.preu, c.pipefast, npix, L1)) {
+            fprintf(stderr, "pree cosim: out of memory\n");
+            goto out;
+        }
         rep.img_diff_one_pree = image_words_differ(Lr, L1, npix, 0);
         for (size_t j = 0; j < npix * 3; j++) {   /* the ulps of binary32 sums in two orders */
             const long long d = (long long)(int32_t)Lr[j] - (long long)(int32_t)L1[j];
@@ -728,13 +744,13 @@ int pree_cmd_cosim(int argc, char **argv)
         got = malloc((res.hp.n ? res.hp.n : 1) * sizeof *got);
         if (!got) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
         for (size_t i = 0; i < res.hp.n; i++) cosim_drv_read_hp(ctx.drv, (uint32_t)i, &got[i].w, &got[i].px);
-        rep.hp_diff = compare_hit_points(got, NULL, &res.hp, dp, &rep.hp_diff_points, &first_hp);
+        rep.hp_diff = compare_hit_points(got, part.spatial ? &part : NULL, &res.hp, dp, &rep.hp_diff_points, &first_hp);
         Lr = calloc(npix * 3, sizeof *Lr);
         Lm = calloc(npix * 3, sizeof *Lm);
         rgb = malloc(npix * 3 * sizeof *rgb);
         if (!Lr || !Lm || !rgb) { fprintf(stderr, "pree cosim: out of memory\n"); goto out; }
         t0 = now();
-        long long img = compare_image(ctx.drv, &res, opt.preu, c.pipefast, npix, Lr, Lm);
+        long long img = compare_image(ctx.drv, &res, part.spatial ? part.model : NULL, opt.preu, c.pipefast, npix, Lr, Lm);
         if (img < 0) goto out;
         rep.img_diff = (unsigned long long)img;
         rep.sec_rad_rtl = now() - t0;

@@ -142,6 +142,7 @@ int cosim_report_write(const char *path, const cosim_report_t *r, char *err, siz
     json_t *o = json_object();
     json_set_str(o, "scene", r->scene);
     json_set_str(o, "datapath", r->datapath ? "stable" : "paper");
+    json_set_str(o, "hp_layout", r->pixel_layout ? "pixel" : "spatial");
     json_set_fields(o, r, run_fields, N(run_fields));
     json_object_set_new(o, "schedule", schedule(r));
     if (!r->model_only) json_set_fields(o, r, out_fields, N(out_fields));   /* nothing compared */

@@ -23,6 +23,7 @@ typedef struct {
     const char *scene;
     int width, height, datapath, preu, axi, reorder, window;
     int pipe_fast, update_window;   /* the RTL's PipeFast and its update hazard window */
+    int pixel_layout;               /* hit-point addresses in the eye pass's order (--layout pixel) */
     int ppc;                        /* the RTL's PhotonsPerCycle */
     int model_only;                 /* 1: the counters are the scheduler's cycle model's, no
                                        RTL ran and nothing was compared (pass is false) */

@@ -4,8 +4,9 @@
 # datapath, scheduled. The hit-point memory and the image must match the fp32 model word for word
 # (the image only when the model adds in the order of ADISO-REC's depth 59), the scheduler's cycle
 # model must predict the RTL's hazard, same-key and bank-conflict counts exactly, and the update
-# hazard window must be PipeFast 1's (46). Measured: 69,283 update cycles, utilization 0.99465,
-# hazard stalls 161 with B's skid slot (168 before it; PipeFast 0, cosim_schedule.sh: 69,033 cycles, 0.99825, 2).
+# hazard window must be PipeFast 1's (46). Measured (spatial layout, 64 x NumPreu lead): 69,251
+# update cycles, utilization 0.99511, hazard stalls 169, bank 6 (pixel layout, 64-photon queue:
+# 69,283, 0.99465, 161; PipeFast 0, cosim_schedule.sh: 68,999 cycles, 0.99874, 2).
 set -u
 cd "$(dirname "$0")/../.."
 pree=${BUILD:-build}/pree
