@@ -4,9 +4,8 @@
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)
 #   make sim-full      cornell3 320x240 / 768k photons whole-frame co-simulation for the PREU
-#                      counts in SIM_FULL_PREUS (default 4 8) and, with the stable datapath, in
-#                      SIM_FULL_STABLE_PREUS (default 4); 16 PREUs (SIM_FULL_16=1): the cycle
-#                      model's whole frame and the RTL at 160x120 / 200k photons; figures in
+#                      counts in SIM_FULL_PREUS (default 4 8 16) and, with the stable datapath,
+#                      in SIM_FULL_STABLE_PREUS (default 4); figures in
 #                      $(COSIM_DIR)/full_{p,s}*.json, a utilization line per run
 #   make wave TEST=t   an FST of one test (picoseconds, 8 ns a cycle) and a GTKWave save file that
 #                      opens on the first photon with markers on the first hazard stall and bank
@@ -150,30 +149,21 @@ sim-top: $(COSIM_BENCH) $(BUILD)/pree $(COSIM_PROGS)
 	  grep -E '"(hp|image)_words_differing"|preu_utilization|"ssim' $(COSIM_DIR)/small_s$$p.json; done
 
 # Whole frame: cornell3 320x240, 768k photons; the paper datapath with SIM_FULL_PREUS PREUs, the
-# stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS). 16 PREUs: the
-# whole frame by the scheduler's cycle model (--model-only, full_p16_model.json) and the RTL at
-# 160x120 / 200k photons (full_p16_small.json); the whole frame through the 16-PREU RTL takes
-# tens of CPU minutes. Each run prints its update-pass utilization and stall causes.
-SIM_FULL_PREUS ?= 4 8
+# stable one with SIM_FULL_STABLE_PREUS (models built for COSIM_STABLE_PREUS). Each run prints
+# its update-pass utilization and stall causes; the report beside it holds the scheduler's
+# cycle-model prediction (the 16-PREU whole frame: about 200 CPU seconds of RTL).
+SIM_FULL_PREUS ?= 4 8 16
 SIM_FULL_STABLE_PREUS ?= 4
-SIM_FULL_16 ?= 1
 SIM_FULL_SUMMARY = python3 -c 'import json,sys; d=json.load(open(sys.argv[1])); u=d["update"]; \
   print("%s: %d PREUs, %d photons a cycle: %d cycles, utilization %.4f%%, stalls %s" % (sys.argv[1], d["preu"], \
   d["photons_per_cycle"], u["cycles"], 100 * u["preu_utilization"], u["short_cycles_by_cause"]))'
-sim-full: $(BUILD)/pree $(foreach p,$(SIM_FULL_PREUS),$(BUILD)/pree-cosim-p$(p)) $(foreach p,$(SIM_FULL_STABLE_PREUS),$(BUILD)/pree-cosim-s$(p)) \
-          $(if $(filter 1,$(SIM_FULL_16)),$(BUILD)/pree-cosim-p16)
+sim-full: $(BUILD)/pree $(foreach p,$(SIM_FULL_PREUS),$(BUILD)/pree-cosim-p$(p)) $(foreach p,$(SIM_FULL_STABLE_PREUS),$(BUILD)/pree-cosim-s$(p))
 	@set -e; for m in $(SIM_FULL_PREUS:%=%:paper) $(SIM_FULL_STABLE_PREUS:%=%:stable); do \
 	  p=$${m%%:*}; d=$${m##*:}; tag=$${d:0:1}$$p; \
 	  echo "$(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json"; \
 	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu $$p --datapath $$d --quiet \
 	    --out $(COSIM_DIR)/full_$$tag.png --stats $(COSIM_DIR)/full_$$tag.json; cat $(COSIM_DIR)/full_$$tag.json; \
 	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_$$tag.json; done
-	@set -e; if [ "$(SIM_FULL_16)" = 1 ]; then \
-	  $(BUILD)/pree cosim scenes/cornell3 --preu 16 --model-only --quiet --stats $(COSIM_DIR)/full_p16_model.json; \
-	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_p16_model.json; \
-	  /usr/bin/time -f "wall %e s" $(BUILD)/pree cosim scenes/cornell3 --preu 16 --width 160 --height 120 --photons 200000 \
-	    --quiet --no-reference --stats $(COSIM_DIR)/full_p16_small.json; \
-	  $(SIM_FULL_SUMMARY) $(COSIM_DIR)/full_p16_small.json; fi
 
 # Waveforms: TEST=cosim or a bench scenario; opens with tb/cosim/pree_top.gtkw.
 TEST ?= mixed
