@@ -59,7 +59,8 @@ struct cosim_drv {
     cosim_sched_t *sched;
 };
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p);
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint64_t cycle,
+                uint32_t *p);
 
 static uint64_t next_rand(cosim_drv_t *d)
 {
@@ -288,8 +289,10 @@ static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, u
     d->ph_sent++;
 }
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p)
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint64_t cycle,
+                uint32_t *p)
 {
+    (void)cycle;   /* the wrapper's latency is not the top's: no lag is tracked */
     cosim_drv_t *d = user;
     (void)first;   /* one photon a cycle through the wrapper: every group is one photon */
     send(d, ph, hps, n, 0);

@@ -24,6 +24,7 @@ typedef struct {
     uint32_t paddr, n;
     uint64_t widx_end;                 /* the index-queue position after its entries */
     int first;                         /* it starts a scheduler group (one cycle's photons) */
+    uint64_t model_cycle;              /* scheduled: the cycle the scheduler's model took it in */
 } photon_entry_t;
 typedef struct { uint64_t start, end; } alloc_entry_t;
 
@@ -51,13 +52,17 @@ struct cosim_drv {
     uint32_t *cand;                    /* reorder scratch */
     cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
     int started;                       /* a photon has been offered */
+    uint64_t offset;                   /* scheduled: RTL cycle - model cycle of the first group */
+    int have_offset;
+    uint64_t groups_late, max_lag;     /* groups taken in another cycle than offset + the model's */
     int hung;                          /* a wait ran out (stuck): every later call fails */
     uint64_t *hp_cycle;                /* per hit point: cycle of its last operation's issue */
     size_t n_hp;
     uint64_t rad_from, rad_to;         /* the radiance pass's cycles */
 };
 
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p);
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint64_t cycle,
+                uint32_t *p);
 
 static uint64_t next_rand(cosim_drv_t *d)
 {
@@ -135,6 +140,19 @@ static void note_issue(cosim_drv_t *d, int k)
     }
 }
 
+/* The head group is taken in this cycle: against the scheduler's model, it should be taken
+ * a constant number of cycles later (the first group's), or the model's counts are not the
+ * RTL's (docs/pree_top.md, "Host protocol": the load port's lead). */
+static void note_lag(cosim_drv_t *d)
+{
+    const uint64_t c = cosim_rtl_cycle(d->rtl), m = d->pq[d->pq_head & (PQ_CAP - 1)].model_cycle;
+    if (!d->have_offset) { d->offset = c - m; d->have_offset = 1; return; }
+    if (c - m == d->offset) return;
+    d->groups_late++;
+    const uint64_t lag = c - m > d->offset ? c - m - d->offset : d->offset - (c - m);
+    if (lag > d->max_lag) d->max_lag = lag;
+}
+
 uint64_t cosim_drv_hp_cycle(const cosim_drv_t *d, uint32_t i)
 {
     return d->hp_cycle && i < d->n_hp ? d->hp_cycle[i] : UINT64_MAX;
@@ -196,6 +214,7 @@ static void pump(cosim_drv_t *d)
     /* ph_ready_o depends on the state only, so the value after the last edge holds now. */
     int take = in->ph_valid && d->ready;
     if (take) note_issue(d, k);
+    if (take && d->sched) note_lag(d);
     cosim_rtl_tick(d->rtl);
     if (take) d->pq_head += (uint64_t)k;
     d->ready = cosim_rtl_ph_ready(d->rtl);
@@ -250,7 +269,7 @@ static int stuck(cosim_drv_t *d, uint64_t *guard, const char *state)
 
 /* Place one photon (candidates in d->cand, in stream order) in the index table, queue its
  * entries and itself, and clock the model while the queues are long. Returns its p. */
-static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int first)
+static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int first, uint64_t model_cycle)
 {
     const uint32_t np = (uint32_t)d->opt.preu;
     /* Place it: p = prev_p - n (mod NumPreu), at or after the end of the last photon. */
@@ -287,6 +306,7 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int firs
     pe->n = (uint32_t)n;
     pe->widx_end = d->iq_tail;
     pe->first = first;
+    pe->model_cycle = model_cycle;
     d->ops += n;
     d->in->cnt_en = 1;
     guard = 0;
@@ -297,11 +317,12 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int firs
 }
 
 /* The scheduler's way out: candidates already in their stream order. */
-static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint32_t *p)
+static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint64_t cycle,
+                uint32_t *p)
 {
     cosim_drv_t *d = user;
     memcpy(d->cand, hps, n * sizeof *hps);
-    *p = (uint32_t)(send(d, ph, n, first) & (IDX_DEPTH - 1));
+    *p = (uint32_t)(send(d, ph, n, first, cycle) & (IDX_DEPTH - 1));
     return d->hung ? -1 : 0;
 }
 
@@ -319,7 +340,7 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
         return -1;
     }
     reorder(d, hps, n);
-    send(d, ph, n, 1);
+    send(d, ph, n, 1, 0);
     return d->hung ? -1 : 0;
 }
 
@@ -327,6 +348,9 @@ int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
 {
     if (!d->sched) return -1;
     cosim_sched_stats(d->sched, st);
+    st->lag_known = !d->opt.model_only;
+    st->groups_late = d->groups_late;
+    st->max_lag = d->max_lag;
     return 0;
 }
 

@@ -92,6 +92,10 @@ static json_t *schedule(const cosim_report_t *r)
     json_set_u64(o, "photons_moved", r->sched.moved);
     json_set_u64(o, "model_cycles", r->sched.cnt[CNT_CYC_UPD]);
     json_object_set_new(o, "model_short_cycles_by_cause", by_cause(r->sched.cnt, NULL));
+    if (r->sched.lag_known) {
+        json_set_u64(o, "groups_late", r->sched.groups_late);
+        json_set_u64(o, "max_lag_cycles", r->sched.max_lag);
+    }
     return o;
 }
 

@@ -217,7 +217,7 @@ static int take_one(cosim_sched_t *s, int64_t queued, uint32_t budget, int first
         uint32_t *t = s->best_ord; s->best_ord = s->ord; s->ord = t;
     }
     uint32_t p = 0;
-    if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, first, &p)) return -1;
+    if (s->emit(s->user, &sl->ph, s->best_ord, sl->n, first, s->sh->t, &p)) return -1;
     cosim_shadow_write_idx(s->sh, p, s->best_ord, sl->n);
     /* Predicted issue cycles, and the tail of the stream. */
     for (uint32_t k = 0; k < sl->n; k++) {

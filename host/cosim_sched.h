@@ -23,11 +23,12 @@
  * Everything is integer arithmetic: deterministic.
  *
  * API
- *   cosim_sched_new(opt, emit, user)  emit(user, ph, hps, n, first, &p) sends one photon (hps in
- *                            the chosen order; first: it starts the group of photons the model
- *                            took in one cycle, which the host must offer together, in one
- *                            cycle; the group ends where the next one starts or at the flush)
- *                            and returns 0 with its first index entry in p, or -1
+ *   cosim_sched_new(opt, emit, user)  emit(user, ph, hps, n, first, cycle, &p) sends one photon
+ *                            (hps in the chosen order; first: it starts the group of photons
+ *                            the model took in one cycle, cycle, which the host must offer
+ *                            together, in one cycle; the group ends where the next one starts
+ *                            or at the flush) and returns 0 with its first index entry in p,
+ *                            or -1
  *   cosim_sched_free(s)
  *   cosim_sched_add(s, ph, hps, n)  one photon hit (n >= 1) in photon order; emits as the window
  *                            fills. Returns 0 or -1 (out of memory, or emit failed).
@@ -53,10 +54,15 @@ typedef struct {
 typedef struct {
     uint64_t photons, moved;
     uint64_t cnt[COSIM_NCNT];   /* the cycle model's counters (cosim_rtl.h CNT_*) */
+    /* Filled by the host that drives the RTL (lag_known 1), not by cosim_sched_stats: groups
+     * the RTL took in another cycle than the model (after the first group's constant offset),
+     * and the most cycles one was late. Non-zero means the model's counts are not the RTL's. */
+    int lag_known;
+    uint64_t groups_late, max_lag;
 } cosim_sched_stats_t;
 
 typedef int (*cosim_sched_emit_fn)(void *user, const preu_photon_t *ph, const uint32_t *hps,
-                                   uint32_t n, int first, uint32_t *p);
+                                   uint32_t n, int first, uint64_t cycle, uint32_t *p);
 typedef struct cosim_sched cosim_sched_t;
 
 /* The default window (pending photons) for NumPreu PREUs: 128, and COSIM_SCHED_WINDOW_16 with 16.

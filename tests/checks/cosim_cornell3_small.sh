@@ -41,6 +41,8 @@ if u["preu_utilization"] < min_util:
 for k in ("hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a"):
     if s["model_short_cycles_by_cause"][k] != u["short_cycles_by_cause"][k]:
         bad.append("model %s %d, RTL %d" % (k, s["model_short_cycles_by_cause"][k], u["short_cycles_by_cause"][k]))
+if s.get("groups_late") != 0:   # the RTL took every group in the cycle the model planned
+    bad.append("groups taken off the model's cycle: %s (at most %s cycles)" % (s.get("groups_late"), s.get("max_lag_cycles")))
 print("  %d cycles, stalls %s; model %d cycles, stalls %s" % (u["cycles"], u["short_cycles_by_cause"],
       s["model_cycles"], s["model_short_cycles_by_cause"]))
 for b in bad:

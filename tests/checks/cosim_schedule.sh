@@ -46,6 +46,8 @@ if mode != "order":
         bad.append("utilization %.6f below %.6f" % (u["preu_utilization"], min_util))
     if s["photons_moved"] == 0:
         bad.append("no photon moved")
+    if s.get("groups_late") != 0:   # every group taken in the cycle the model planned
+        bad.append("groups taken off the model's cycle: %s (at most %s cycles)" % (s.get("groups_late"), s.get("max_lag_cycles")))
     for k in ("hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a"):
         if s["model_short_cycles_by_cause"][k] != u["short_cycles_by_cause"][k]:
             bad.append("model %s %d, RTL %d" % (k, s["model_short_cycles_by_cause"][k], u["short_cycles_by_cause"][k]))
