@@ -679,7 +679,8 @@ int pree_cmd_cosim(int argc, char **argv)
     }
     cosim_report_t rep = {.scene = c.scene, .width = opt.width, .height = opt.height, .datapath = dp,
                           .preu = opt.preu, .ppc = ppc, .model_only = c.model_only, .axi = c.axi,
-                          .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .pixel_layout = c.pixel_layout, .update_window = win,
+                          .reorder = c.reorder, .window = c.window, .pipe_fast = c.pipefast, .update_window = win,
+                          .pixel_layout = c.pixel_layout,
                           .alpha = (double)fp32_from_bits(alpha), .gap = c.gap};
     rep.sec_engine = now() - t_start;
     int fail = 0;
