@@ -59,10 +59,10 @@ static inline size_t key_slot(uint64_t key, size_t mask)
     return (size_t)key & mask;
 }
 
-static size_t find_slot(const uint64_t *keys, size_t mask, uint64_t key)
+static size_t find_slot(const grid_slot_t *table, size_t mask, uint64_t key)
 {
     size_t s = key_slot(key, mask);
-    while (keys[s] != key && keys[s] != EMPTY_KEY) s = (s + 1) & mask;
+    while (table[s].key != key && table[s].key != EMPTY_KEY) s = (s + 1) & mask;
     return s;
 }
 
@@ -219,7 +219,7 @@ static uint32_t dense_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz
 
 static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
-    return (uint32_t)find_slot(g->parts[0].keys, g->num_buckets - 1, grid_cell_key(ix, iy, iz));
+    return g->table[find_slot(g->table, g->table_mask, grid_cell_key(ix, iy, iz))].bucket;
 }
 
 /* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
@@ -230,14 +230,14 @@ static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int
 }
 
 /* An open-addressing table of packed cell keys; it doubles before it is half full, so it stays
- * within four times the distinct cells. */
-typedef struct { uint64_t *keys; size_t mask, distinct; int failed; } hash_ctx_t;
+ * within four times the distinct cells. A new cell's bucket is the count of cells before it. */
+typedef struct { grid_slot_t *table; size_t mask, distinct; int failed; } hash_ctx_t;
 
 static int hash_alloc(hash_ctx_t *c, size_t size)
 {
-    c->keys = malloc(size * sizeof(uint64_t));
-    if (!c->keys) return -1;
-    memset(c->keys, 0xFF, size * sizeof(uint64_t));
+    c->table = malloc(size * sizeof *c->table);
+    if (!c->table) return -1;
+    for (size_t sl = 0; sl < size; sl++) c->table[sl] = (grid_slot_t){EMPTY_KEY, GRID_NO_BUCKET};
     c->mask = size - 1;
     return 0;
 }
@@ -247,8 +247,8 @@ static int hash_double(hash_ctx_t *c)
     hash_ctx_t big = *c;
     if (hash_alloc(&big, 2 * (c->mask + 1))) return -1;
     for (size_t sl = 0; sl <= c->mask; sl++)
-        if (c->keys[sl] != EMPTY_KEY) big.keys[find_slot(big.keys, big.mask, c->keys[sl])] = c->keys[sl];
-    free(c->keys);
+        if (c->table[sl].key != EMPTY_KEY) big.table[find_slot(big.table, big.mask, c->table[sl].key)] = c->table[sl];
+    free(c->table);
     *c = big;
     return 0;
 }
@@ -259,19 +259,20 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
     hash_ctx_t *c = ctx;
     if (c->failed) return;
     uint64_t key = grid_cell_key(ix, iy, iz);
-    size_t sl = find_slot(c->keys, c->mask, key);
-    if (c->keys[sl] != EMPTY_KEY) return;
+    size_t sl = find_slot(c->table, c->mask, key);
+    if (c->table[sl].key != EMPTY_KEY) return;
     if (2 * (c->distinct + 1) > c->mask + 1) {
         if (hash_double(c)) { c->failed = 1; return; }
-        sl = find_slot(c->keys, c->mask, key);
+        sl = find_slot(c->table, c->mask, key);
     }
-    c->keys[sl] = key;
-    c->distinct++;
+    c->table[sl] = (grid_slot_t){key, (uint32_t)c->distinct++};
 }
 
-/* Number the distinct cells that listed hit points touch: in a dense array of every cell when
- * the grid is small enough, else in an open-addressing table of packed keys (size a power of
- * two, at least twice the distinct cells). Sets g->num_buckets and g->dense or parts' keys. */
+/* Number the distinct cells that listed hit points touch, in the order the hit points (in index
+ * order) first touch them: in a dense array of every cell when the grid is small enough, else in
+ * an open-addressing table of packed keys (size a power of two, at least twice the distinct
+ * cells). Sets g->num_buckets and g->dense or g->table. (The table's buckets were once its slots,
+ * in hash order: at 1600x1200 the screening then walked the hit points in random order.) */
 static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char *err, size_t errlen)
 {
     const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
@@ -293,12 +294,12 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char 
     if (hash_alloc(&c, 1024)) goto oom;
     for (size_t i = 0; i < h->n && !c.failed; i++)
         if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
-    if (c.failed) { free(c.keys); goto oom; }
-    if (stop_requested(g->stop)) { free(c.keys); snprintf(err, errlen, STOP_MESSAGE); return -1; }
-    g->num_buckets = c.mask + 1;
-    if (alloc_parts(g, g->num_parts, g->num_buckets, err, errlen)) { free(c.keys); return -1; }
-    for (int p = 0; p < g->num_parts; p++) g->parts[p].keys = c.keys;
-    return 0;
+    g->table = c.table;   /* grid_free frees it on every path from here */
+    g->table_mask = c.mask;
+    if (c.failed) goto oom;
+    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
+    g->num_buckets = c.distinct ? c.distinct : 1;
+    return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
 oom:
     snprintf(err, errlen, "out of memory for the hit-point grid");
     return -1;
@@ -390,14 +391,14 @@ int grid_build(grid_t *g, grid_kind_t kind, const hitpoints_t *h, double r0, int
 void grid_free(grid_t *g)
 {
     if (g->parts) {
-        if (g->kind == GRID_CELLS && g->num_parts > 0) free(g->parts[0].keys);
-        free(g->dense);
         for (int p = 0; p < g->num_parts; p++) {
             free(g->parts[p].start);
             free(g->parts[p].hp);
         }
     }
     free(g->parts);
+    free(g->dense);
+    free(g->table);
     memset(g, 0, sizeof *g);
 }
 
@@ -414,10 +415,9 @@ uint32_t grid_bucket(const grid_t *g, vec3 x)
         int64_t c[3];
         if (!grid_cell_coords(g, x, c)) return GRID_NO_BUCKET;
         if (g->dense) return g->dense[grid_dense_index(g, c[0], c[1], c[2])];
-        uint64_t key = grid_cell_key(c[0], c[1], c[2]);
-        const uint64_t *keys = g->parts[0].keys;
-        size_t s = find_slot(keys, g->num_buckets - 1, key);
-        return keys[s] == key ? (uint32_t)s : GRID_NO_BUCKET;
+        const uint64_t key = grid_cell_key(c[0], c[1], c[2]);
+        const grid_slot_t *slot = &g->table[find_slot(g->table, g->table_mask, key)];
+        return slot->key == key ? slot->bucket : GRID_NO_BUCKET;
     }
     default:
         return 0;

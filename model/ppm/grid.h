@@ -6,7 +6,9 @@
  *                  coincide and a hit point may stand in one bucket twice. Nothing is skipped.
  *   GRID_CELLS     the default: exact cells of side 2*r0 (no shared buckets, a hit point at most
  *                  once per cell), hit points of weight zero left out, and a hit point listed
- *                  in every cell its safe radius touches (see grid_safe_radius).
+ *                  in every cell its safe radius touches (see grid_safe_radius). Buckets are
+ *                  numbered in the order the hit points (held in spatial order) first touch
+ *                  their cells, so neighbouring buckets hold neighbouring hit points.
  *   GRID_BRUTE     every hit point is a candidate for every photon: the test oracle.
  * Part p holds only the hit points that part owns (grid_owner), in the same relative order,
  * so threads update disjoint hit points and each hit point sees photons in index order. */
@@ -42,9 +44,15 @@ typedef enum { GRID_CELLS = 0, GRID_SMALLPPM = 1, GRID_BRUTE = 2 } grid_kind_t;
 typedef struct {
     uint32_t *start;       /* bucket b's entries are [start[b] .. start[b+1]) */
     uint32_t *hp;          /* hit-point index (GRID_ENTRY_PAD zeros beyond the last) */
-    uint64_t *keys;        /* GRID_CELLS: packed cell key per bucket (open addressing) */
     size_t num_entries;
 } grid_part_t;
+
+/* A slot of the hashed cell table: a packed cell key (UINT64_MAX: empty) and its bucket. Key and
+ * bucket share a slot so that a photon's look-up reads one line. */
+typedef struct {
+    uint64_t key;
+    uint32_t bucket;
+} grid_slot_t;
 
 /* One bucket's candidates in one part: hit points hot[hp[0 .. count-1]]. */
 typedef struct {
@@ -57,8 +65,10 @@ typedef struct {
     grid_kind_t kind;
     int num_parts;
     grid_part_t *parts;
-    size_t num_buckets;      /* smallppm: number of hit points; cells: distinct cells (dense) or table size */
+    size_t num_buckets;      /* smallppm: number of hit points; cells: distinct cells */
     uint32_t *dense;         /* GRID_CELLS with at most GRID_DENSE_MAX cells: cell -> bucket or GRID_NO_BUCKET */
+    grid_slot_t *table;      /* GRID_CELLS with more cells: open addressing on the packed cell key */
+    size_t table_mask;       /* table size - 1 (a power of two, at least twice the distinct cells) */
     vec3 bmin;               /* cell origin */
     double inv_cell;         /* 1 / cell side */
     int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */

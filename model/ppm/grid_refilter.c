@@ -12,13 +12,18 @@
 #include "fp32_ops.h"
 #include "grid_refilter.h"
 
-/* The cell of every dense-numbered bucket, as a packed key (UINT64_MAX: no cell). NULL when out
- * of memory. (A hashed grid's buckets are its table's slots, whose keys it holds already.) */
+/* The cell of every bucket, as a packed key (UINT64_MAX: no cell), from the dense map or the
+ * hashed table. NULL when out of memory. */
 static uint64_t *bucket_cells(const grid_t *g)
 {
     uint64_t *key = malloc(g->num_buckets * sizeof *key);
     if (!key) return NULL;
     for (size_t b = 0; b < g->num_buckets; b++) key[b] = UINT64_MAX;
+    if (g->table) {
+        for (size_t sl = 0; sl <= g->table_mask; sl++)
+            if (g->table[sl].bucket != GRID_NO_BUCKET) key[g->table[sl].bucket] = g->table[sl].key;
+        return key;
+    }
     for (int64_t iz = 0; iz <= g->cell_max[2]; iz++)
         for (int64_t iy = 0; iy <= g->cell_max[1]; iy++)
             for (int64_t ix = 0; ix <= g->cell_max[0]; ix++) {
@@ -134,19 +139,18 @@ static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec
 long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int nthreads)
 {
     if (g->kind != GRID_CELLS || !g->parts) return 0;
-    uint64_t *own = g->dense ? bucket_cells(g) : NULL;
-    if (g->dense && !own) return -1;
-    const uint64_t *key = own ? own : g->parts[0].keys;
+    uint64_t *key = bucket_cells(g);
+    if (!key) return -1;
     /* One memo table a thread, valid for the whole re-filter (the radii do not change in it). */
     reach_t *memo = malloc((size_t)nthreads * REACH_MEMO * sizeof *memo);
-    if (!memo) { free(own); return -1; }
+    if (!memo) { free(key); return -1; }
     for (size_t m = 0; m < (size_t)nthreads * REACH_MEMO; m++) memo[m].hp = UINT32_MAX;
     long long dropped = 0;
     for (int p = 0; p < g->num_parts && dropped >= 0; p++) {
         const long long d = refilter_part(g, h, prec, p, key, memo, nthreads);
         dropped = d < 0 ? -1 : dropped + d;
     }
-    free(own);
+    free(key);
     free(memo);
     return dropped;
 }
