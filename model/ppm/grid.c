@@ -402,6 +402,14 @@ void grid_free(grid_t *g)
     memset(g, 0, sizeof *g);
 }
 
+void grid_prefetch_bucket(const grid_t *g, vec3 x)
+{
+    int64_t c[3];
+    if (g->kind != GRID_CELLS || !grid_cell_coords(g, x, c)) return;
+    if (g->dense) __builtin_prefetch(&g->dense[grid_dense_index(g, c[0], c[1], c[2])]);
+    else __builtin_prefetch(&g->table[key_slot(grid_cell_key(c[0], c[1], c[2]), g->table_mask)]);
+}
+
 uint32_t grid_bucket(const grid_t *g, vec3 x)
 {
     switch (g->kind) {

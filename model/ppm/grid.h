@@ -107,6 +107,10 @@ void grid_free(grid_t *g);
  * can be near x (GRID_CELLS only: an empty cell). */
 uint32_t grid_bucket(const grid_t *g, vec3 x);
 
+/* Start fetching what grid_bucket(g, x) will read (GRID_CELLS: the cell's map entry or table
+ * slot), so that a run of look-ups overlaps its cache misses. */
+void grid_prefetch_bucket(const grid_t *g, vec3 x);
+
 /* Part p's candidates in bucket b (not GRID_NO_BUCKET). */
 static inline grid_cands_t grid_bucket_cands(const grid_t *g, int p, uint32_t b)
 {

@@ -68,6 +68,9 @@ static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
     return hitpoints_drop_weight(h);
 }
 
+/* Photon hits whose cell look-up is fetched ahead of the one being made. */
+#define BUCKET_AHEAD 8
+
 int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
 {
     const scene_t *scene = s->scene;
@@ -92,19 +95,20 @@ int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
             if (stop_requested(stop)) { stopped = 1; break; }
             /* Under MPI the previous round's exchange progresses while this one traces. */
             if (s->pending && (i & 63) == 0 && omp_get_thread_num() == 0) render_dist_exchange_poll(s->pending);
-            size_t before = out->n;
             if (photon_trace(scene, tr, i, out)) { failed = 1; break; }
-            /* Find each hit's bucket once, here in parallel; with skips, drop the hits
-             * that reach no hit point's cell. */
-            size_t keep = before;
-            for (size_t k = before; k < out->n; k++) {
-                photon_hit_t *ph = &out->hits[k];
-                ph->bucket = grid_bucket(g, ph->x);
-                if (skip && ph->bucket == GRID_NO_BUCKET) { no_cell++; continue; }
-                out->hits[keep++] = *ph;
-            }
-            out->n = keep;
         }
+        /* Find each hit's bucket once, here in parallel, the look-ups BUCKET_AHEAD hits ahead
+         * already fetched (the cell table of a big frame is far larger than the caches); with
+         * skips, drop the hits that reach no hit point's cell. */
+        size_t keep = 0;
+        for (size_t k = 0; k < out->n && !failed && !stopped; k++) {
+            if (k + BUCKET_AHEAD < out->n) grid_prefetch_bucket(g, out->hits[k + BUCKET_AHEAD].x);
+            photon_hit_t *ph = &out->hits[k];
+            ph->bucket = grid_bucket(g, ph->x);
+            if (skip && ph->bucket == GRID_NO_BUCKET) { no_cell++; continue; }
+            out->hits[keep++] = *ph;
+        }
+        if (!failed && !stopped) out->n = keep;
         bb->chunk[c] = local;
     }
     if (failed) return -1;
