@@ -41,7 +41,7 @@ $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1
 	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2)) -DAXI_MODEL=Vpree_axi_$(2)$(1) \
 	  -DAXI_MODEL_H='"Vpree_axi_$(2)$(1).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(filter s,$(2)),1,0) \
 	  -DAXI_HPB=$(COSIM_HPB_$(1)) -c $$< -o $$@
-$(BUILD)/pree-cosim-axi-$(2)$(1): $(HOST_DIR)/cosim_main_axi.o $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
+$(BUILD)/pree-cosim-axi-$(2)$(1): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
                           $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
                           $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
