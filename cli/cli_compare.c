@@ -167,6 +167,41 @@ static const struct option compare_longopts[] = {
     {NULL, 0, NULL, 0}
 };
 
+/* The figures on stdout, as lines "key value" or (json) one JSON object: the metrics m, FLIP's
+ * mean (flip_mean, with --flip), the maps' scale tops (figs, with --diff). 0, or -1 when they
+ * cannot be written. */
+static int print_figures(char **files, const pree_image_t *a, const pree_metrics_t *m, const double *flip_mean,
+                         const diff_figs_t *figs, int json)
+{
+    const char *keys[11] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs"};
+    double vals[11] = {m->peak, m->ssim, m->snr_db, m->psnr_db, m->rmse, m->max_abs};
+    size_t nkeys = 6;
+    if (flip_mean) { keys[nkeys] = "flip"; vals[nkeys++] = *flip_mean; }
+    if (figs->valid) {
+        keys[nkeys] = "rel_max"; vals[nkeys++] = figs->rel_max;
+        keys[nkeys] = "ssim_min"; vals[nkeys++] = figs->ssim_min;
+        if (flip_mean) { keys[nkeys] = "flip_max"; vals[nkeys++] = figs->flip_max; }
+    }
+    if (json) {
+        json_t *fig = json_object();
+        json_set_str(fig, "image_a", files[0]);
+        json_set_str(fig, "image_b", files[1]);
+        json_set_u64(fig, "width", (uint64_t)a->width);
+        json_set_u64(fig, "height", (uint64_t)a->height);
+        for (size_t k = 0; k < nkeys; k++)   /* JSON has no infinity */
+            json_object_set_new(fig, keys[k], isinf(vals[k]) ? json_string(vals[k] > 0 ? "inf" : "-inf")
+                                                           : json_real(vals[k]));
+        return json_file_print(stdout, fig) ? -1 : 0;
+    }
+    char num[64];
+    printf("width %d\nheight %d\n", a->width, a->height);
+    for (size_t k = 0; k < nkeys; k++) {
+        fmt_num(num, sizeof num, vals[k]);
+        printf("%s %s\n", keys[k], num);
+    }
+    return 0;
+}
+
 int pree_cmd_compare(int argc, char **argv)
 {
     const char *diff = NULL;
@@ -222,33 +257,9 @@ int pree_cmd_compare(int argc, char **argv)
         goto done;
     }
 
-    /* The figures: the metrics, FLIP with --flip, the maps' scale tops with --diff. */
-    const char *keys[11] = {"peak", "ssim", "snr_db", "psnr_db", "rmse", "max_abs"};
-    double vals[11] = {m.peak, m.ssim, m.snr_db, m.psnr_db, m.rmse, m.max_abs};
-    size_t nkeys = 6;
-    if (want_flip) { keys[nkeys] = "flip"; vals[nkeys++] = flip_mean; }
-    if (figs.valid) {
-        keys[nkeys] = "rel_max"; vals[nkeys++] = figs.rel_max;
-        keys[nkeys] = "ssim_min"; vals[nkeys++] = figs.ssim_min;
-        if (want_flip) { keys[nkeys] = "flip_max"; vals[nkeys++] = figs.flip_max; }
-    }
-    char num[64];
-    if (json) {
-        json_t *fig = json_object();
-        json_set_str(fig, "image_a", files[0]);
-        json_set_str(fig, "image_b", files[1]);
-        json_set_u64(fig, "width", (uint64_t)a.width);
-        json_set_u64(fig, "height", (uint64_t)a.height);
-        for (size_t k = 0; k < nkeys; k++)   /* JSON has no infinity */
-            json_object_set_new(fig, keys[k], isinf(vals[k]) ? json_string(vals[k] > 0 ? "inf" : "-inf")
-                                                           : json_real(vals[k]));
-        if (json_file_print(stdout, fig)) { fprintf(stderr, "pree compare: cannot write the figures\n"); goto done; }
-    } else {
-        printf("width %d\nheight %d\n", a.width, a.height);
-        for (size_t k = 0; k < nkeys; k++) {
-            fmt_num(num, sizeof num, vals[k]);
-            printf("%s %s\n", keys[k], num);
-        }
+    if (print_figures(files, &a, &m, want_flip ? &flip_mean : NULL, &figs, json)) {
+        fprintf(stderr, "pree compare: cannot write the figures\n");
+        goto done;
     }
     if (fflush(stdout) != 0) { fprintf(stderr, "pree compare: cannot write the figures\n"); goto done; }
     rc = 0;
