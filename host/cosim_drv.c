@@ -328,19 +328,12 @@ static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32
 
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
 {
-    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
-    if (n > MAX_CAND) {
-        snprintf(d->err, sizeof d->err, "a photon with %zu candidates (at most %u)", n, MAX_CAND);
-        return -1;
+    const int r = cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, d->err, sizeof d->err);
+    if (r < 0) return -1;
+    if (r == 1) {
+        reorder(d, hps, n);
+        send(d, ph, n, 1, 0);
     }
-    if (d->hung) return -1;
-    if (d->sched) {
-        if (cosim_sched_add(d->sched, ph, hps, (uint32_t)n) == 0) return d->hung ? -1 : 0;
-        if (!d->hung) snprintf(d->err, sizeof d->err, "photon scheduler: out of memory");
-        return -1;
-    }
-    reorder(d, hps, n);
-    send(d, ph, n, 1, 0);
     return d->hung ? -1 : 0;
 }
 

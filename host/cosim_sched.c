@@ -1,6 +1,7 @@
 /* cosim_sched.c: the co-simulation host's photon scheduler (see cosim_sched.h). */
 #include "cosim_sched.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cosim_shadow.h"
@@ -316,4 +317,19 @@ int cosim_sched_flush(cosim_sched_t *s)
     while (!cosim_shadow_idle(s->sh))
         if (step(s)) return -1;
     return 0;
+}
+
+int cosim_sched_offer(cosim_sched_t *s, int hung, size_t max_cand, const preu_photon_t *ph, const uint32_t *hps,
+                      size_t n, char *err, size_t errlen)
+{
+    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
+    if (n > max_cand) {
+        snprintf(err, errlen, "a photon with %zu candidates (at most %zu)", n, max_cand);
+        return -1;
+    }
+    if (hung) return -1;
+    if (!s) return 1;
+    if (cosim_sched_add(s, ph, hps, (uint32_t)n) == 0) return 0;
+    snprintf(err, errlen, "photon scheduler: out of memory");
+    return -1;
 }

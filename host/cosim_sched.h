@@ -81,6 +81,13 @@ static inline int cosim_sched_default_window(int preu)
 cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_fn emit, void *user);
 void cosim_sched_free(cosim_sched_t *s);
 int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *hps, uint32_t n);
+
+/* A photon offered to a driver (cosim_drv.c, cosim_axi.c), with its n candidates: 1 when the
+ * driver sends it itself (s NULL: no scheduler), 0 when the scheduler took it or it has none, -1
+ * when it cannot be taken: more than max_cand candidates or no memory (err says why), or the
+ * RTL hung before (hung; err already says why). */
+int cosim_sched_offer(cosim_sched_t *s, int hung, size_t max_cand, const preu_photon_t *ph, const uint32_t *hps,
+                      size_t n, char *err, size_t errlen);
 int cosim_sched_flush(cosim_sched_t *s);
 void cosim_sched_stats(const cosim_sched_t *s, cosim_sched_stats_t *st);
 
