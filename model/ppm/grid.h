@@ -68,7 +68,7 @@ typedef struct {
     size_t num_buckets;      /* smallppm: number of hit points; cells: distinct cells */
     uint32_t *dense;         /* GRID_CELLS with at most GRID_DENSE_MAX cells: cell -> bucket or GRID_NO_BUCKET */
     grid_slot_t *table;      /* GRID_CELLS with more cells: open addressing on the packed cell key */
-    size_t table_mask;       /* table size - 1 (a power of two, at least twice the distinct cells) */
+    size_t table_mask;       /* table size - 1 (a power of two, at least 4/3 of the distinct cells) */
     vec3 bmin;               /* cell origin */
     double inv_cell;         /* 1 / cell side */
     int64_t cell_max[3];     /* GRID_CELLS: valid cell coordinates are 0 .. cell_max */
