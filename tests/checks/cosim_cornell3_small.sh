@@ -29,25 +29,20 @@ for cfg in "4" "8" "16" "4 --datapath stable" "4 --datapath stable --alpha 0.5";
   if [ "$cfg" = 8 ] || [ "$cfg" = 16 ]; then
     min=MIN_UTIL_$p
     if ! python3 - "$j" "$p" "${!min}" <<'EOF'
-import json, sys
-d = json.load(open(sys.argv[1]))
+import sys
+sys.path.insert(0, "tests/lib")
+from cosim_report import load, utilization_at_least, model_predicts, finish
+d = load(sys.argv[1])
 p, min_util = int(sys.argv[2]), float(sys.argv[3])
 u, s = d["update"], d["schedule"]
 bad = []
 if d["photons_per_cycle"] != p // 4:
     bad.append("photons_per_cycle %d, expected %d" % (d["photons_per_cycle"], p // 4))
-if u["preu_utilization"] < min_util:
-    bad.append("utilization %.6f below %.6f" % (u["preu_utilization"], min_util))
-for k in ("hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a"):
-    if s["model_short_cycles_by_cause"][k] != u["short_cycles_by_cause"][k]:
-        bad.append("model %s %d, RTL %d" % (k, s["model_short_cycles_by_cause"][k], u["short_cycles_by_cause"][k]))
-if s.get("groups_late") != 0:   # the RTL took every group in the cycle the model planned
-    bad.append("groups taken off the model's cycle: %s (at most %s cycles)" % (s.get("groups_late"), s.get("max_lag_cycles")))
+utilization_at_least(d, min_util, bad)
+model_predicts(d, bad)
 print("  %d cycles, stalls %s; model %d cycles, stalls %s" % (u["cycles"], u["short_cycles_by_cause"],
       s["model_cycles"], s["model_short_cycles_by_cause"]))
-for b in bad:
-    print("FAIL:", b)
-sys.exit(1 if bad else 0)
+finish(bad)
 EOF
     then echo "FAIL (--preu $cfg, wide intake); reproduce: $cmd"; fail=1; fi
   fi

@@ -17,23 +17,18 @@ j=$dir/check_deep.json
 cmd="$pree cosim scenes/cornell3 --width 64 --height 48 --photons 20000 --preu 4 --pipe-fast --quiet --no-reference --stats $j"
 if ! $cmd; then echo "FAIL: $cmd"; exit 1; fi
 python3 - "$j" "$MIN_UTIL" <<'EOF' || { echo "FAIL; reproduce: $cmd"; exit 1; }
-import json, sys
-d = json.load(open(sys.argv[1]))
-u, s = d["update"], d["schedule"]
+import sys
+sys.path.insert(0, "tests/lib")
+from cosim_report import load, words_match, utilization_at_least, model_predicts, finish
+d = load(sys.argv[1])
+u = d["update"]
 bad = []
-if d["hp_words_differing"] != 0 or d["image_words_differing"] != 0 or not d["pass"]:
-    bad.append("hit-point words differing %d, image words differing %d"
-               % (d["hp_words_differing"], d["image_words_differing"]))
+words_match(d, bad)
 if d["pipe_fast"] != 1 or d["update_window"] != 46:
     bad.append("pipe_fast %d, update window %d (expected 1, 46)" % (d["pipe_fast"], d["update_window"]))
-if u["preu_utilization"] < float(sys.argv[2]):
-    bad.append("utilization %.6f below %s" % (u["preu_utilization"], sys.argv[2]))
-for k in ("hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a"):
-    if s["model_short_cycles_by_cause"][k] != u["short_cycles_by_cause"][k]:
-        bad.append("model %s %d, RTL %d" % (k, s["model_short_cycles_by_cause"][k], u["short_cycles_by_cause"][k]))
+utilization_at_least(d, float(sys.argv[2]), bad)
+model_predicts(d, bad)
 print("PipeFast 1: %d update cycles, utilization %.6f, stalls %s" % (u["cycles"], u["preu_utilization"],
       u["short_cycles_by_cause"]))
-for b in bad:
-    print("FAIL:", b)
-sys.exit(1 if bad else 0)
+finish(bad)
 EOF

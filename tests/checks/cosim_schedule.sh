@@ -26,13 +26,14 @@ for mode in schedule order pixel; do
   cmd="$pree cosim $base $extra --stats $j"
   if ! $cmd; then echo "FAIL: $cmd"; fail=1; continue; fi
   if ! python3 - "$j" "$mode" "$MIN_UTIL" <<'EOF'
-import json, sys
+import sys
+sys.path.insert(0, "tests/lib")
+from cosim_report import load, words_match, utilization_at_least, model_predicts, finish
 path, mode, min_util = sys.argv[1], sys.argv[2], float(sys.argv[3])
-d = json.load(open(path))
+d = load(path)
 u = d["update"]
 bad = []
-if d["hp_words_differing"] != 0 or d["image_words_differing"] != 0 or not d["pass"]:
-    bad.append("differing words: hit points %d, image %d" % (d["hp_words_differing"], d["image_words_differing"]))
+words_match(d, bad)
 print("%s: %d operations in %d cycles, utilization %.6f, stalls %s" %
       (mode, u["operations"], u["cycles"], u["preu_utilization"], u["short_cycles_by_cause"]))
 want_layout = "pixel" if mode == "pixel" else "spatial"
@@ -42,21 +43,13 @@ if mode != "order":
     s = d["schedule"]
     print("  photons moved %d of %d; model: %d cycles, stalls %s" %
           (s["photons_moved"], s["photons"], s["model_cycles"], s["model_short_cycles_by_cause"]))
-    if u["preu_utilization"] < min_util:
-        bad.append("utilization %.6f below %.6f" % (u["preu_utilization"], min_util))
+    utilization_at_least(d, min_util, bad)
     if s["photons_moved"] == 0:
         bad.append("no photon moved")
-    if s.get("groups_late") != 0:   # every group taken in the cycle the model planned
-        bad.append("groups taken off the model's cycle: %s (at most %s cycles)" % (s.get("groups_late"), s.get("max_lag_cycles")))
-    for k in ("hazard_in_flight", "same_key_in_lanes", "bank_conflict_b", "bank_conflict_a"):
-        if s["model_short_cycles_by_cause"][k] != u["short_cycles_by_cause"][k]:
-            bad.append("model %s %d, RTL %d" % (k, s["model_short_cycles_by_cause"][k], u["short_cycles_by_cause"][k]))
-else:
-    if d["schedule"] is not None:
-        bad.append("--no-schedule still scheduled")
-for b in bad:
-    print("FAIL:", b)
-sys.exit(1 if bad else 0)
+    model_predicts(d, bad)
+elif d["schedule"] is not None:
+    bad.append("--no-schedule still scheduled")
+finish(bad)
 EOF
   then echo "FAIL ($mode); reproduce: $cmd"; fail=1; fi
 done
