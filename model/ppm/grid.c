@@ -59,11 +59,16 @@ static inline size_t key_slot(uint64_t key, size_t mask)
     return (size_t)key & mask;
 }
 
-static size_t find_slot(const grid_slot_t *table, size_t mask, uint64_t key)
+/* The slot of key, or the empty slot where it would go, probing linearly from slot s. */
+static size_t probe_from(const grid_slot_t *table, size_t mask, uint64_t key, size_t s)
 {
-    size_t s = key_slot(key, mask);
     while (table[s].key != key && table[s].key != EMPTY_KEY) s = (s + 1) & mask;
     return s;
+}
+
+static size_t find_slot(const grid_slot_t *table, size_t mask, uint64_t key)
+{
+    return probe_from(table, mask, key, key_slot(key, mask));
 }
 
 static int alloc_parts(grid_t *g, int num_parts, size_t buckets, char *err, size_t errlen)
@@ -403,32 +408,45 @@ void grid_free(grid_t *g)
     memset(g, 0, sizeof *g);
 }
 
-void grid_prefetch_bucket(const grid_t *g, vec3 x)
+grid_probe_t grid_probe_begin(const grid_t *g, vec3 x)
 {
-    int64_t c[3];
-    if (g->kind != GRID_CELLS || !grid_cell_coords(g, x, c)) return;
-    if (g->dense) __builtin_prefetch(&g->dense[grid_dense_index(g, c[0], c[1], c[2])]);
-    else __builtin_prefetch(&g->table[key_slot(grid_cell_key(c[0], c[1], c[2]), g->table_mask)]);
-}
-
-uint32_t grid_bucket(const grid_t *g, vec3 x)
-{
+    grid_probe_t p = {0, 0, 0};
     switch (g->kind) {
     case GRID_SMALLPPM: {
         uint32_t ix = abs_u32(trunc_i32((x.x - g->bmin.x) * g->inv_cell));
         uint32_t iy = abs_u32(trunc_i32((x.y - g->bmin.y) * g->inv_cell));
         uint32_t iz = abs_u32(trunc_i32((x.z - g->bmin.z) * g->inv_cell));
-        return (uint32_t)smallppm_bucket(ix, iy, iz, g->num_buckets);
+        p.at = smallppm_bucket(ix, iy, iz, g->num_buckets);
+        return p;
     }
     case GRID_CELLS: {
         int64_t c[3];
-        if (!grid_cell_coords(g, x, c)) return GRID_NO_BUCKET;
-        if (g->dense) return g->dense[grid_dense_index(g, c[0], c[1], c[2])];
-        const uint64_t key = grid_cell_key(c[0], c[1], c[2]);
-        const grid_slot_t *slot = &g->table[find_slot(g->table, g->table_mask, key)];
-        return slot->key == key ? slot->bucket : GRID_NO_BUCKET;
+        if (!grid_cell_coords(g, x, c)) { p.none = 1; return p; }
+        if (g->dense) {
+            p.at = grid_dense_index(g, c[0], c[1], c[2]);
+            __builtin_prefetch(&g->dense[p.at]);
+        } else {
+            p.key = grid_cell_key(c[0], c[1], c[2]);
+            p.at = key_slot(p.key, g->table_mask);
+            __builtin_prefetch(&g->table[p.at]);
+        }
+        return p;
     }
     default:
-        return 0;
+        return p;
     }
+}
+
+uint32_t grid_probe_end(const grid_t *g, grid_probe_t p)
+{
+    if (p.none) return GRID_NO_BUCKET;
+    if (g->kind != GRID_CELLS) return (uint32_t)p.at;
+    if (g->dense) return g->dense[p.at];
+    const grid_slot_t *slot = &g->table[probe_from(g->table, g->table_mask, p.key, p.at)];
+    return slot->key == p.key ? slot->bucket : GRID_NO_BUCKET;
+}
+
+uint32_t grid_bucket(const grid_t *g, vec3 x)
+{
+    return grid_probe_end(g, grid_probe_begin(g, x));
 }

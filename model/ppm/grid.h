@@ -107,9 +107,16 @@ void grid_free(grid_t *g);
  * can be near x (GRID_CELLS only: an empty cell). */
 uint32_t grid_bucket(const grid_t *g, vec3 x);
 
-/* Start fetching what grid_bucket(g, x) will read (GRID_CELLS: the cell's map entry or table
- * slot), so that a run of look-ups overlaps its cache misses. */
-void grid_prefetch_bucket(const grid_t *g, vec3 x);
+/* grid_bucket in two halves, so that a run of look-ups overlaps its cache misses: begin finds
+ * x's cell and where its bucket number lies (the dense map's entry or the table's first slot to
+ * probe) and starts fetching it; end reads it. */
+typedef struct {
+    uint64_t key;   /* GRID_CELLS hashed: the packed cell key */
+    size_t at;      /* the dense map's index, the table's first slot, or (other kinds) the bucket */
+    int none;       /* x lies in no cell of the grid: GRID_NO_BUCKET */
+} grid_probe_t;
+grid_probe_t grid_probe_begin(const grid_t *g, vec3 x);
+uint32_t grid_probe_end(const grid_t *g, grid_probe_t p);
 
 /* Part p's candidates in bucket b (not GRID_NO_BUCKET). */
 static inline grid_cands_t grid_bucket_cands(const grid_t *g, int p, uint32_t b)

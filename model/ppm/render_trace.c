@@ -40,10 +40,13 @@ int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
          * already fetched (the cell table of a big frame is far larger than the caches); with
          * skips, drop the hits that reach no hit point's cell. */
         size_t keep = 0;
+        grid_probe_t ahead[BUCKET_AHEAD];   /* hit k's look-up, begun, in ahead[k % BUCKET_AHEAD] */
+        for (size_t k = 0; k < out->n && k < BUCKET_AHEAD; k++) ahead[k] = grid_probe_begin(g, out->hits[k].x);
         for (size_t k = 0; k < out->n && !failed && !stopped; k++) {
-            if (k + BUCKET_AHEAD < out->n) grid_prefetch_bucket(g, out->hits[k + BUCKET_AHEAD].x);
             photon_hit_t *ph = &out->hits[k];
-            ph->bucket = grid_bucket(g, ph->x);
+            ph->bucket = grid_probe_end(g, ahead[k % BUCKET_AHEAD]);
+            /* Hits from k + 1 on are not yet moved (keep <= k). */
+            if (k + BUCKET_AHEAD < out->n) ahead[k % BUCKET_AHEAD] = grid_probe_begin(g, out->hits[k + BUCKET_AHEAD].x);
             if (skip && ph->bucket == GRID_NO_BUCKET) { no_cell++; continue; }
             out->hits[keep++] = *ph;
         }
