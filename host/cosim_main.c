@@ -172,7 +172,7 @@ typedef struct {
     int have_scene;
     cosim_part_t part;
     int dist;                   /* under mpirun with more than one rank */
-    int dp, win, ppc;
+    int dp, win;
     uint32_t alpha;
     size_t npix;
     cosim_rtl_t *rtl;
@@ -214,26 +214,26 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
     /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
     r->alpha = preu_f32(render_alpha(&r->opt));
     r->win = cosim_update_window(r->dp, c->pipefast);
-    int hp_bank_w = 0;
+    int hp_bank_w = 0, ppc = 0;
     if (c->model_only) {        /* no RTL: the configuration the build would have */
-        if (cosim_rtl_config(r->opt.preu, &hp_bank_w, &r->ppc)) {
+        if (cosim_rtl_config(r->opt.preu, &hp_bank_w, &ppc)) {
             fprintf(stderr, "pree cosim: no pree_top configuration with %d PREUs\n", r->opt.preu);
             return 2;
         }
     } else {
         if (!(r->rtl = open_rtl(&r->opt, c, r->dp, r->alpha, r->win))) return 1;
         hp_bank_w = cosim_rtl_hp_bank_w(r->rtl);
-        r->ppc = cosim_rtl_ppc(r->rtl);
+        ppc = cosim_rtl_ppc(r->rtl);
     }
     cosim_drv_opts_t dopt = {.preu = r->opt.preu, .datapath = r->dp, .hp_bank_w = hp_bank_w, .reorder = c->reorder,
                               .schedule = c->schedule, .window = c->window, .gap = c->gap, .seed = 1,
-                              .model_only = c->model_only, .ppc = r->ppc, .win = r->win,
+                              .model_only = c->model_only, .ppc = ppc, .win = r->win,
                               .skid = cosim_b_skid(c->pipefast)};
     if (!(r->ctx.drv = cosim_drv_new(r->rtl, &dopt))) { fprintf(stderr, "pree cosim: out of memory\n"); return 1; }
     r->opt.record_ops = 1;
     r->opt.one_rank = 1;   /* under mpirun too: each rank runs the whole engine (cosim_part_t) */
     r->rep = (cosim_report_t){.scene = c->scene, .width = r->opt.width, .height = r->opt.height, .datapath = r->dp,
-                              .preu = r->opt.preu, .ppc = r->ppc, .model_only = c->model_only, .axi = c->axi,
+                              .preu = r->opt.preu, .ppc = ppc, .model_only = c->model_only, .axi = c->axi,
                               .reorder = c->reorder, .window = c->window, .pipe_fast = c->pipefast,
                               .update_window = r->win, .pixel_layout = c->pixel_layout,
                               .alpha = (double)fp32_from_bits(r->alpha), .gap = c->gap};
