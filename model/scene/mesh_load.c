@@ -336,54 +336,58 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
     return rc;
 }
 
-int mesh_load_directive(scene_t *scene, const char *scene_file, char **tok, int ntok, char *err, size_t errlen)
+/* Reads the model that o->path names and imports it through Assimp (a ".gz" file decompressed in
+ * memory; an OBJ file checked first by mesh_obj_check). Returns the imported scene, whose bytes
+ * stay in *blob, or NULL with err set. */
+static const struct aiScene *import_model(const mesh_opts_t *o, mesh_blob_t *blob, char *err, size_t errlen)
 {
-    mesh_opts_t o;
-    if (parse_options(scene, scene_file, tok, ntok, &o, err, errlen)) return -1;
-    const int mats_before = scene->num_materials, lights_before = scene->num_lights;
-    mesh_blob_t blob = {0};
-    if (mesh_read_file(o.path, &blob, err, errlen)) return -1;
+    if (mesh_read_file(o->path, blob, err, errlen)) return NULL;
     /* The name Assimp sees: without ".gz", so that it picks the importer by extension. */
     char vpath[4096];
-    snprintf(vpath, sizeof vpath, "%s", o.path);
+    snprintf(vpath, sizeof vpath, "%s", o->path);
     if (ends_with(vpath, ".gz")) vpath[strlen(vpath) - 3] = '\0';
     const int is_obj = ends_with(vpath, ".obj");
     mesh_obj_counts_t counts;
-    if (is_obj && mesh_obj_check(o.path, &blob, o.material < 0, &counts, err, errlen)) { mesh_blob_free(&blob); return -1; }
+    if (is_obj && mesh_obj_check(o->path, blob, o->material < 0, &counts, err, errlen)) return NULL;
     if (is_obj && counts.faces == 0) {
-        snprintf(err, errlen, "%s: no faces (an empty mesh)", o.path);
-        mesh_blob_free(&blob);
-        return -1;
+        snprintf(err, errlen, "%s: no faces (an empty mesh)", o->path);
+        return NULL;
     }
 
     unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                      aiProcess_SortByPType | aiProcess_ValidateDataStructure;
-    if (o.normals == NORMALS_FLAT) flags |= aiProcess_DropNormals;
-    if (o.normals == NORMALS_SMOOTH) flags |= aiProcess_GenSmoothNormals | aiProcess_ForceGenNormals;
+    if (o->normals == NORMALS_FLAT) flags |= aiProcess_DropNormals;
+    if (o->normals == NORMALS_SMOOTH) flags |= aiProcess_GenSmoothNormals | aiProcess_ForceGenNormals;
     struct aiPropertyStore *props = aiCreatePropertyStore();
     aiSetImportPropertyFloat(props, AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, 80.0f);
     mesh_io_t io;
-    mesh_io_assimp(&io, vpath, &blob);
+    mesh_io_assimp(&io, vpath, blob);
     const struct aiScene *as = aiImportFileExWithProperties(vpath, flags, &io.io, props);
     aiReleasePropertyStore(props);
     if (!as) {
         char msg[400];
         snprintf(msg, sizeof msg, "%s", aiGetErrorString());
         one_line(msg);
-        snprintf(err, errlen, "%s: %s", o.path, msg[0] ? msg : "cannot read the model");
-        mesh_blob_free(&blob);
-        return -1;
+        snprintf(err, errlen, "%s: %s", o->path, msg[0] ? msg : "cannot read the model");
     }
+    return as;
+}
+
+/* Adds an imported model to the scene: its triangles as one mesh and each emissive material's
+ * triangles as a light; warns of what it dropped. On an error the caller removes the lights it
+ * may have added. */
+static int add_model(scene_t *scene, const mesh_opts_t *o, const struct aiScene *as, char *err, size_t errlen)
+{
     mesh_t m;
     memset(&m, 0, sizeof m);
-    snprintf(m.source, sizeof m.source, "%.255s", o.path);
+    snprintf(m.source, sizeof m.source, "%.255s", o->path);
     corners_t *emit = calloc(as->mNumMaterials ? as->mNumMaterials : 1, sizeof *emit);
     size_t dropped = 0, excluded = 0, non_tri = 0;
     int rc = emit ? 0 : -1;
-    if (!emit) snprintf(err, errlen, "%s: out of memory", o.path);
-    if (rc == 0) rc = convert(scene, &o, as, o.path, &m, emit, &dropped, &excluded, &non_tri, err, errlen);
+    if (!emit) snprintf(err, errlen, "%s: out of memory", o->path);
+    if (rc == 0) rc = convert(scene, o, as, o->path, &m, emit, &dropped, &excluded, &non_tri, err, errlen);
     if (rc == 0 && m.num_triangles == 0) {
-        snprintf(err, errlen, "%s: no triangles (%zu degenerate dropped, %zu excluded)", o.path, dropped, excluded);
+        snprintf(err, errlen, "%s: no triangles (%zu degenerate dropped, %zu excluded)", o->path, dropped, excluded);
         rc = -1;
     }
     for (unsigned k = 0; rc == 0 && k < as->mNumMaterials; k++) {
@@ -391,8 +395,8 @@ int mesh_load_directive(scene_t *scene, const char *scene_file, char **tok, int 
         mtl_props_t p;
         mtl_props(as->mMaterials[k], &p);
         char e[256];
-        if (mesh_light_add(scene, emit[k].c, emit[k].n / 3, v3_scale(p.ke, o.emission), 0, e, sizeof e)) {
-            snprintf(err, errlen, "%s: %s", o.path, e);
+        if (mesh_light_add(scene, emit[k].c, emit[k].n / 3, v3_scale(p.ke, o->emission), 0, e, sizeof e)) {
+            snprintf(err, errlen, "%s: %s", o->path, e);
             rc = -1;
         }
     }
@@ -402,18 +406,29 @@ int mesh_load_directive(scene_t *scene, const char *scene_file, char **tok, int 
         else { scene->meshes = arr; arr[scene->num_meshes++] = m; }
     }
     if (rc == 0 && dropped)
-        fprintf(stderr, "pree: warning: %s: dropped %zu degenerate (zero-area) triangle%s\n", o.path, dropped,
+        fprintf(stderr, "pree: warning: %s: dropped %zu degenerate (zero-area) triangle%s\n", o->path, dropped,
                 dropped == 1 ? "" : "s");
     if (rc == 0 && non_tri)
-        fprintf(stderr, "pree: warning: %s: ignored %zu point and line primitive%s\n", o.path, non_tri,
+        fprintf(stderr, "pree: warning: %s: ignored %zu point and line primitive%s\n", o->path, non_tri,
                 non_tri == 1 ? "" : "s");
     for (unsigned k = 0; emit && k < as->mNumMaterials; k++) free(emit[k].c);
     free(emit);
-    aiReleaseImport(as);
+    if (rc) mesh_free(&m);
+    return rc;
+}
+
+int mesh_load_directive(scene_t *scene, const char *scene_file, char **tok, int ntok, char *err, size_t errlen)
+{
+    mesh_opts_t o;
+    if (parse_options(scene, scene_file, tok, ntok, &o, err, errlen)) return -1;
+    const int mats_before = scene->num_materials, lights_before = scene->num_lights;
+    mesh_blob_t blob = {0};
+    const struct aiScene *as = import_model(&o, &blob, err, errlen);
+    int rc = as ? add_model(scene, &o, as, err, errlen) : -1;
+    if (as) aiReleaseImport(as);
     mesh_blob_free(&blob);
     if (rc) {
         /* Leave the scene as it was. */
-        mesh_free(&m);
         for (int i = lights_before; i < scene->num_lights; i++) free(scene->lights[i].tris);
         scene->num_lights = lights_before;
         scene->num_materials = mats_before;
