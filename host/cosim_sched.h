@@ -13,7 +13,7 @@
  * PhotonsPerCycle, each chosen behind the ones already chosen for that cycle), the scheduler
  * predicts where the operations of a candidate photon would issue (behind the operations
  * AFTSO-HpUOC still holds, NumPreu a cycle) and scores it: stall cycles from hazards (the same
- * hit point issued or predicted within the last win cycles: 11 or 13, 46 or 49 with PipeFast 1),
+ * hit point issued or predicted within the last win cycles: 11 or 13, 49 or 53 with PipeFast 1),
  * hit-point bank clashes within an issue cycle and lanes left empty (starvation). The photon's
  * candidates are ordered greedily
  * against the same costs (ties: the candidate whose bank more of the photon's candidates share

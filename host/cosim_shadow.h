@@ -2,7 +2,7 @@
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
  * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
  * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
- * cycles (11 or 13; 46 or 49 with PipeFast 1), same key, hit-point bank), with PipeFast 1 B's
+ * cycles (11 or 13; 49 or 53 with PipeFast 1), same key, hit-point bank), with PipeFast 1 B's
  * skid slot (A reads while the slot is empty; B's leftover lanes move into it), and the RTL's
  * short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
@@ -35,7 +35,7 @@
 #include "cosim_rtl.h"
 #include "hp_bank.h"
 
-#define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 46 / 49 */
+#define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 49 / 53 */
 
 typedef struct {
     int preu, hp_bank_w;
@@ -72,14 +72,14 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int 
  * (cosim_rtl_update_window) and checks it against this. */
 static inline int cosim_update_window(int datapath, int pipe_fast)
 {
-    return pipe_fast ? (datapath ? 49 : 46) : (datapath ? 13 : 11);
+    return pipe_fast ? (datapath ? 53 : 49) : (datapath ? 13 : 11);
 }
 /* ADISO-REC's pipeline depth in pree_top (its RAD_LAT, the PREU's radiance latency: the same for
  * both datapaths), which sets the radiance pass's issue order and so the reference image's
  * rounding (model/ppm/radiance.h). */
 static inline int cosim_radiance_depth(int pipe_fast)
 {
-    return pipe_fast ? 59 : 12;
+    return pipe_fast ? 64 : 12;
 }
 /* Whether pree_top has B's skid slot (its B_SKID): with PipeFast 1. */
 static inline int cosim_b_skid(int pipe_fast)

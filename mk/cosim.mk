@@ -21,7 +21,7 @@
 # uses the paper datapath with NumPreu 4, 8, 16 (COSIM_PREUS) and the stable one with
 # COSIM_STABLE_PREUS (default 4); the PipeFast = 1 models of both datapaths for the counts in
 # COSIM_FAST_PREUS (default none; the regression builds build/pree-cosim-p4f for its deep
-# co-simulation, whose reference image adds in the order of ADISO-REC's depth 59) are built when
+# co-simulation, whose reference image adds in the order of ADISO-REC's depth 64) are built when
 # asked; the top bench links those models.
 # Verilator: -O3, OPT_FAST=-O2 (the manual's advice for speed), FST tracing compiled in but
 # only switched on by --trace; X assignments resolved the fast way (no random X).

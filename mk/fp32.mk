@@ -23,8 +23,10 @@
 # models are built on demand (not in TEST_PREREQS), so that the quick regression stays fast.
 
 FP32_UNITS    := add mul sqr div cmp div8 wacc u2f
-# Deep configurations: <name> := <unit> <PipeFast> <Stages, or - for PipeFast's> <latency>.
-# The latency is what the benches require; for PipeFast = 1 it pins the unit's deep plan.
+# Deep configurations: <name> := <unit> <PipeFast> <Stages, or - for PipeFast's> <latency> [ecp5].
+# The latency is what the benches require; for PipeFast = 1 it pins the unit's deep plan. ecp5:
+# built with PREE_ECP5_DSP, the products in ECP5 MULT18X18D primitives with their own registers
+# (rtl/pree_fp32_dsp_mul.v, the FPGA timing flow's form), simulated by tb/fpga/MULT18X18D.v.
 FP32_CFG_add_fast  := add 1 - 7
 FP32_CFG_mul_fast  := mul 1 - 7
 FP32_CFG_sqr_fast  := sqr 1 - 6
@@ -34,8 +36,10 @@ FP32_CFG_u2f_fast  := u2f 1 - 5
 FP32_CFG_div2      := div 0 2 2
 FP32_CFG_div12     := div 0 12 12
 FP32_CFG_div20     := div 0 20 20
+FP32_CFG_mul_ecp5  := mul 1 - 7 ecp5
+FP32_CFG_sqr_ecp5  := sqr 1 - 6 ecp5
 FP32_FAST     := add_fast mul_fast sqr_fast div_fast wacc_fast u2f_fast
-FP32_DEEP     := $(FP32_FAST) div2 div12 div20
+FP32_DEEP     := $(FP32_FAST) div2 div12 div20 mul_ecp5 sqr_ecp5
 FP32_DIR      := $(BUILD)/fp32
 FP32_RTL      := $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 # The module of each unit: pree_fp32_<unit> unless named here.
@@ -73,7 +77,7 @@ $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN
 # Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation, quick and
 # full runs. --x-assign/--x-initial unique: no reliance on X or initial values.
 define FP32_UNIT_RULES
-$(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(VHARNESS) $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
+$(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/fp32_bench.cpp $(VHARNESS) $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
 	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
 	  -Mdir $(FP32_DIR)/vl_$(1) --top-module $(call fp32_top,$(2)) -y rtl rtl/$(call fp32_top,$(2)).v \
@@ -82,7 +86,7 @@ $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fp32/fp32_bench.cpp $(VHARNE
 	  -o fp32_bench_$(1) > $(FP32_DIR)/vl_$(1).build.log 2>&1 \
 	  || { tail -30 $(FP32_DIR)/vl_$(1).build.log; exit 1; }
 
-$(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
+$(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	iverilog -g2005 -Wall $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
 	  -o $$@ -y rtl $(if $(filter cmp,$(2)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
@@ -109,8 +113,9 @@ $(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAG
 # A deep configuration $(1) from its FP32_CFG_ line: words 1 unit, 2 PipeFast, 3 Stages, 4 latency.
 fp32_cfg        = $(word $(2),$(FP32_CFG_$(1)))
 fp32_cfg_stages = $(if $(filter -,$(call fp32_cfg,$(1),3)),,$(call fp32_cfg,$(1),3))
-fp32_cfg_vl     = -GPipeFast=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-GStages=$(call fp32_cfg_stages,$(1)))
-fp32_cfg_iv     = -DUNIT_PIPEFAST=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-DUNIT_STAGES=$(call fp32_cfg_stages,$(1))) -DUNIT_LATENCY=$(call fp32_cfg,$(1),4)
+fp32_cfg_ecp5   = $(if $(filter ecp5,$(call fp32_cfg,$(1),5)),-DPREE_ECP5_DSP -y tb/fpga)
+fp32_cfg_vl     = -GPipeFast=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-GStages=$(call fp32_cfg_stages,$(1))) $(call fp32_cfg_ecp5,$(1))
+fp32_cfg_iv     = -DUNIT_PIPEFAST=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-DUNIT_STAGES=$(call fp32_cfg_stages,$(1))) -DUNIT_LATENCY=$(call fp32_cfg,$(1),4) $(call fp32_cfg_ecp5,$(1))
 $(foreach c,$(FP32_DEEP),$(eval $(call FP32_UNIT_RULES,$(c),$(call fp32_cfg,$(c),1),$(call fp32_cfg_vl,$(c)),-DFP32_LATENCY=$(call fp32_cfg,$(c),4),$(call fp32_cfg_iv,$(c)))))
 
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
@@ -146,18 +151,19 @@ sim-fp32-sweep-sqr: $(FP32_DIR)/vl_sqr/fp32_bench_sqr
 	$< 0 $(FP32_SEED) sweep
 
 # Lint: every unit as a top, with the helpers it instantiates, at its default, at PipeFast = 1
-# and at the ends of its Stages range; the divider also at Stages 8, 12 and 20; warnings are
-# errors.
+# and at the ends of its Stages range; the divider also at Stages 8, 12 and 20; the multiplier and
+# squarer also as the ECP5 timing flow builds them (PREE_ECP5_DSP); warnings are errors.
 FP32_LINT_CFGS := $(foreach u,add mul sqr wacc u2f,"$(call fp32_top,$(u)) -GPipeFast=1" \
                     "$(call fp32_top,$(u)) -GStages=1" \
                     "$(call fp32_top,$(u)) -GStages=$(lastword $(FP32_STAGES_$(u)))") \
-                  "pree_fp32_div -GPipeFast=1" $(foreach s,2 8 12 20,"pree_fp32_div -GStages=$(s)")
+                  "pree_fp32_div -GPipeFast=1" $(foreach s,2 8 12 20,"pree_fp32_div -GStages=$(s)") \
+                  $(foreach u,mul sqr,"pree_fp32_$(u) -GPipeFast=1 -DPREE_ECP5_DSP -y tb/fpga")
 lint-fp32: | $(DEPS_STAMP)
 	@set -e; for u in $(foreach u,add mul sqr div cmp wacc u2f,$(call fp32_top,$(u))) \
 	    $(FP32_LINT_CFGS); do \
-	  set -- $$u; \
-	  echo "verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v"; \
-	  verilator --lint-only -Wall $$2 -y rtl --top-module $$1 rtl/$$1.v; \
+	  set -- $$u; top=$$1; shift; \
+	  echo "verilator --lint-only -Wall $$* -y rtl --top-module $$top rtl/$$top.v"; \
+	  verilator --lint-only -Wall $$* -y rtl --top-module $$top rtl/$$top.v; \
 	done
 
 # Synthesis: one Yosys run per unit (scripts/fp32_synth.sh), then the resource/depth table.

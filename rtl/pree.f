@@ -8,7 +8,7 @@ rtl/pree_reset_sync.v
 rtl/pree_fp32_lzc.v
 rtl/pree_fp32_class.v
 rtl/pree_fp32_special.v
-rtl/pree_fp32_stages.v
+rtl/pree_fp32_entry.v
 rtl/pree_fp32_unpack_lz.v
 rtl/pree_fp32_unpack_norm.v
 rtl/pree_fp32_unpack.v
@@ -20,6 +20,7 @@ rtl/pree_fp32_tail.v
 rtl/pree_fp32_final.v
 rtl/pree_fp32_mul_back.v
 rtl/pree_fp32_pipe.v
+rtl/pree_fp32_dsp_mul.v
 rtl/pree_fp32_add.v
 rtl/pree_fp32_mul.v
 rtl/pree_fp32_sqr.v

@@ -8,8 +8,11 @@
 // Parameters:
 //   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
 //             clock rates (Stages = 7: every seam below registered). docs/fpga.md.
-//   Stages    1 .. 7, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    1 .. 7, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -40,7 +43,8 @@
 
 module pree_fp32_add #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 7 : 2
+  parameter Stages   = (PipeFast != 0) ? 7 : 2,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -52,7 +56,6 @@ module pree_fp32_add #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MAX_STAGES = 7;
 
   // Registers at seam s (1 .. 7) under the stage plan above: bit s-1 of row Stages of PLANS
@@ -70,23 +73,30 @@ module pree_fp32_add #(
   // B's sticky bit from a mask when B lies between two registers.
   localparam ALIGN_MASK = (seam_regs(2) != 0) && (seam_regs(3) != 0);
 
-  pree_fp32_stages #(
-    .Unit ("pree_fp32_add"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0, sub0;
+  wire [31:0] a0, b0;
+
+  pree_fp32_entry #(.Unit("pree_fp32_add"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(1), .Max(MAX_STAGES), .Width(65)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({sub_i, a_i, b_i}),
+    .valid_o (valid0), .q_o ({sub0, a0, b0})
+  );
 
   // ---------------------------------------------------------------- A1: classify, compare
-  wire       sign_a = a_i[31];
-  wire       sign_b = b_i[31] ^ sub_i;          // effective sign of the second operand
-  wire [7:0] exp_a  = a_i[30:23];
-  wire [7:0] exp_b  = b_i[30:23];
+  wire       sign_a = a0[31];
+  wire       sign_b = b0[31] ^ sub0;          // effective sign of the second operand
+  wire [7:0] exp_a  = a0[30:23];
+  wire [7:0] exp_b  = b0[30:23];
   wire       expz_a, expz_b, zero_a_unused, zero_b_unused, inf_a, inf_b, nan_a, nan_b;
 
   pree_fp32_class u_class_a (
-    .x_i (a_i[30:0]), .exp_zero_o (expz_a), .zero_o (zero_a_unused), .inf_o (inf_a),
+    .x_i (a0[30:0]), .exp_zero_o (expz_a), .zero_o (zero_a_unused), .inf_o (inf_a),
     .nan_o (nan_a)
   );
   pree_fp32_class u_class_b (
-    .x_i (b_i[30:0]), .exp_zero_o (expz_b), .zero_o (zero_b_unused), .inf_o (inf_b),
+    .x_i (b0[30:0]), .exp_zero_o (expz_b), .zero_o (zero_b_unused), .inf_o (inf_b),
     .nan_o (nan_b)
   );
 
@@ -95,7 +105,7 @@ module pree_fp32_add #(
   wire [31:0] special_y_d;
 
   pree_fp32_special u_special (
-    .a_i (a_i), .b_i (b_i), .nan_a_i (nan_a), .nan_b_i (nan_b),
+    .a_i (a0), .b_i (b0), .nan_a_i (nan_a), .nan_b_i (nan_b),
     .invalid_i (inf_a & inf_b & (sign_a != sign_b)), .inf_i (inf_a | inf_b), .zero_i (1'b0),
     .sign_i (inf_a ? sign_a : sign_b),
     .special_o (special_d), .y_o (special_y_d)
@@ -104,7 +114,7 @@ module pree_fp32_add #(
   // Order by magnitude (L the larger or equal operand, S the smaller) and the alignment
   // shift, exp_l - exp_s clamped to 31: both differences are formed beside the magnitude
   // comparison, and the comparison picks one in A2, so no subtraction follows the compare.
-  wire        swap    = (b_i[30:0] > a_i[30:0]);
+  wire        swap    = (b0[30:0] > a0[30:0]);
   wire [7:0]  exp_a1  = expz_a ? 8'd1 : exp_a;   // subnormal: exponent 1, no hidden bit
   wire [7:0]  exp_b1  = expz_b ? 8'd1 : exp_b;
   wire [7:0]  diff_ab = exp_a1 - exp_b1;
@@ -123,9 +133,9 @@ module pree_fp32_add #(
   wire [30:0]   s1_a, s1_b;                       // the operands' magnitudes
 
   pree_fp32_pipe #(.Width(WS + 5 + 10 + 62), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0),
     .d_i   ({special_d, special_y_d, sign_a, sign_b, swap, expz_a, expz_b, sh_ab, sh_ba,
-             a_i[30:0], b_i[30:0]}),
+             a0[30:0], b0[30:0]}),
     .valid_o (s1_valid),
     .q_o   ({s1_special, s1_sign_a, s1_sign_b, s1_swap, s1_expz_a, s1_expz_b, s1_sh_ab,
              s1_sh_ba, s1_a, s1_b})

@@ -10,8 +10,11 @@
 //   PipeFast  0: the paper's configuration (Stages = 4); 1: the deep configuration for FPGA
 //             clock rates (Stages = 31: every seam below registered, one division step per
 //             stage). docs/fpga.md.
-//   Stages    2 .. 31, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    2 .. 31, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -44,7 +47,8 @@
 
 module pree_fp32_div #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 31 : 4
+  parameter Stages   = (PipeFast != 0) ? 31 : 4,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -55,7 +59,6 @@ module pree_fp32_div #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MIN_STAGES = 2;
   localparam MAX_STAGES = 31;
   localparam ITEMS      = 31;
@@ -83,10 +86,16 @@ module pree_fp32_div #(
     end
   endfunction
 
-  pree_fp32_stages #(
-    .Unit ("pree_fp32_div"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (MIN_STAGES),
-    .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0;
+  wire [31:0] a0, b0;
+
+  pree_fp32_entry #(.Unit("pree_fp32_div"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(MIN_STAGES), .Max(MAX_STAGES), .Width(64)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i, b_i}),
+    .valid_o (valid0), .q_o ({a0, b0})
+  );
 
   // ---------------------------------------------------------------- items 1, 2: unpack
   // Classify both operands, the special result (carried to the end with the sign: WK bits),
@@ -99,7 +108,7 @@ module pree_fp32_div #(
   wire [23:0]   man_a, man_b;
 
   pree_fp32_unpack #(.Div(1), .Regs(seam_regs(1))) u_unpack (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .a_i (a_i), .b_i (b_i),
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0), .a_i (a0), .b_i (b0),
     .valid_o (s1_valid), .keep_o (s1_keep),
     .exp_a_o (exp_a), .man_a_o (man_a), .exp_b_o (exp_b), .man_b_o (man_b)
   );

@@ -8,8 +8,11 @@
 // Parameters:
 //   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
 //             clock rates (Stages = 7). docs/fpga.md.
-//   Stages    1 .. 8, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    1 .. 8, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -21,11 +24,11 @@
 //                                                                                   -> seam 1
 //   A2 normalise the significands (a subnormal one shifted left by its count,
 //      pree_fp32_unpack_norm), exponent sum, sign                                   -> seam 2
-//   B  the significand product. With seam 3 registered it is four partial products of 17-bit
-//      and 7-bit pieces (a = ah * 2^17 + al, b = bh * 2^17 + bl; each product at most
-//      17 x 17, so it fits one DSP multiplier on both 7-series (25 x 18 signed) and ECP5
-//      (18 x 18)), each with a register directly before (seam 2) and after (seam 3) its `*`,
-//      which the DSP blocks' own input and output registers can take; otherwise one
+//   B  the significand product. With seam 3 registered (then seam 2 is too) it is four partial
+//      products of 17-bit and 7-bit pieces (a = ah * 2^17 + al, b = bh * 2^17 + bl; each
+//      product at most 17 x 17, so it fits one DSP multiplier on both 7-series (25 x 18
+//      signed) and ECP5 (18 x 18)), each in a pree_fp32_dsp_mul whose input and output
+//      registers are seams 2 and 3 for it, held by the DSP block itself; otherwise one
 //      24 x 24 `*`                                                                  -> seam 3
 //   C  the cross terms: mid_sum = al * bh + ah * bl                                 -> seam 4
 //   D  the 48-bit product: {ah * bh, al * bl} + mid_sum * 2^17                     -> seam 5
@@ -46,7 +49,8 @@
 
 module pree_fp32_mul #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 7 : 2
+  parameter Stages   = (PipeFast != 0) ? 7 : 2,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -57,7 +61,6 @@ module pree_fp32_mul #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MAX_STAGES = 8;
 
   // Registers at seam s (1 .. 8) under the stage plan above: bit s-1 of row Stages of PLANS
@@ -73,9 +76,16 @@ module pree_fp32_mul #(
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
-  pree_fp32_stages #(
-    .Unit ("pree_fp32_mul"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0;
+  wire [31:0] a0, b0;
+
+  pree_fp32_entry #(.Unit("pree_fp32_mul"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(1), .Max(MAX_STAGES), .Width(64)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i, b_i}),
+    .valid_o (valid0), .q_o ({a0, b0})
+  );
 
   // ---------------------------------------------------------------- A1, A2: unpack
   // Classify both operands, the special result (carried to the end with the sign: WK bits),
@@ -88,23 +98,12 @@ module pree_fp32_mul #(
   wire [23:0]   man_a, man_b;
 
   pree_fp32_unpack #(.Div(0), .Regs(seam_regs(1))) u_unpack (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .a_i (a_i), .b_i (b_i),
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0), .a_i (a0), .b_i (b0),
     .valid_o (s1_valid), .keep_o (s1_keep),
     .exp_a_o (exp_a), .man_a_o (man_a), .exp_b_o (exp_b), .man_b_o (man_b)
   );
 
   wire [9:0]  exp_d = exp_a + exp_b - 10'd127;   // biased exponent of product bit 46
-
-  wire          s2_valid;
-  wire [WK-1:0] s2_keep;
-  wire [9:0]    s2_exp;
-  wire [23:0]   s2_man_a, s2_man_b;
-
-  pree_fp32_pipe #(.Width(WK + 10 + 48), .Regs(seam_regs(2))) u_seam2 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
-    .d_i   ({s1_keep, exp_d, man_a, man_b}),
-    .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_man_a, s2_man_b})
-  );
 
   // ---------------------------------------------------------------- B, C, D: the product
   wire          s5_valid_d;
@@ -114,23 +113,35 @@ module pree_fp32_mul #(
 
   generate
     if (SPLIT) begin : g_split
-      // B: four partial products, each `*` between two registers (seams 1 and 2).
-      wire [33:0] pp_ll = s2_man_a[16:0]  * s2_man_b[16:0];
-      wire [23:0] pp_lh = s2_man_a[16:0]  * s2_man_b[23:17];
-      wire [23:0] pp_hl = s2_man_a[23:17] * s2_man_b[16:0];
-      wire [13:0] pp_hh = s2_man_a[23:17] * s2_man_b[23:17];
-
-      wire          s3_valid;
-      wire [WK-1:0] s3_keep;
-      wire [9:0]    s3_exp;
+      // B: four partial products, each in a pree_fp32_dsp_mul whose two registers are seams 2
+      // and 3 for it (the DSP block's own input and output registers); the carried fields ride
+      // seams 2 and 3 beside them.
+      wire          s2_valid, s3_valid;
+      wire [WK-1:0] s2_keep, s3_keep;
+      wire [9:0]    s2_exp, s3_exp;
       wire [33:0]   s3_ll;
       wire [23:0]   s3_lh, s3_hl;
       wire [13:0]   s3_hh;
 
-      pree_fp32_pipe #(.Width(WK + 10 + 34 + 24 + 24 + 14), .Regs(seam_regs(3))) u_seam3 (
-        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid),
-        .d_i   ({s2_keep, s2_exp, pp_ll, pp_lh, pp_hl, pp_hh}),
-        .valid_o (s3_valid), .q_o ({s3_keep, s3_exp, s3_ll, s3_lh, s3_hl, s3_hh})
+      pree_fp32_pipe #(.Width(WK + 10), .Regs(seam_regs(2))) u_seam2 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid), .d_i ({s1_keep, exp_d}),
+        .valid_o (s2_valid), .q_o ({s2_keep, s2_exp})
+      );
+      pree_fp32_dsp_mul #(.AW(17), .BW(17)) u_ll (
+        .clk_i (clk_i), .in_en_i (s1_valid), .a_i (man_a[16:0]), .b_i (man_b[16:0]),
+        .out_en_i (s2_valid), .p_o (s3_ll));
+      pree_fp32_dsp_mul #(.AW(17), .BW(7)) u_lh (
+        .clk_i (clk_i), .in_en_i (s1_valid), .a_i (man_a[16:0]), .b_i (man_b[23:17]),
+        .out_en_i (s2_valid), .p_o (s3_lh));
+      pree_fp32_dsp_mul #(.AW(7), .BW(17)) u_hl (
+        .clk_i (clk_i), .in_en_i (s1_valid), .a_i (man_a[23:17]), .b_i (man_b[16:0]),
+        .out_en_i (s2_valid), .p_o (s3_hl));
+      pree_fp32_dsp_mul #(.AW(7), .BW(7)) u_hh (
+        .clk_i (clk_i), .in_en_i (s1_valid), .a_i (man_a[23:17]), .b_i (man_b[23:17]),
+        .out_en_i (s2_valid), .p_o (s3_hh));
+      pree_fp32_pipe #(.Width(WK + 10), .Regs(seam_regs(3))) u_seam3 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s2_valid), .d_i ({s2_keep, s2_exp}),
+        .valid_o (s3_valid), .q_o ({s3_keep, s3_exp})
       );
 
       // C: the cross terms.
@@ -154,7 +165,18 @@ module pree_fp32_mul #(
       assign s5_keep_d  = s4_keep;
       assign s5_exp_d   = s4_exp;
     end else begin : g_single
-      // B, C, D: one 24 x 24 product (seams 2 and 3 are wires in these plans).
+      // B, C, D: one 24 x 24 product after seam 2 (seams 3 and 4 are wires in these plans).
+      wire          s2_valid;
+      wire [WK-1:0] s2_keep;
+      wire [9:0]    s2_exp;
+      wire [23:0]   s2_man_a, s2_man_b;
+
+      pree_fp32_pipe #(.Width(WK + 10 + 48), .Regs(seam_regs(2))) u_seam2 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+        .d_i   ({s1_keep, exp_d, man_a, man_b}),
+        .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_man_a, s2_man_b})
+      );
+
       assign prod_d     = s2_man_a * s2_man_b;
       assign s5_valid_d = s2_valid;
       assign s5_keep_d  = s2_keep;

@@ -7,14 +7,17 @@
 // Regs > 1 adds retiming registers at the same seam (each one cycle more, same logic).
 //
 // Each register has a valid bit, always reset (rst_ni, asynchronous, active low), and a data
-// word that loads only when the valid bit entering it is set, so idle cycles do not toggle the
-// datapath and the data of an invalid stage is a don't-care that holds its last value.
+// word that loads only when the valid bit entering it is set (Hold = 1), so idle cycles do not
+// toggle the datapath and the data of an invalid stage is a don't-care that holds its last
+// value; with Hold = 0 the data word loads every cycle (no clock enable: for a seam whose valid
+// bit would otherwise be a high-fan-out enable, the units' operand registers in the deep PREU).
 // valid_o and q_o follow valid_i and d_i exactly Regs rising edges later.
 `default_nettype none
 
 module pree_fp32_pipe #(
   parameter Width = 1,
-  parameter Regs  = 1
+  parameter Regs  = 1,
+  parameter Hold  = 1
 ) (
   input  wire             clk_i,
   input  wire             rst_ni,
@@ -47,7 +50,7 @@ module pree_fp32_pipe #(
         end
 
         always @(posedge clk_i) begin
-          if (valid[r]) data_q <= data[r];
+          if (valid[r] || Hold == 0) data_q <= data[r];
         end
 
         assign valid[r+1] = valid_q;

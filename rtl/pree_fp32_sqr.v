@@ -18,8 +18,11 @@
 // Parameters:
 //   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
 //             clock rates (Stages = 6). docs/fpga.md.
-//   Stages    1 .. 6, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    1 .. 6, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -41,7 +44,8 @@
 
 module pree_fp32_sqr #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 6 : 2
+  parameter Stages   = (PipeFast != 0) ? 6 : 2,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -51,7 +55,6 @@ module pree_fp32_sqr #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MAX_STAGES = 6;
 
   // Registers at seam s (1 .. 6) under the stage plan above: bit s-1 of row Stages of PLANS
@@ -64,29 +67,38 @@ module pree_fp32_sqr #(
                       * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-  // All three products as `*` when they are registered.
-  localparam SPLIT = (seam_regs(2) != 0);
+  // All three products as `*` when they are registered; each in a DSP block with its own input
+  // and output registers (pree_fp32_dsp_mul) when the seams before and after them are registered.
+  localparam SPLIT    = (seam_regs(2) != 0);
+  localparam DSP_REGS = SPLIT && (seam_regs(1) != 0);
 
-  pree_fp32_stages #(
-    .Unit ("pree_fp32_sqr"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0;
+  wire [31:0] a0;
+
+  pree_fp32_entry #(.Unit("pree_fp32_sqr"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(1), .Max(MAX_STAGES), .Width(32)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i}),
+    .valid_o (valid0), .q_o ({a0})
+  );
 
   // ---------------------------------------------------------------- A: classify
   wire        exp_low, zero_unused, inf_a, nan_a;   // exp_low: zero or subnormal, square +0
 
   pree_fp32_class u_class (
-    .x_i (a_i[30:0]), .exp_zero_o (exp_low), .zero_o (zero_unused), .inf_o (inf_a),
+    .x_i (a0[30:0]), .exp_zero_o (exp_low), .zero_o (zero_unused), .inf_o (inf_a),
     .nan_o (nan_a)
   );
 
-  wire [9:0]  exp_d = {1'b0, a_i[30:23], 1'b0} - 10'd127;   // biased exponent of product bit 46
+  wire [9:0]  exp_d = {1'b0, a0[30:23], 1'b0} - 10'd127;   // biased exponent of product bit 46
 
   // Special result (pree_fp32_special): a NaN quieted, +inf, +0; the square is never negative.
   wire        special_d;
   wire [31:0] special_y_d;
 
   pree_fp32_special u_special (
-    .a_i (a_i), .b_i (a_i), .nan_a_i (nan_a), .nan_b_i (1'b0),
+    .a_i (a0), .b_i (a0), .nan_a_i (nan_a), .nan_b_i (1'b0),
     .invalid_i (1'b0), .inf_i (inf_a), .zero_i (exp_low), .sign_i (1'b0),
     .special_o (special_d), .y_o (special_y_d)
   );
@@ -94,58 +106,86 @@ module pree_fp32_sqr #(
   // Carried to the end: the special result and the sign (+); beside it the exponent.
   localparam WK = 1 + 32 + 1;
 
-  wire          s1_valid;
-  wire [WK-1:0] s1_keep;
-  wire [9:0]    s1_exp;
-  wire [23:0]   s1_man;                              // only used for normal operands
-
-  pree_fp32_pipe #(.Width(WK + 10 + 24), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({special_d, special_y_d, 1'b0, exp_d, 1'b1, a_i[22:0]}),
-    .valid_o (s1_valid), .q_o ({s1_keep, s1_exp, s1_man})
-  );
-
   // ---------------------------------------------------------------- B: the products
-  wire [6:0]  man_hi = s1_man[23:17];
-  wire [16:0] man_lo = s1_man[16:0];
-  wire [13:0] sq_hi;                                 // H^2
-  wire [23:0] sq_mid;                                // H*L
-  wire [33:0] sq_lo  = man_lo * man_lo;              // L^2
-
-  generate
-    if (SPLIT) begin : g_dsp
-      assign sq_hi  = man_hi * man_hi;
-      assign sq_mid = man_hi * man_lo;
-    end else begin : g_lut
-      // Shift-and-add over the 7 bits of H (small products: LUT logic rather than a DSP).
-      reg  [13:0] sq_hi_r;
-      reg  [23:0] sq_mid_r;
-      integer     i;
-      always @* begin
-        sq_hi_r  = 14'd0;
-        sq_mid_r = 24'd0;
-        for (i = 0; i < 7; i = i + 1) begin
-          sq_hi_r  = sq_hi_r  + ({7'd0, man_hi & {7{man_hi[i]}}} << i);
-          sq_mid_r = sq_mid_r + ({7'd0, man_lo & {17{man_hi[i]}}} << i);
-        end
-      end
-      assign sq_hi  = sq_hi_r;
-      assign sq_mid = sq_mid_r;
-    end
-  endgenerate
-
   wire          s2_valid;
   wire [WK-1:0] s2_keep;
   wire [9:0]    s2_exp;
-  wire [13:0]   s2_hi;
-  wire [23:0]   s2_mid;
-  wire [33:0]   s2_lo;
+  wire [13:0]   s2_hi;                               // H^2
+  wire [23:0]   s2_mid;                              // H*L
+  wire [33:0]   s2_lo;                               // L^2
+  wire [23:0]   man = {1'b1, a0[22:0]};              // only used for normal operands
 
-  pree_fp32_pipe #(.Width(WK + 10 + 14 + 24 + 34), .Regs(seam_regs(2))) u_seam2 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
-    .d_i   ({s1_keep, s1_exp, sq_hi, sq_mid, sq_lo}),
-    .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_hi, s2_mid, s2_lo})
-  );
+  generate
+    if (DSP_REGS) begin : g_dsp_regs
+      // Seams 1 and 2 both registered: each product in a pree_fp32_dsp_mul whose input and
+      // output registers are those seams for it (the DSP block's own); the carried fields ride
+      // the seams beside them.
+      wire          s1_valid;
+      wire [WK-1:0] s1_keep;
+      wire [9:0]    s1_exp;
+
+      pree_fp32_pipe #(.Width(WK + 10), .Regs(seam_regs(1))) u_seam1 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0),
+        .d_i ({special_d, special_y_d, 1'b0, exp_d}), .valid_o (s1_valid), .q_o ({s1_keep, s1_exp})
+      );
+      pree_fp32_dsp_mul #(.AW(7), .BW(7)) u_hi (
+        .clk_i (clk_i), .in_en_i (valid0), .a_i (man[23:17]), .b_i (man[23:17]),
+        .out_en_i (s1_valid), .p_o (s2_hi));
+      pree_fp32_dsp_mul #(.AW(7), .BW(17)) u_mid (
+        .clk_i (clk_i), .in_en_i (valid0), .a_i (man[23:17]), .b_i (man[16:0]),
+        .out_en_i (s1_valid), .p_o (s2_mid));
+      pree_fp32_dsp_mul #(.AW(17), .BW(17)) u_lo (
+        .clk_i (clk_i), .in_en_i (valid0), .a_i (man[16:0]), .b_i (man[16:0]),
+        .out_en_i (s1_valid), .p_o (s2_lo));
+      pree_fp32_pipe #(.Width(WK + 10), .Regs(seam_regs(2))) u_seam2 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid), .d_i ({s1_keep, s1_exp}),
+        .valid_o (s2_valid), .q_o ({s2_keep, s2_exp})
+      );
+    end else begin : g_seams
+      wire          s1_valid;
+      wire [WK-1:0] s1_keep;
+      wire [9:0]    s1_exp;
+      wire [23:0]   s1_man;
+
+      pree_fp32_pipe #(.Width(WK + 10 + 24), .Regs(seam_regs(1))) u_seam1 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0),
+        .d_i   ({special_d, special_y_d, 1'b0, exp_d, man}),
+        .valid_o (s1_valid), .q_o ({s1_keep, s1_exp, s1_man})
+      );
+
+      wire [6:0]  man_hi = s1_man[23:17];
+      wire [16:0] man_lo = s1_man[16:0];
+      wire [13:0] sq_hi;
+      wire [23:0] sq_mid;
+      wire [33:0] sq_lo  = man_lo * man_lo;
+
+      if (SPLIT) begin : g_dsp
+        assign sq_hi  = man_hi * man_hi;
+        assign sq_mid = man_hi * man_lo;
+      end else begin : g_lut
+        // Shift-and-add over the 7 bits of H (small products: LUT logic rather than a DSP).
+        reg  [13:0] sq_hi_r;
+        reg  [23:0] sq_mid_r;
+        integer     i;
+        always @* begin
+          sq_hi_r  = 14'd0;
+          sq_mid_r = 24'd0;
+          for (i = 0; i < 7; i = i + 1) begin
+            sq_hi_r  = sq_hi_r  + ({7'd0, man_hi & {7{man_hi[i]}}} << i);
+            sq_mid_r = sq_mid_r + ({7'd0, man_lo & {17{man_hi[i]}}} << i);
+          end
+        end
+        assign sq_hi  = sq_hi_r;
+        assign sq_mid = sq_mid_r;
+      end
+
+      pree_fp32_pipe #(.Width(WK + 10 + 14 + 24 + 34), .Regs(seam_regs(2))) u_seam2 (
+        .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (s1_valid),
+        .d_i   ({s1_keep, s1_exp, sq_hi, sq_mid, sq_lo}),
+        .valid_o (s2_valid), .q_o ({s2_keep, s2_exp, s2_hi, s2_mid, s2_lo})
+      );
+    end
+  endgenerate
 
   // ---------------------------------------------------------------- C: the square
   // (H^2 and L^2 do not overlap; the three-term form lets Yosys use the DSP's post-adder and

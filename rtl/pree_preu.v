@@ -8,24 +8,25 @@
 //                       exact 64-bit count k, w = 1/r2 and T = PI tau / r2 in the 64-bit wide
 //                       format (pree_wacc), and kf = binary32(k + 1) (pree_u64_to_f32).
 //
-// Stage plan: derived from the units' latencies (rtl/pree_preu_plan.vh, written once and also
-// read by pree_top): every unit is fed in the stage where its operands are ready, and the
-// values an operation carries (its tag, the state it came with, results that wait for a later
-// unit) ride in one indexed stage array, st_q, loaded stage by stage on the valid bits.
+// Stage plan: derived from the units' latencies (rtl/pree_preu_plan.vh, also read by pree_top):
+// every unit is fed in the stage where its operands are ready, and the values an operation
+// carries (its tag, its state, results that wait for a later unit) ride in one indexed stage
+// array, st_q, loaded stage by stage on the valid bits.
 //   PipeFast 0 (the paper's units): update 10 stages (paper) / 12 (stable), radiance 12.
-//   PipeFast 1 (the units' deep plans, docs/fpga.md): update 45 / 48, radiance 59.
+//   PipeFast 1 (the units' deep plans and an operand register in front of each unit,
+//   docs/fpga.md): update 48 / 52, radiance 64.
 // Each unit's Stages may be overridden (AddStages .. WaccStages); the plan follows.
 //
 // The operation order, the operand order of every unit and the values are those of
-// docs/preu_datapath.md, which model/pree/preu_fp32.c and model/pree/preu_stable.c implement in C; the
-// two are bit-exact whatever the stage plan.
+// docs/preu_datapath.md, which model/pree/preu_fp32.c and preu_stable.c implement in C; the two
+// are bit-exact whatever the stage plan.
 //
 // Protocol: one operation may enter every cycle with valid_i (no back-pressure). Its result
 // appears with valid_o and its tag exactly UPD_LATENCY cycles later in update mode, RAD_LATENCY
 // in radiance mode. Update mode: accept_o says whether the photon is inside the radius; only
-// then the caller writes state_o back to the hit point. Radiance mode: lreq_o/lreq_tag_o in
-// stage LREQ_STAGE = RAD_LATENCY - (add's stages) - 1 ask for the pixel's running sum, which the caller drives on
-// l_i in the next cycle; l_o = l_i + (the hit point's radiance) comes out with valid_o.
+// then the caller writes state_o back to the hit point. Radiance mode: lreq_o/lreq_tag_o in stage
+// LREQ_STAGE = RAD_LATENCY - (the add's latency) - 1 ask for the pixel's running sum, which the
+// caller drives on l_i in the next cycle; l_o = l_i + (its radiance) comes with valid_o.
 // Run-time constants: alpha_i (paper: N + alpha) and kappa_i (stable: fl(fl(1 - alpha) /
 // alpha), model/pree/preu_stable.c preu_kappa); change them only while busy_o = 0.
 // Mode switch: the units serve different stages in the two modes, so mode_i may change only in
@@ -77,9 +78,11 @@ module pree_preu #(
   localparam [31:0] ONE    = 32'h3F80_0000;  // 1.0f
   localparam [31:0] INV_PI = 32'h3EA2_F983;  // (float)(1.0 / 3.14159265358979)
   localparam [31:0] PI     = 32'h4049_0FDB;  // (float)3.14159265358979
-  localparam A = preu_stages(0, PipeFast, AddStages), M = preu_stages(1, PipeFast, MulStages),
-             Q = preu_stages(2, PipeFast, SqrStages), D = preu_stages(3, PipeFast, DivStages),
-             U = preu_stages(4, PipeFast, U2fStages), W = preu_stages(5, PipeFast, WaccStages);
+  // Each unit's latency: its operand registers (IR) and its Stages (the unit's, below: A - IR ..).
+  localparam IR = preu_in_regs(PipeFast);
+  localparam A = preu_unit_lat(0, PipeFast, AddStages), M = preu_unit_lat(1, PipeFast, MulStages);
+  localparam Q = preu_unit_lat(2, PipeFast, SqrStages), D = preu_unit_lat(3, PipeFast, DivStages);
+  localparam U = preu_unit_lat(4, PipeFast, U2fStages), W = preu_unit_lat(5, PipeFast, WaccStages);
   // The latencies and the pixel-sum request stage, public to the Verilator benches.
   localparam UPD_LATENCY /*verilator public*/ = preu_upd_latency(Datapath, A, M, Q, D, U, W);
   localparam RAD_LATENCY /*verilator public*/ = preu_rad_latency(A, M, D);
@@ -208,22 +211,22 @@ module pree_preu #(
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_s1
       // SUB0..2: d_k = H.pos_k - P.pos_k (update)
-      pree_fp32_add #(.Stages(A)) u_sub (
+      pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_sub (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & upd),
         .a_i(hp_pos_i[32*c +: 32]), .b_i(ph_pos_i[32*c +: 32]), .sub_i(1'b1),
         .valid_o(sub_v[c]), .y_o(d_y[32*c +: 32]));
       // MUL0..2: m_c = H.f_c * P.phi_c (update); MUL0: a = PI * (r2 | PI) (radiance)
-      pree_fp32_mul #(.Stages(M)) u_mul_lo (
+      pree_fp32_mul #(.Stages(M - IR), .InRegs(IR)) u_mul_lo (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & (upd | (c == 0))),
         .a_i((rad && c == 0) ? PI : hp_f_i[32*c +: 32]),
         .b_i((rad && c == 0) ? lo0_b : ph_phi_i[32*c +: 32]),
         .valid_o(mul_lo_v[c]), .y_o(mul_lo_y[32*c +: 32]));
       // SQR0..2: q_k = d_k * d_k (update)
-      pree_fp32_sqr #(.Stages(Q)) u_sqr (
+      pree_fp32_sqr #(.Stages(Q - IR), .InRegs(IR)) u_sqr (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_SQR] & upd),
         .a_i(d_y[32*c +: 32]), .valid_o(sqr_v[c]), .y_o(q_y[32*c +: 32]));
       // MUL3..5: t_c = m_c * (INV_PI | w32) (update); MUL3: b = a * NE (radiance)
-      pree_fp32_mul #(.Stages(M)) u_mul_mid (
+      pree_fp32_mul #(.Stages(M - IR), .InRegs(IR)) u_mul_mid (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[M] & (upd | (c == 0))),
         .a_i(mul_lo_y[32*c +: 32]),
         .b_i((rad && c == 0) ? ne_i : mid_b_upd[32*c +: 32]),
@@ -232,29 +235,29 @@ module pree_preu #(
   endgenerate
 
   // DIV: paper g = na / n1, stable e = kappa / kf (update); k = ONE / b (radiance)
-  pree_fp32_div #(.Stages(D)) u_div (
+  pree_fp32_div #(.Stages(D - IR), .InRegs(IR)) u_div (
     .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(rad ? vs[R_DIV] : vs[S_DIV]),
     .a_i(rad ? ONE : div_a_upd), .b_i(rad ? mul_mid_y[0 +: 32] : div_b_upd),
     .valid_o(div_v), .y_o(div_y));
 
   // ADD3: s = q_x + q_y; ADD4: d2 = s + q_z (update)
-  pree_fp32_add #(.Stages(A)) u_add3 (
+  pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_add3 (
     .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_ADD3] & upd),
     .a_i(q_y[0 +: 32]), .b_i(q_y[32 +: 32]), .sub_i(1'b0), .valid_o(add3_v), .y_o(s_y));
-  pree_fp32_add #(.Stages(A)) u_add4 (
+  pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_add4 (
     .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_ADD4] & upd),
     .a_i(s_y), .b_i(st_v[S_ADD4*CW + F_QZ +: 32]), .sub_i(1'b0), .valid_o(add4_v), .y_o(d2_y));
 
   generate
     for (c = 0; c < 3; c = c + 1) begin : g_s5
       // ADD0..2: paper u_c = H.tau_c + t_c (update); L'_c = L_c + c_c (radiance)
-      pree_fp32_add #(.Stages(A)) u_addc (
+      pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_addc (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(addc_fed[c]),
         .a_i(addc_a[32*c +: 32]), .b_i(addc_b[32*c +: 32]), .sub_i(1'b0),
         .valid_o(addc_v[c]), .y_o(addc_y[32*c +: 32]));
       // MUL6..8: paper tau_n_c = u_c * g, stable MUL6 d2w = d2 * w32 (update);
       // c_c = (tau_c | T32_c) * k (radiance)
-      pree_fp32_mul #(.Stages(M)) u_mul_hi (
+      pree_fp32_mul #(.Stages(M - IR), .InRegs(IR)) u_mul_hi (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(hi_fed[c]),
         .a_i(hi_a[32*c +: 32]), .b_i(rad ? div_y : hi_b_upd),
         .valid_o(mul_hi_v[c]), .y_o(mul_hi_y[32*c +: 32]));
@@ -262,7 +265,7 @@ module pree_preu #(
   endgenerate
 
   // MUL9: paper r2n = H.r2 * g, stable p = w32 * e (update)
-  pree_fp32_mul #(.Stages(M)) u_mul9 (
+  pree_fp32_mul #(.Stages(M - IR), .InRegs(IR)) u_mul9 (
     .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_MUL9] & upd),
     .a_i(mul9_a), .b_i(div_y), .valid_o(mul9_v), .y_o(mul9_y));
 
@@ -284,10 +287,10 @@ module pree_preu #(
       wire [31:0] na_y, n1_y;
 
       // ADD5: na = N + alpha; ADD6: n1 = N + ONE (update, stage 0)
-      pree_fp32_add #(.Stages(A)) u_add5 (
+      pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_add5 (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & upd),
         .a_i(hp_state_i[128 +: 32]), .b_i(alpha_i), .sub_i(1'b0), .valid_o(add5_v), .y_o(na_y));
-      pree_fp32_add #(.Stages(A)) u_add6 (
+      pree_fp32_add #(.Stages(A - IR), .InRegs(IR)) u_add6 (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & upd),
         .a_i(hp_state_i[128 +: 32]), .b_i(ONE), .sub_i(1'b0), .valid_o(add6_v), .y_o(n1_y));
 
@@ -351,7 +354,7 @@ module pree_preu #(
       localparam BW = S_WACC * CW;                      // the accumulators' stage
 
       // I2F: kf = binary32(k + 1) (update, stage 0)
-      pree_u64_to_f32 #(.Stages(U)) u_i2f (
+      pree_u64_to_f32 #(.Stages(U - IR), .InRegs(IR)) u_i2f (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(valid_i & upd), .a_i(kn),
         .valid_o(i2f_v), .y_o(kf_y));
 
@@ -368,12 +371,12 @@ module pree_preu #(
       // WACC0..2: T'_c = T_c + t_c; WACC3: w' = w + p (update)
       genvar g;
       for (g = 0; g < 3; g = g + 1) begin : g_wacc
-        pree_wacc #(.Stages(W)) u_wacc (
+        pree_wacc #(.Stages(W - IR), .InRegs(IR)) u_wacc (
           .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_WACC] & upd),
           .a_i(st_v[BW + F_T + 64*g +: 64]), .t_i(st_v[BW + F_TT + 32*g +: 32]),
           .valid_o(wacc_v[g]), .y_o(Tn_y[64*g +: 64]));
       end
-      pree_wacc #(.Stages(W)) u_wacc3 (
+      pree_wacc #(.Stages(W - IR), .InRegs(IR)) u_wacc3 (
         .clk_i(clk_i), .rst_ni(rst_ni), .valid_i(vs[S_WACC] & upd),
         .a_i(st_v[BW + F_W +: 64]), .t_i(st_v[BW + F_P +: 32]), .valid_o(wacc3_v), .y_o(wn_y));
 

@@ -1,8 +1,8 @@
 // pree_preu_plan.vh: the PREU's stage plan as constant functions of its units' latencies, written
 // once and included inside pree_preu (which builds the plan) and pree_top (which sizes its hazard
 // windows and ADISO-REC's depth from it). a, m, q, d, u, w: the latencies of pree_fp32_add, _mul,
-// _sqr, _div, pree_u64_to_f32 and pree_wacc (each unit's LATENCY = its Stages); the comparator is
-// combinational. docs/preu_datapath.md gives the plan and its figures.
+// _sqr, _div, pree_u64_to_f32 and pree_wacc in the PREU (preu_unit_lat: each unit's InRegs +
+// Stages); the comparator is combinational. docs/preu_datapath.md gives the plan and its figures.
 //
 // Update (both datapaths): d = pos - pos (add, stage 0), q = d * d (sqr, stage a), s = qx + qy
 // (add, a + q), d2 = s + qz (add, 2a + q, ready at 3a + q).
@@ -26,6 +26,24 @@ function integer preu_stages;
     if (stages != 0)         preu_stages = stages;
     else if (pipe_fast == 0) preu_stages = (kind == 3) ? 4 : 2;
     else                     preu_stages = (kind == 3) ? 31 : (kind == 2) ? 6 : (kind >= 4) ? 5 : 7;
+  end
+endfunction
+
+// Operand registers in front of every unit (each unit's InRegs): one with PipeFast 1, so that
+// the mode's operand selects (some thousand select bits from one input) end in a register of
+// each unit's own; none with PipeFast 0.
+function integer preu_in_regs;
+  input integer pipe_fast;
+  begin
+    preu_in_regs = (pipe_fast != 0) ? 1 : 0;
+  end
+endfunction
+
+// A unit's latency in the PREU: its stages and its operand registers. The plan below takes these.
+function integer preu_unit_lat;
+  input integer kind, pipe_fast, stages;
+  begin
+    preu_unit_lat = preu_stages(kind, pipe_fast, stages) + preu_in_regs(pipe_fast);
   end
 endfunction
 

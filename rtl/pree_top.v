@@ -43,12 +43,12 @@
 // (1 - alpha) / alpha) are run-time constants in binary32; change them only while idle_o is high.
 // Hazard windows (cycles after issue in which the same key must not issue again), from the
 // PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update latency (issue, C, the PREU's
-// update stages, write at the end of the last): 11 paper / 13 stable with PipeFast 0, 46 / 49
-// with PipeFast 1; radiance AddStages + 1 (pixel read RAD_LAT - AddStages - 1 cycles after
-// issue, written RAD_LAT after): 3 with PipeFast 0 (9 and 12), 8 with PipeFast 1 (51 and 59).
-// ADISO-REC's pipeline depth is the PREU's radiance latency (12, or 59). Consequence: per hit point, updates happen in
-// photon order; per pixel, contributions add in ADISO issue order (step by step, lane 0
-// first), which model/pree/adiso_order.c reproduces.
+// update stages, write at the end of the last): 11 paper / 13 stable with PipeFast 0, 49 / 53
+// with PipeFast 1; radiance the add's latency + 1 (pixel read RAD_LAT - add latency - 1 cycles
+// after issue, written RAD_LAT after): 3 with PipeFast 0 (9 and 12), 9 with PipeFast 1 (55 and
+// 64). ADISO-REC's pipeline depth is the PREU's radiance latency (12, or 64). Consequence: per
+// hit point, updates happen in photon order; per pixel, contributions add in ADISO issue order
+// (step by step, lane 0 first), which model/pree/adiso_order.c reproduces.
 //
 // Memories (all pree_ram_sdp, one write and one read port each):
 //   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular
@@ -143,13 +143,15 @@ module pree_top #(
   // The PREU's latencies (rtl/pree_preu_plan.vh) and the hazard windows they set (public to the
   // co-simulation host): update, issue + C + the update stages (11 paper / 13 stable with
   // PipeFast 0); radiance, from the pixel read (lreq, RAD_LAT - AddStages - 1 after issue) to
-  // its write (RAD_LAT after issue): AddStages + 1 (3 with PipeFast 0). RAD_LAT is also
+  // its write (RAD_LAT after issue): the add's latency + 1 (3 with PipeFast 0). RAD_LAT is also
   // ADISO-REC's depth, which sets the radiance pass's issue order (public, for the host's check).
-  localparam ST_ADD    = preu_stages(0, PipeFast, AddStages);
-  localparam ST_MUL    = preu_stages(1, PipeFast, MulStages);
-  localparam ST_DIV    = preu_stages(3, PipeFast, DivStages);
-  localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, preu_stages(2, PipeFast, SqrStages),
-                           ST_DIV, preu_stages(4, PipeFast, U2fStages), preu_stages(5, PipeFast, WaccStages));
+  localparam ST_ADD    = preu_unit_lat(0, PipeFast, AddStages);
+  localparam ST_MUL    = preu_unit_lat(1, PipeFast, MulStages);
+  localparam ST_DIV    = preu_unit_lat(3, PipeFast, DivStages);
+  localparam ST_SQR    = preu_unit_lat(2, PipeFast, SqrStages);
+  localparam ST_U2F    = preu_unit_lat(4, PipeFast, U2fStages);
+  localparam ST_WACC   = preu_unit_lat(5, PipeFast, WaccStages);
+  localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, ST_SQR, ST_DIV, ST_U2F, ST_WACC);
   localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;

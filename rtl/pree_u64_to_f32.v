@@ -8,8 +8,11 @@
 // Parameters:
 //   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
 //             clock rates (Stages = 5: every seam below registered). docs/fpga.md.
-//   Stages    1 .. 5, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    1 .. 5, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -35,7 +38,8 @@
 
 module pree_u64_to_f32 #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 5 : 2
+  parameter Stages   = (PipeFast != 0) ? 5 : 2,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -45,7 +49,6 @@ module pree_u64_to_f32 #(
   output wire [31:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MAX_STAGES = 5;
 
   // Registers at seam s (1 .. 5) under the stage plan above: bit s-1 of row Stages of PLANS
@@ -58,12 +61,19 @@ module pree_u64_to_f32 #(
                       * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-  pree_fp32_stages #(
-    .Unit ("pree_u64_to_f32"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0;
+  wire [63:0] a0;
+
+  pree_fp32_entry #(.Unit("pree_u64_to_f32"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(1), .Max(MAX_STAGES), .Width(64)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i}),
+    .valid_o (valid0), .q_o ({a0})
+  );
 
   // ---------------------------------------------------------------- A1: per-byte counts
-  // Byte 7 is the most significant (a_i[63:56]).
+  // Byte 7 is the most significant (a0[63:56]).
   wire [31:0] byte_lz;                             // 4 bits per byte: 0 .. 8
   wire [7:0]  byte_nz;
 
@@ -71,10 +81,10 @@ module pree_u64_to_f32 #(
   generate
     for (g = 0; g < 8; g = g + 1) begin : g_byte
       pree_fp32_lzc #(.Width(8), .CntWidth(4)) u_lzc (
-        .x_i   (a_i[8*g +: 8]),
+        .x_i   (a0[8*g +: 8]),
         .cnt_o (byte_lz[4*g +: 4])
       );
-      assign byte_nz[g] = (a_i[8*g +: 8] != 8'd0);
+      assign byte_nz[g] = (a0[8*g +: 8] != 8'd0);
     end
   endgenerate
 
@@ -84,8 +94,8 @@ module pree_u64_to_f32 #(
   wire [7:0]  s1_byte_nz;
 
   pree_fp32_pipe #(.Width(64 + 32 + 8), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({a_i, byte_lz, byte_nz}),
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0),
+    .d_i   ({a0, byte_lz, byte_nz}),
     .valid_o (s1_valid), .q_o ({s1_a, s1_byte_lz, s1_byte_nz})
   );
 

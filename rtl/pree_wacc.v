@@ -23,8 +23,11 @@
 // Parameters:
 //   PipeFast  0: the paper's configuration (Stages = 2); 1: the deep configuration for FPGA
 //             clock rates (Stages = 5: every seam below registered). docs/fpga.md.
-//   Stages    1 .. 5, the latency (LATENCY = Stages); overrides PipeFast's choice. Every value
+//   Stages    1 .. 5, the latency of the datapath; overrides PipeFast's choice. Every value
 //             gives the same bits.
+//   InRegs    0 or 1: registers on the operands before the datapath (seam 0), so that a
+//             caller's operand select ends in a register (the PREU with PipeFast = 1).
+//             LATENCY = InRegs + Stages.
 //
 // Protocol: fixed latency, no stalls. An operation presented with valid_i at a rising edge
 // appears on y_o with valid_o exactly LATENCY edges later; one operation may enter every cycle.
@@ -47,7 +50,8 @@
 
 module pree_wacc #(
   parameter PipeFast = 0,
-  parameter Stages   = (PipeFast != 0) ? 5 : 2
+  parameter Stages   = (PipeFast != 0) ? 5 : 2,
+  parameter InRegs   = 0
 ) (
   input  wire        clk_i,
   input  wire        rst_ni,
@@ -58,7 +62,6 @@ module pree_wacc #(
   output wire [63:0] y_o
 );
 
-  localparam LATENCY    = Stages;
   localparam MAX_STAGES = 5;
   localparam [63:0] WIDE_NAN = 64'hFF40_0000_0000_0000;
   localparam [63:0] WIDE_MAX = 64'hFEFF_FFFF_FFFF_FFFF;
@@ -73,21 +76,29 @@ module pree_wacc #(
                       * MAX_STAGES + s - 1] ? 1 : 0;
   endfunction
 
-  pree_fp32_stages #(
-    .Unit ("pree_wacc"), .Stages (LATENCY), .PipeFast (PipeFast), .Min (1), .Max (MAX_STAGES)
-  ) u_stages ();
+  // ---------------------------------------------------------------- entry: seam 0, the check
+  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  wire        valid0;
+  wire [63:0] a0;
+  wire [31:0] t0;
+
+  pree_fp32_entry #(.Unit("pree_wacc"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
+                    .Min(1), .Max(MAX_STAGES), .Width(96)) u_entry (
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i, t_i}),
+    .valid_o (valid0), .q_o ({a0, t0})
+  );
 
   // ---------------------------------------------------------------- A: classify, compare
-  wire [7:0]  exp_a  = a_i[63:56];
-  wire [55:0] man_a  = a_i[55:0];
-  wire [7:0]  exp_t  = t_i[30:23];
-  wire        sign_t = t_i[31];
+  wire [7:0]  exp_a  = a0[63:56];
+  wire [55:0] man_a  = a0[55:0];
+  wire [7:0]  exp_t  = t0[30:23];
+  wire        sign_t = t0[31];
   wire        nan_a  = (exp_a == 8'hFF) && (man_a != 56'd0);
   wire        inf_a  = (exp_a == 8'hFF) && (man_a == 56'd0);
   wire        expz_t, zero_t_unused, inf_t, nan_t;
 
   pree_fp32_class u_class_t (
-    .x_i (t_i[30:0]), .exp_zero_o (expz_t), .zero_o (zero_t_unused), .inf_o (inf_t),
+    .x_i (t0[30:0]), .exp_zero_o (expz_t), .zero_o (zero_t_unused), .inf_o (inf_t),
     .nan_o (nan_t)
   );
 
@@ -114,8 +125,8 @@ module pree_wacc #(
   wire [5:0]  s1_diff_at, s1_diff_ta;
 
   pree_fp32_pipe #(.Width(64 + 24 + 8 + 6 + 12), .Regs(seam_regs(1))) u_seam1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i),
-    .d_i   ({a_i, ~expz_t, t_i[22:0], exp_t1, pass_d, nan_d, max_d, swap,
+    .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid0),
+    .d_i   ({a0, ~expz_t, t0[22:0], exp_t1, pass_d, nan_d, max_d, swap,
              gone_at, gone_ta, diff_at[5:0], diff_ta[5:0]}),
     .valid_o (s1_valid),
     .q_o   ({s1_a, s1_t, s1_exp_t1, s1_pass, s1_nan, s1_max, s1_swap,

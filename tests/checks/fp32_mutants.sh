@@ -24,7 +24,7 @@ mutants=(
   "wacc@pree_wacc.v@s/carry ? sum\[56:1\] : sum\[55:0\];/carry ? sum[56:1] + {55'd0, sum[0]} : sum[55:0];/@carry normalisation rounds instead of truncating"
   "wacc@pree_wacc.v@s/wire        sat   = carry \& s4_exp_top;/wire        sat   = 1'b0;/@no saturation to WIDE_MAX"
   "wacc@pree_wacc.v@s/{man_s\[55\] ? exp_s : 8'd0, man_s}/{exp_s, man_s}/@e field kept when bit 55 is 0"
-  "wacc@pree_wacc.v@s/(inf_a | sign_t)/(inf_a | (sign_t \&\& t_i[30:0] != 31'd0))/@t = -0 added as +0"
+  "wacc@pree_wacc.v@s/(inf_a | sign_t)/(inf_a | (sign_t \&\& t0[30:0] != 31'd0))/@t = -0 added as +0"
   "u2f@pree_u64_to_f32.v@s/(norm\[36:0\] != 37'd0)/(norm[35:0] != 36'd0)/@sticky bit misses one bit"
   "u2f@pree_u64_to_f32.v@s/s2_a << {s2_lz\[5:3\], 3'd0}/s2_a << {1'b0, s2_lz[4:3], 3'd0}/@shift ignores lz bit 5"
 )

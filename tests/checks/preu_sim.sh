@@ -5,7 +5,7 @@
 # scoreboard) and the Verilog bench over 4,000 vectors each under Icarus and Verilator --binary
 # (each datapath with one cycle count in both simulators), and a run that switches modes with
 # operations in flight, which the RTL's PREE_ASSERT check must stop. PipeFast 1 (the deep plans:
-# update 45 / 48 stages, radiance 59), at a reduced size: the Verilator bench (50,000 operations
+# update 48 / 52 stages, radiance 64), at a reduced size: the Verilator bench (50,000 operations
 # each). The deep configurations' Verilog bench under Icarus is not run here: its time is in
 # elaborating the deep units, not in the vectors (PipeFast 1 paper, 100 vectors, 630 cycles: 449 s
 # wall on the shared 2-core machine; 1,000 vectors of both ran over 60 minutes); run it with
