@@ -10,7 +10,7 @@
 # Products in $(BUILD)/top_icarus: top_vecgen, one .vvp per configuration, vectors per run.
 
 TOPIV_DIR  := $(BUILD)/top_icarus
-TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
+TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
               rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 TOPIV_RTL_SUB := $(filter-out rtl/pree_top.v,$(TOPIV_RTL))
 TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC)
@@ -117,7 +117,9 @@ sim-top-icarus-runs: $(TOPIV_VVPS) $(TOPIV_VECS)
 	    fail=1; fi;) \
 	exit $$fail
 
-# Each mutant must fail its run with hit-point or pixel mismatches (not a time-out or assertion).
+# Each mutant must fail its run with hit-point or pixel mismatches, or by the memories' contract
+# check (pree_ram_banks under PREE_ASSERT: two reads or two writes of one bank in a cycle, which a
+# removed conflict rule lets through); not by a time-out or another assertion.
 sim-top-icarus-mutants: $(TOPIV_MUTVVPS) $(TOPIV_VECS)
 	@fail=0; \
 	$(foreach m,$(TOPIV_MUTANTS),\
@@ -126,6 +128,8 @@ sim-top-icarus-mutants: $(TOPIV_MUTVVPS) $(TOPIV_VECS)
 	    echo "mutant $(m): NOT detected by run $(TOPIV_RUN_$(m)) (log $(TOPIV_DIR)/mut_$(m).log)"; fail=1; \
 	  elif grep -q '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log && grep -q 'top_tb: FAIL' $(TOPIV_DIR)/mut_$(m).log; then \
 	    echo "mutant $(m): detected by run $(TOPIV_RUN_$(m)): $$(grep -c '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log) mismatch lines, first: $$(grep -m1 '^MISMATCH' $(TOPIV_DIR)/mut_$(m).log)"; \
+	  elif grep -q 'FATAL: .*pree_ram_banks .* in one cycle' $(TOPIV_DIR)/mut_$(m).log; then \
+	    echo "mutant $(m): detected by run $(TOPIV_RUN_$(m)): $$(grep -m1 -o 'pree_ram_banks .* in one cycle' $(TOPIV_DIR)/mut_$(m).log)"; \
 	  else tail -5 $(TOPIV_DIR)/mut_$(m).log; \
 	    echo "mutant $(m): failed, but not by a mismatch (log $(TOPIV_DIR)/mut_$(m).log)"; fail=1; fi;) \
 	exit $$fail

@@ -4,6 +4,7 @@
 // The include directory is rtl/ (rtl/pree_preu_plan.vh): -Irtl for Verilator and Icarus, +incdir+rtl or
 // Vivado's include_dirs elsewhere.
 rtl/pree_ram_sdp.v
+rtl/pree_ram_banks.v
 rtl/pree_reset_sync.v
 rtl/pree_fp32_lzc.v
 rtl/pree_fp32_class.v

@@ -283,37 +283,18 @@ module pree_top #(
   assign photons_done_o = photons_done_q;
 
   // ===============================================================================================
-  // Index table: NumPreu banks; bank = address mod NumPreu. The bank outputs are an array, so
-  // that a lane's selection is an NumPreu:1 multiplexer on an LANE_W-bit index.
-  wire [HpAW-1:0] idx_rd [0:NumPreu-1];
+  // Index table: NumPreu banks; bank = address mod NumPreu (its low LANE_W bits). A's lanes read
+  // it (update mode), the load port's lanes write it. The bank outputs are an array, so that a
+  // lane's selection is an NumPreu:1 multiplexer on an LANE_W-bit index.
+  wire [HpAW-1:0]         idx_rd [0:NumPreu-1];
+  wire [NumPreu*HpAW-1:0] idx_rdata;
 
+  pree_ram_banks #(.BankW(LANE_W), .RowW(IDX_ROW_W), .Width(HpAW), .Lanes(NumPreu)) u_idx (
+    .clk_i(clk_i), .rd_i(a_rd & {NumPreu{~mode_i}}), .rd_addr_i(af_ref), .wr_i(idx_we_i),
+    .wr_addr_i(idx_addr_i), .wr_data_i(idx_data_i), .rdata_o(idx_rdata));
   generate
     for (gb = 0; gb < NumPreu; gb = gb + 1) begin : g_idx
-      localparam [LANE_W-1:0] BANK = gb;
-      reg                 re, we;
-      reg [IDX_ROW_W-1:0] raddr, waddr;
-      reg [HpAW-1:0]      wdata;
-      wire [HpAW-1:0]     rdata;
-      integer j;
-      always @* begin
-        re = 1'b0; raddr = {IDX_ROW_W{1'b0}};
-        we = 1'b0; waddr = {IDX_ROW_W{1'b0}}; wdata = {HpAW{1'b0}};
-        for (j = 0; j < NumPreu; j = j + 1) begin
-          if (!mode_i && a_rd[j] && af_ref[j*IdxAW +: LANE_W] == BANK) begin
-            re    = 1'b1;
-            raddr = raddr | af_ref[j*IdxAW + LANE_W +: IDX_ROW_W];
-          end
-          if (idx_we_i[j] && idx_addr_i[j*IdxAW +: LANE_W] == BANK) begin
-            we    = 1'b1;
-            waddr = waddr | idx_addr_i[j*IdxAW + LANE_W +: IDX_ROW_W];
-            wdata = wdata | idx_data_i[j*HpAW +: HpAW];
-          end
-        end
-      end
-      pree_ram_sdp #(.Width(HpAW), .AddrW(IDX_ROW_W)) u_ram (
-        .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(rdata));
-      assign idx_rd[gb] = rdata;
+      assign idx_rd[gb] = idx_rdata[gb*HpAW +: HpAW];
     end
   endgenerate
 
@@ -534,15 +515,11 @@ module pree_top #(
   wire [NumPreu*96-1:0]      p_l;
   wire [NumPreu*STATE_W-1:0] p_state;
   reg  [NumPreu*PxBankW-1:0] px_rbank_q;
-  // Write-back words per lane, selected per bank by the lane number. The host's writes (only
-  // while idle, when no PREU writes back) go through lane 0's word.
-  wire [NumPreu-1:0]         wb_hp_en, wb_px_en;
-  wire [NumPreu*HpBankW-1:0] wb_hp_bank;
-  wire [STATE_W-1:0]         wb_hp_state [0:NumPreu-1];
-  wire [HP_ROW_W-1:0]        wb_hp_row   [0:NumPreu-1];
-  wire [95:0]                wb_px_sum   [0:NumPreu-1];
-  wire [PX_ROW_W-1:0]        wb_px_row   [0:NumPreu-1];
-
+  // Write-back requests per lane (update: the accepted state at its hit point; radiance: the pixel
+  // sum at its pixel), then the host's port as one more lane of the memories below.
+  wire [NumPreu-1:0]      wb_hp_en, wb_px_en;
+  wire [NumPreu*HpAW-1:0] wb_hp_addr;     // {row, bank}
+  wire [NumPreu*PxAW-1:0] p_lpix, p_wpix; // the pixel read (lreq) and written back
   generate
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
       // The lane's hit-point data: radiance, B's (read in A); update, from the bank the lane
@@ -552,8 +529,6 @@ module pree_top #(
       wire [STATE_W-1:0] hs   = mode_i ? b_hs[gl*STATE_W +: STATE_W] : hps_rd[hsel];
       wire [95:0]        li   = px_rd[px_rbank_q[gl*PxBankW +: PxBankW]];
       wire [KEY_W-1:0]   tag;
-      wire               host_hp = (gl == 0) && hp_we_i;
-      wire               host_px = (gl == 0) && px_we_i;
       assign l_pix[gl*PxAW +: PxAW] = hc[192 +: PxAW];
       if (KEY_W > HpAW) begin : g_tag_pad
         assign tag = mode_i ? b_key[gl*KEY_W +: KEY_W] : {{(KEY_W-HpAW){1'b0}}, c_hp_q[gl*HpAW +: HpAW]};
@@ -575,13 +550,12 @@ module pree_top #(
         .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
 
       // Write-back: update, the accepted hit-point state; radiance, the pixel sum.
-      assign wb_hp_en[gl] = !mode_i && p_vout[gl] && p_acc[gl];
-      assign wb_hp_bank[gl*HpBankW +: HpBankW] = hp_bank(p_tag[gl*KEY_W +: 2*HpBankW]);
-      assign wb_hp_state[gl] = host_hp ? hp_wdata_i[0 +: STATE_W] : p_state[gl*STATE_W +: STATE_W];
-      assign wb_hp_row[gl]   = host_hp ? hp_addr_i[HpAW-1:HpBankW] : p_tag[gl*KEY_W + HpBankW +: HP_ROW_W];
-      assign wb_px_en[gl]    = mode_i && p_vout[gl];
-      assign wb_px_sum[gl]   = host_px ? px_wdata_i : p_l[gl*96 +: 96];
-      assign wb_px_row[gl]   = host_px ? px_addr_i[PxAW-1:PxBankW] : p_tag[gl*KEY_W + PxBankW +: PX_ROW_W];
+      assign wb_hp_en[gl]   = !mode_i && p_vout[gl] && p_acc[gl];
+      assign wb_hp_addr[gl*HpAW +: HpAW] = {p_tag[gl*KEY_W + HpBankW +: HP_ROW_W],
+                                            hp_bank(p_tag[gl*KEY_W +: 2*HpBankW])};
+      assign wb_px_en[gl]   = mode_i && p_vout[gl];
+      assign p_lpix[gl*PxAW +: PxAW] = p_ltag[gl*KEY_W +: PxAW];
+      assign p_wpix[gl*PxAW +: PxAW] = p_tag[gl*KEY_W +: PxAW];
     end
   endgenerate
 
@@ -592,46 +566,36 @@ module pree_top #(
   end
 
   // ===============================================================================================
-  // Hit-point memory: HP_BANKS banks of a constant and a state RAM.
+  // Hit-point memory: HP_BANKS banks of a constant and a state RAM. Lanes: the PREU lanes
+  // (update: B's issue; radiance: A's read; state writes: update write-back), then the host
+  // (both parts; the constant part has no other writer).
+  localparam HM_LANES = NumPreu + 1;
+  wire [HpAW-1:0]              host_hp_addr = {hp_addr_i[HpAW-1:HpBankW],
+                                              hp_bank(hp_addr_i[2*HpBankW-1:0])};
+  wire [HM_LANES*HpAW-1:0]     hm_rd_addr;
+  wire [HP_BANKS*CONST_W-1:0]  hpc_rdata;
+  wire [HP_BANKS*STATE_W-1:0]  hps_rdata;
+
+  generate
+    for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_hm_lane
+      assign hm_rd_addr[gl*HpAW +: HpAW] = {hr_addr[gl*HpAW + HpBankW +: HP_ROW_W],
+                                            hr_bank[gl*HpBankW +: HpBankW]};
+    end
+  endgenerate
+  assign hm_rd_addr[NumPreu*HpAW +: HpAW] = host_hp_addr;
+
+  pree_ram_banks #(.BankW(HpBankW), .RowW(HP_ROW_W), .Width(CONST_W), .Lanes(HM_LANES)) u_hp_const (
+    .clk_i(clk_i), .rd_i({hp_re_i, hr_re}), .rd_addr_i(hm_rd_addr),
+    .wr_i({hp_we_i, {NumPreu{1'b0}}}), .wr_addr_i({host_hp_addr, {NumPreu*HpAW{1'b0}}}),
+    .wr_data_i({hp_wdata_i[STATE_W +: CONST_W], {NumPreu*CONST_W{1'b0}}}), .rdata_o(hpc_rdata));
+  pree_ram_banks #(.BankW(HpBankW), .RowW(HP_ROW_W), .Width(STATE_W), .Lanes(HM_LANES)) u_hp_state (
+    .clk_i(clk_i), .rd_i({hp_re_i, hr_re}), .rd_addr_i(hm_rd_addr),
+    .wr_i({hp_we_i, wb_hp_en}), .wr_addr_i({host_hp_addr, wb_hp_addr}),
+    .wr_data_i({hp_wdata_i[0 +: STATE_W], p_state}), .rdata_o(hps_rdata));
   generate
     for (gb = 0; gb < HP_BANKS; gb = gb + 1) begin : g_hp
-      localparam [HpBankW-1:0] BANK = gb;
-      reg                re, wec, wes;
-      reg [HP_ROW_W-1:0] raddr;
-      reg                hit;          // a lane writes back into this bank
-      reg [LANE_W-1:0]   wl;           // the (one) lane that does; 0 otherwise (the host's word)
-      integer j;
-      always @* begin
-        // Reads: host, then the lanes (update: B issue; radiance: A read).
-        re = 1'b0; raddr = {HP_ROW_W{1'b0}};
-        if (hp_re_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK) begin
-          re = 1'b1; raddr = hp_addr_i[HpAW-1:HpBankW];
-        end
-        for (j = 0; j < NumPreu; j = j + 1)
-          if (hr_re[j] && hr_bank[j*HpBankW +: HpBankW] == BANK) begin
-            re = 1'b1; raddr = raddr | hr_addr[j*HpAW + HpBankW +: HP_ROW_W];
-          end
-        // Writes: host (both parts), update write-back of accepted photons (state).
-        wec = hp_we_i && hp_bank(hp_addr_i[2*HpBankW-1:0]) == BANK;
-        hit = 1'b0; wl = {LANE_W{1'b0}};
-        for (j = 0; j < NumPreu; j = j + 1)
-          if (wb_hp_en[j] && wb_hp_bank[j*HpBankW +: HpBankW] == BANK) begin
-            hit = 1'b1; wl = j[LANE_W-1:0];
-          end
-        wes = wec | hit;
-      end
-      wire [HP_ROW_W-1:0] waddr  = wb_hp_row[wl];
-      wire [STATE_W-1:0]  wstate = wb_hp_state[wl];
-      wire [CONST_W-1:0]  rconst;
-      wire [STATE_W-1:0]  rstate;
-      pree_ram_sdp #(.Width(CONST_W), .AddrW(HP_ROW_W)) u_const (
-        .clk_i(clk_i), .we_i(wec), .waddr_i(waddr), .wdata_i(hp_wdata_i[STATE_W +: CONST_W]),
-        .re_i(re), .raddr_i(raddr), .rdata_o(rconst));
-      pree_ram_sdp #(.Width(STATE_W), .AddrW(HP_ROW_W)) u_state (
-        .clk_i(clk_i), .we_i(wes), .waddr_i(waddr), .wdata_i(wstate),
-        .re_i(re), .raddr_i(raddr), .rdata_o(rstate));
-      assign hpc_rd[gb] = rconst;
-      assign hps_rd[gb] = rstate;
+      assign hpc_rd[gb] = hpc_rdata[gb*CONST_W +: CONST_W];
+      assign hps_rd[gb] = hps_rdata[gb*STATE_W +: STATE_W];
     end
   endgenerate
 
@@ -640,40 +604,19 @@ module pree_top #(
   assign hp_rdata_o = {hpc_rd[hp_hsel], hps_rd[hp_hsel]};
 
   // ===============================================================================================
-  // Pixel memory: PX_BANKS banks of {b, g, r}.
+  // Pixel memory: PX_BANKS banks of {b, g, r}; bank = the pixel's low bits. Lanes: the PREU lanes
+  // (radiance: the pixel-sum read, lreq, and the write-back), then the host.
   reg [PxBankW-1:0] px_hbank_q;
 
+  wire [PX_BANKS*96-1:0] px_rdata;
+
+  pree_ram_banks #(.BankW(PxBankW), .RowW(PX_ROW_W), .Width(96), .Lanes(NumPreu + 1)) u_px (
+    .clk_i(clk_i), .rd_i({px_re_i, p_lreq}), .rd_addr_i({px_addr_i, p_lpix}),
+    .wr_i({px_we_i, wb_px_en}), .wr_addr_i({px_addr_i, p_wpix}), .wr_data_i({px_wdata_i, p_l}),
+    .rdata_o(px_rdata));
   generate
     for (gb = 0; gb < PX_BANKS; gb = gb + 1) begin : g_px
-      localparam [PxBankW-1:0] BANK = gb;
-      reg                re, we;
-      reg [PX_ROW_W-1:0] raddr;
-      reg [LANE_W-1:0]   wl;           // the (one) lane writing back here; 0: the host's word
-      integer j;
-      always @* begin
-        re = 1'b0; raddr = {PX_ROW_W{1'b0}};
-        if (px_re_i && px_addr_i[PxBankW-1:0] == BANK) begin
-          re = 1'b1; raddr = px_addr_i[PxAW-1:PxBankW];
-        end
-        we = px_we_i && px_addr_i[PxBankW-1:0] == BANK;
-        wl = {LANE_W{1'b0}};
-        for (j = 0; j < NumPreu; j = j + 1) begin
-          if (p_lreq[j] && p_ltag[j*KEY_W +: PxBankW] == BANK) begin
-            re = 1'b1; raddr = raddr | p_ltag[j*KEY_W + PxBankW +: PX_ROW_W];
-          end
-          // Radiance write-back: the (one) lane whose pixel sum belongs to this bank.
-          if (wb_px_en[j] && p_tag[j*KEY_W +: PxBankW] == BANK) begin
-            we = 1'b1; wl = j[LANE_W-1:0];
-          end
-        end
-      end
-      wire [PX_ROW_W-1:0] waddr = wb_px_row[wl];
-      wire [95:0]         wdata = wb_px_sum[wl];
-      wire [95:0]         rdata;
-      pree_ram_sdp #(.Width(96), .AddrW(PX_ROW_W)) u_ram (
-        .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(rdata));
-      assign px_rd[gb] = rdata;
+      assign px_rd[gb] = px_rdata[gb*96 +: 96];
     end
   endgenerate
 
