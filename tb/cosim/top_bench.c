@@ -195,191 +195,234 @@ static void leave_fail_trace(int argc, char **argv, const cosim_drv_t *drv, int 
         printf("top_bench: first mismatch at cycle %llu; the traced rerun wrote no %s\n", (unsigned long long)first, path);
 }
 
-int main(int argc, char **argv)
+/* The bench's options (the usage above) and its scenario. */
+typedef struct {
+    int preu, photons, nhp, reorder, dp, pf, reset_at, hold_reset;
+    double gap, stall, alpha;
+    uint64_t wait_limit, seed;
+    const char *scenario, *trace;
+    unsigned long long win_from, win_to;
+    int one, dense, mixed, abank;
+} bench_opts_t;
+
+/* Parses the command line into *o; 0, or 2 (a usage error, said on stderr). */
+static int parse_args(int argc, char **argv, bench_opts_t *o)
 {
-    int preu = 4, photons = 3000, nhp = 2000, reorder = 1, dp = 0, pf = 0, reset_at = -1, hold_reset = 0;
-    double gap = 0, stall = 0, alpha = 0.7;
-    uint64_t wait_limit = 0;
-    const char *scenario = "random", *trace = NULL;
-    unsigned long long win_from = 0, win_to = UINT64_MAX;
-    uint64_t seed = 1;
+    *o = (bench_opts_t){.preu = 4, .photons = 3000, .nhp = 2000, .reorder = 1, .reset_at = -1, .alpha = 0.7,
+                        .seed = 1, .scenario = "random", .win_to = UINT64_MAX};
     for (int i = 1; i < argc; i++) {
-        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(o, "--no-reorder")) { reorder = 0; continue; }
-        if (!strcmp(o, "--pipe-fast")) { pf = 1; continue; }
-        if (!strcmp(o, "--hold-reset")) { hold_reset = 1; continue; }
-        if (!v) { fprintf(stderr, "top_bench: %s needs a value\n", o); return 2; }
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--no-reorder")) { o->reorder = 0; continue; }
+        if (!strcmp(a, "--pipe-fast")) { o->pf = 1; continue; }
+        if (!strcmp(a, "--hold-reset")) { o->hold_reset = 1; continue; }
+        if (!v) { fprintf(stderr, "top_bench: %s needs a value\n", a); return 2; }
         i++;
-        if (!strcmp(o, "--preu")) preu = atoi(v);
-        else if (!strcmp(o, "--scenario")) scenario = v;
-        else if (!strcmp(o, "--datapath")) dp = atoi(v);
-        else if (!strcmp(o, "--alpha")) alpha = atof(v);
-        else if (!strcmp(o, "--photons")) photons = atoi(v);
-        else if (!strcmp(o, "--hp")) nhp = atoi(v);
-        else if (!strcmp(o, "--gap")) gap = atof(v);
-        else if (!strcmp(o, "--stall")) stall = atof(v);
-        else if (!strcmp(o, "--reset-at")) reset_at = atoi(v);
-        else if (!strcmp(o, "--wait-limit")) wait_limit = strtoull(v, NULL, 0);
-        else if (!strcmp(o, "--seed")) seed = strtoull(v, NULL, 0);
-        else if (!strcmp(o, "--trace")) trace = v;
-        else if (!strcmp(o, "--trace-window")) {
-            if (sscanf(v, "%llu:%llu", &win_from, &win_to) != 2 || win_to < win_from) {
+        if (!strcmp(a, "--preu")) o->preu = atoi(v);
+        else if (!strcmp(a, "--scenario")) o->scenario = v;
+        else if (!strcmp(a, "--datapath")) o->dp = atoi(v);
+        else if (!strcmp(a, "--alpha")) o->alpha = atof(v);
+        else if (!strcmp(a, "--photons")) o->photons = atoi(v);
+        else if (!strcmp(a, "--hp")) o->nhp = atoi(v);
+        else if (!strcmp(a, "--gap")) o->gap = atof(v);
+        else if (!strcmp(a, "--stall")) o->stall = atof(v);
+        else if (!strcmp(a, "--reset-at")) o->reset_at = atoi(v);
+        else if (!strcmp(a, "--wait-limit")) o->wait_limit = strtoull(v, NULL, 0);
+        else if (!strcmp(a, "--seed")) o->seed = strtoull(v, NULL, 0);
+        else if (!strcmp(a, "--trace")) o->trace = v;
+        else if (!strcmp(a, "--trace-window")) {
+            if (sscanf(v, "%llu:%llu", &o->win_from, &o->win_to) != 2 || o->win_to < o->win_from) {
                 fprintf(stderr, "top_bench: --trace-window %s is not FIRST:LAST\n", v);
                 return 2;
             }
         }
-        else { fprintf(stderr, "top_bench: unknown option %s\n", o); return 2; }
+        else { fprintf(stderr, "top_bench: unknown option %s\n", a); return 2; }
     }
-    int one = !strcmp(scenario, "one"), dense = !strcmp(scenario, "dense"), mixed = !strcmp(scenario, "mixed");
-    int abank = !strcmp(scenario, "abank");
-    if (!one && !dense && !mixed && !abank && strcmp(scenario, "random")) { fprintf(stderr, "top_bench: unknown scenario %s\n", scenario); return 2; }
-    if (nhp < 1 || nhp > (1 << COSIM_HPAW) || photons < 0) { fprintf(stderr, "top_bench: bad sizes\n"); return 2; }
-    if ((dp != 0 && dp != 1) || !(alpha > 0 && alpha <= 1)) { fprintf(stderr, "top_bench: bad --datapath or --alpha\n"); return 2; }
-    rng_state = seed * 0x9E3779B97F4A7C15ull + 7;
-    if (abank) reorder = 0;   /* its own host streams the candidates as drawn */
-    if (abank && (stall > 0 || reset_at >= 0 || hold_reset)) { fprintf(stderr, "top_bench: abank takes no faults but --gap\n"); return 2; }
+    o->one = !strcmp(o->scenario, "one"), o->dense = !strcmp(o->scenario, "dense");
+    o->mixed = !strcmp(o->scenario, "mixed"), o->abank = !strcmp(o->scenario, "abank");
+    if (!o->one && !o->dense && !o->mixed && !o->abank && strcmp(o->scenario, "random")) {
+        fprintf(stderr, "top_bench: unknown scenario %s\n", o->scenario);
+        return 2;
+    }
+    if (o->nhp < 1 || o->nhp > (1 << COSIM_HPAW) || o->photons < 0) { fprintf(stderr, "top_bench: bad sizes\n"); return 2; }
+    if ((o->dp != 0 && o->dp != 1) || !(o->alpha > 0 && o->alpha <= 1)) {
+        fprintf(stderr, "top_bench: bad --datapath or --alpha\n");
+        return 2;
+    }
+    if (o->abank) o->reorder = 0;   /* its own host streams the candidates as drawn */
+    if (o->abank && (o->stall > 0 || o->reset_at >= 0 || o->hold_reset)) {
+        fprintf(stderr, "top_bench: abank takes no faults but --gap\n");
+        return 2;
+    }
+    return 0;
+}
 
-    char err[256];
-    cosim_rtl_t *rtl = cosim_rtl_new(preu, dp, pf, trace, err, sizeof err);
-    if (!rtl) { fprintf(stderr, "top_bench: %s\n", err); return 2; }
-    cosim_rtl_trace_window(rtl, win_from, win_to);
-    const uint32_t alpha32 = preu_f32(alpha), kappa32 = preu_kappa(alpha32);
-    cosim_rtl_in(rtl)->alpha = alpha32;
-    cosim_rtl_in(rtl)->kappa = kappa32;
-    cosim_drv_opts_t dopt = {.preu = preu, .datapath = dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl), .reorder = reorder,
-                             .gap = gap, .stall = stall, .seed = seed, .wait_limit = wait_limit};
-    cosim_drv_t *drv = cosim_drv_new(rtl, &dopt);
+/* The synthetic work: hit points (the model state of the chosen datapath, and the words loaded
+ * into the RTL), their pixels, and the photons with their candidate lists (photon p's at
+ * cands + p * MAX_CAND); the model is updated in photon order as they are drawn. */
+typedef struct {
+    preu_hp_t *hp;
+    preu_shp_t *sp;
+    preu_hpw_t *init;
+    int32_t *pixel;
+    preu_photon_t *phs;
+    uint32_t *cands;
+    int *ncand, npix;
+} bench_work_t;
 
-    /* Hit points in the unit cube; dense: 40 per pixel, else 3 per pixel. */
-    const int per_px = dense ? 40 : 3;
-    const int npix = (nhp + per_px - 1) / per_px;
-    preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp);
-    preu_shp_t *sp = calloc((size_t)nhp, sizeof *sp);
-    preu_hpw_t *init = calloc((size_t)nhp, sizeof *init);
-    int32_t *pixel = calloc((size_t)nhp, sizeof *pixel);
-    preu_photon_t *phs = malloc((size_t)(photons ? photons : 1) * sizeof *phs);
-    uint32_t *cands = malloc((size_t)(photons ? photons : 1) * MAX_CAND * sizeof *cands);
-    int *ncand = malloc((size_t)(photons ? photons : 1) * sizeof *ncand);
-    if (!hp || !sp || !init || !pixel || !phs || !cands || !ncand) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
-    mis_stream_t mis;
-    if (abank && mis_init(&mis, (size_t)photons)) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
-    for (int i = 0; i < nhp; i++) {
+static void free_work(bench_work_t *w)
+{
+    free(w->hp); free(w->sp); free(w->init); free(w->pixel); free(w->phs); free(w->cands); free(w->ncand);
+}
+
+/* Hit points in the unit cube; dense: 40 per pixel, else 3 per pixel. */
+static void make_hit_points(const bench_opts_t *o, bench_work_t *w)
+{
+    const int per_px = o->dense ? 40 : 3;
+    w->npix = (o->nhp + per_px - 1) / per_px;
+    for (int i = 0; i < o->nhp; i++) {
+        preu_hp_t *h = &w->hp[i];
         for (int c = 0; c < 3; c++) {
-            hp[i].pos[c] = fb(frand(0, 1));
-            hp[i].f[c] = fb(frand(0, 1));
-            hp[i].tau[c] = 0;
+            h->pos[c] = fb(frand(0, 1));
+            h->f[c] = fb(frand(0, 1));
+            h->tau[c] = 0;
         }
-        hp[i].r2 = fb(one ? 4.0f : frand(0.01f, 0.2f));
-        hp[i].n = 0;
-        memcpy(sp[i].pos, hp[i].pos, sizeof sp[i].pos);
-        memcpy(sp[i].f, hp[i].f, sizeof sp[i].f);
-        preu_stable_init(&sp[i], (double)fp32_from_bits(hp[i].r2));
-        pixel[i] = i / per_px;
-        if (dp) preu_hpw_from_stable(&init[i], &sp[i]);
-        else preu_hpw_from_paper(&init[i], &hp[i]);
+        h->r2 = fb(o->one ? 4.0f : frand(0.01f, 0.2f));
+        h->n = 0;
+        memcpy(w->sp[i].pos, h->pos, sizeof h->pos);
+        memcpy(w->sp[i].f, h->f, sizeof h->f);
+        preu_stable_init(&w->sp[i], (double)fp32_from_bits(h->r2));
+        w->pixel[i] = i / per_px;
+        if (o->dp) preu_hpw_from_stable(&w->init[i], &w->sp[i]);
+        else preu_hpw_from_paper(&w->init[i], h);
     }
-    cosim_drv_load_hp(drv, init, pixel, (size_t)nhp);
+}
 
-    /* Photons, applied to the model in photon order, then streamed to the RTL. */
-    for (int p = 0; p < photons; p++) {
+/* Photon p's candidates by the scenario (at most MAX_CAND); returns how many. */
+static size_t draw_candidates(const bench_opts_t *o, int p, uint32_t *cand)
+{
+    size_t n = 0;
+    if (o->one) {
+        cand[n++] = 0;
+        return n;
+    }
+    size_t want = o->dense ? 1 + rnd() % 60 : 1 + rnd() % 40;
+    uint32_t base = o->dense ? (rnd() % (uint32_t)o->nhp) : 0;
+    while (n < want) {
+        uint32_t h = o->dense ? (base + rnd() % 80) % (uint32_t)o->nhp : rnd() % (uint32_t)o->nhp;
+        int dup = 0;
+        for (size_t k = 0; k < n; k++) dup |= cand[k] == h;
+        if (!dup) cand[n++] = h;
+        if (n >= (size_t)o->nhp) break;
+    }
+    if (o->mixed && p % 4 == 0) {
+        int has0 = 0;
+        for (size_t k = 0; k < n; k++) has0 |= cand[k] == 0;
+        if (!has0) cand[n++] = 0;
+    }
+    return n;
+}
+
+/* Allocates and draws the work; -1 when out of memory. */
+static int make_work(const bench_opts_t *o, uint32_t alpha32, uint32_t kappa32, bench_work_t *w, mis_stream_t *mis)
+{
+    const size_t np = (size_t)(o->photons ? o->photons : 1), nh = (size_t)o->nhp;
+    *w = (bench_work_t){.hp = calloc(nh, sizeof *w->hp), .sp = calloc(nh, sizeof *w->sp),
+                        .init = calloc(nh, sizeof *w->init), .pixel = calloc(nh, sizeof *w->pixel),
+                        .phs = malloc(np * sizeof *w->phs), .cands = malloc(np * MAX_CAND * sizeof *w->cands),
+                        .ncand = malloc(np * sizeof *w->ncand)};
+    if (!w->hp || !w->sp || !w->init || !w->pixel || !w->phs || !w->cands || !w->ncand) return -1;
+    if (o->abank && mis_init(mis, (size_t)o->photons)) return -1;
+    make_hit_points(o, w);
+    for (int p = 0; p < o->photons; p++) {
         preu_photon_t ph;
-        uint32_t *cand = cands + (size_t)p * MAX_CAND;
+        uint32_t *cand = w->cands + (size_t)p * MAX_CAND;
         for (int c = 0; c < 3; c++) { ph.pos[c] = fb(frand(0, 1)); ph.phi[c] = fb(frand(0, 2)); }
-        size_t n = 0;
-        if (one) {
-            cand[n++] = 0;
-        } else {
-            size_t want = dense ? 1 + rnd() % 60 : 1 + rnd() % 40;
-            uint32_t base = dense ? (rnd() % (uint32_t)nhp) : 0;
-            while (n < want) {
-                uint32_t h = dense ? (base + rnd() % 80) % (uint32_t)nhp : rnd() % (uint32_t)nhp;
-                int dup = 0;
-                for (size_t k = 0; k < n; k++) dup |= cand[k] == h;
-                if (!dup) cand[n++] = h;
-                if (n >= (size_t)nhp) break;
-            }
-            if (mixed && p % 4 == 0) {
-                int has0 = 0;
-                for (size_t k = 0; k < n; k++) has0 |= cand[k] == 0;
-                if (!has0) cand[n++] = 0;
-            }
-        }
+        size_t n = draw_candidates(o, p, cand);
         for (size_t k = 0; k < n; k++) {
-            if (dp) preu_stable_update(&sp[cand[k]], &ph, kappa32);
-            else preu_update(&hp[cand[k]], &ph, alpha32);
+            if (o->dp) preu_stable_update(&w->sp[cand[k]], &ph, kappa32);
+            else preu_update(&w->hp[cand[k]], &ph, alpha32);
         }
-        if (abank) mis_add(&mis, preu, &ph, cand, n);
-        phs[p] = ph;
-        ncand[p] = (int)n;
+        if (o->abank) mis_add(mis, o->preu, &ph, cand, n);
+        w->phs[p] = ph;
+        w->ncand[p] = (int)n;
     }
-    if (!abank && reset_at >= 0) {
-        if (stream(drv, phs, cands, ncand, 0, reset_at < photons ? reset_at : photons)) return 1;
-        if (!(drv = reset_and_reload(rtl, drv, &dopt, init, pixel, (size_t)nhp))) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
-    }
-    if (hold_reset) cosim_rtl_set_reset(rtl, 1);   /* the PREE takes nothing: a wait must run out */
-    if (!abank && stream(drv, phs, cands, ncand, 0, photons)) return hold_reset ? 3 : 1;
-    if (hold_reset) { printf("top_bench: FAIL: no wait ran out with rst_ni held low\n"); return 1; }
-    uint64_t sent = cosim_drv_ops_sent(drv);
-    if (abank) {
-        if (misplaced_stream(rtl, &mis, preu, gap)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
-        sent = mis.ne;
-    }
-    if (cosim_drv_drain(drv)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
-    uint64_t cnt[COSIM_NCNT];
-    cosim_drv_counters(drv, cnt);
+    return 0;
+}
 
+/* Every hit point's words read back against the model's; the mismatches (the first 20 printed),
+ * and in *first_hp the first differing hit point (-1: none). */
+static unsigned long long compare_hit_points(cosim_drv_t *drv, const bench_opts_t *o, const bench_work_t *w,
+                                             int *first_hp)
+{
     unsigned long long bad = 0;
-    int first_hp = -1;
-    for (int i = 0; i < nhp; i++) {
+    *first_hp = -1;
+    for (int i = 0; i < o->nhp; i++) {
         preu_hpw_t h, m;
         uint32_t px;
         cosim_drv_read_hp(drv, (uint32_t)i, &h, &px);
-        if (dp) preu_hpw_from_stable(&m, &sp[i]);
-        else preu_hpw_from_paper(&m, &hp[i]);
-        int differ = px != (uint32_t)pixel[i] || memcmp(h.pos, m.pos, sizeof h.pos) || memcmp(h.f, m.f, sizeof h.f) ||
-                     memcmp(h.st, m.st, (size_t)preu_state_words(dp) * sizeof h.st[0]);
-        if (differ) {
-            if (first_hp < 0) first_hp = i;
-            if (bad < 20) {
-                printf("MISMATCH hit point %d (px RTL %u model %d): state words RTL/model", i, px, pixel[i]);
-                for (int k = 0; k < preu_state_words(dp); k++) printf(" %08x/%08x", h.st[k], m.st[k]);
-                printf("\n");
-            }
-            bad++;
+        if (o->dp) preu_hpw_from_stable(&m, &w->sp[i]);
+        else preu_hpw_from_paper(&m, &w->hp[i]);
+        int differ = px != (uint32_t)w->pixel[i] || memcmp(h.pos, m.pos, sizeof h.pos) ||
+                     memcmp(h.f, m.f, sizeof h.f) || memcmp(h.st, m.st, (size_t)preu_state_words(o->dp) * sizeof h.st[0]);
+        if (!differ) continue;
+        if (*first_hp < 0) *first_hp = i;
+        if (bad < 20) {
+            printf("MISMATCH hit point %d (px RTL %u model %d): state words RTL/model", i, px, w->pixel[i]);
+            for (int k = 0; k < preu_state_words(o->dp); k++) printf(" %08x/%08x", h.st[k], m.st[k]);
+            printf("\n");
         }
-    }
-    /* Radiance: model in issue order, RTL pass. */
-    uint32_t ne = preu_n_emitted((uint64_t)photons > 0 ? (uint64_t)photons : 1);
-    uint32_t *order = malloc((size_t)nhp * sizeof *order);
-    uint32_t *Lm = calloc((size_t)npix * 3, sizeof *Lm), *Lr = calloc((size_t)npix * 3, sizeof *Lr);
-    adiso_order((uint32_t)nhp, preu, cosim_rtl_radiance_depth(rtl), order);
-    for (int k = 0; k < nhp; k++) {
-        uint32_t *L = Lm + 3 * (size_t)pixel[order[k]];
-        if (dp) preu_stable_radiance(L, &sp[order[k]], ne);
-        else preu_radiance(L, &hp[order[k]], ne);
-    }
-    if (cosim_drv_radiance(drv, (uint32_t)nhp, ne, (size_t)npix, Lr)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
-    uint64_t cnt2[COSIM_NCNT];
-    cosim_drv_counters(drv, cnt2);
-    for (int j = 0; j < npix * 3; j++) {
-        if (Lr[j] != Lm[j]) {
-            if (bad < 20) printf("MISMATCH pixel %d channel %d: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
-            bad++;
-        }
-    }
-    uint64_t ops = 0, rops = 0;
-    for (int l = 0; l < preu; l++) { ops += cnt[CNT_OPS0 + l]; rops += cnt2[CNT_OPS0 + l]; }
-    rops -= ops;
-    if (ops != sent || rops != (uint64_t)nhp) {
-        printf("MISMATCH operation counts: update %llu (sent %llu), radiance %llu (hit points %d)\n",
-               (unsigned long long)ops, (unsigned long long)sent, (unsigned long long)rops, nhp);
         bad++;
     }
-    if (abank && cnt[CNT_ABANK] == 0) {
+    return bad;
+}
+
+/* The radiance pass: the model in ADISO-REC's issue order against the RTL's pass; the
+ * mismatches (printed while fewer than 20 in all), or -1 when the pass fails. */
+static long long compare_radiance(cosim_drv_t *drv, cosim_rtl_t *rtl, const bench_opts_t *o, const bench_work_t *w,
+                                  unsigned long long bad_before)
+{
+    const uint32_t ne = preu_n_emitted((uint64_t)o->photons > 0 ? (uint64_t)o->photons : 1);
+    uint32_t *order = malloc((size_t)o->nhp * sizeof *order);
+    uint32_t *Lm = calloc((size_t)w->npix * 3, sizeof *Lm), *Lr = calloc((size_t)w->npix * 3, sizeof *Lr);
+    long long bad = -1;
+    if (order && Lm && Lr) {
+        adiso_order((uint32_t)o->nhp, o->preu, cosim_rtl_radiance_depth(rtl), order);
+        for (int k = 0; k < o->nhp; k++) {
+            uint32_t *L = Lm + 3 * (size_t)w->pixel[order[k]];
+            if (o->dp) preu_stable_radiance(L, &w->sp[order[k]], ne);
+            else preu_radiance(L, &w->hp[order[k]], ne);
+        }
+        if (cosim_drv_radiance(drv, (uint32_t)o->nhp, ne, (size_t)w->npix, Lr)) fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv));
+        else bad = 0;
+    }
+    for (int j = 0; bad >= 0 && j < w->npix * 3; j++) {
+        if (Lr[j] == Lm[j]) continue;
+        if (bad_before + (unsigned long long)bad < 20)
+            printf("MISMATCH pixel %d channel %d: RTL %08x model %08x\n", j / 3, j % 3, Lr[j], Lm[j]);
+        bad++;
+    }
+    free(order); free(Lm); free(Lr);
+    return bad;
+}
+
+/* The counters' checks (operations counted as sent; stage-A bank conflicts only in abank) and
+ * the summary line; returns the mismatches. cnt: after the update pass, cnt2: after radiance. */
+static unsigned long long report(const bench_opts_t *o, uint64_t sent, const uint64_t *cnt, const uint64_t *cnt2,
+                                 unsigned long long bad)
+{
+    uint64_t ops = 0, rops = 0;
+    for (int l = 0; l < o->preu; l++) { ops += cnt[CNT_OPS0 + l]; rops += cnt2[CNT_OPS0 + l]; }
+    rops -= ops;
+    if (ops != sent || rops != (uint64_t)o->nhp) {
+        printf("MISMATCH operation counts: update %llu (sent %llu), radiance %llu (hit points %d)\n",
+               (unsigned long long)ops, (unsigned long long)sent, (unsigned long long)rops, o->nhp);
+        bad++;
+    }
+    if (o->abank && cnt[CNT_ABANK] == 0) {
         printf("MISMATCH abank: misplaced index entries caused no stage-A bank conflict in update mode\n");
         bad++;
     }
-    if (!abank && cnt[CNT_ABANK] != 0) {   /* the driver's placement promises none */
+    if (!o->abank && cnt[CNT_ABANK] != 0) {   /* the driver's placement promises none */
         printf("MISMATCH abank: %llu stage-A bank conflict cycles in update mode with the driver's index placement\n",
                (unsigned long long)cnt[CNT_ABANK]);
         bad++;
@@ -387,17 +430,68 @@ int main(int argc, char **argv)
     printf("top_bench preu=%d datapath=%d pipe_fast=%d scenario=%s photons=%d hp=%d gap=%g reorder=%d: update %llu ops / %llu cycles "
            "(util %.4f; short cycles haz %llu dup %llu bank %llu abank %llu starve %llu), radiance %llu ops / %llu cycles "
            "(haz %llu dup %llu bank %llu abank %llu starve %llu): %s\n",
-           preu, dp, pf, scenario, photons, nhp, gap, reorder, (unsigned long long)ops, (unsigned long long)cnt[CNT_CYC_UPD],
-           cnt[CNT_CYC_UPD] ? (double)ops / (double)(preu * cnt[CNT_CYC_UPD]) : 0.0,
+           o->preu, o->dp, o->pf, o->scenario, o->photons, o->nhp, o->gap, o->reorder, (unsigned long long)ops,
+           (unsigned long long)cnt[CNT_CYC_UPD],
+           cnt[CNT_CYC_UPD] ? (double)ops / (double)(o->preu * cnt[CNT_CYC_UPD]) : 0.0,
            (unsigned long long)cnt[CNT_HAZ], (unsigned long long)cnt[CNT_DUP], (unsigned long long)cnt[CNT_BANK],
            (unsigned long long)cnt[CNT_ABANK], (unsigned long long)cnt[CNT_STARVE],
            (unsigned long long)rops, (unsigned long long)cnt2[CNT_CYC_RAD],
            (unsigned long long)(cnt2[CNT_HAZ] - cnt[CNT_HAZ]), (unsigned long long)(cnt2[CNT_DUP] - cnt[CNT_DUP]),
            (unsigned long long)(cnt2[CNT_BANK] - cnt[CNT_BANK]), (unsigned long long)(cnt2[CNT_ABANK] - cnt[CNT_ABANK]),
            (unsigned long long)(cnt2[CNT_STARVE] - cnt[CNT_STARVE]), bad ? "FAIL" : "PASS");
-    if (bad && !trace) leave_fail_trace(argc, argv, drv, first_hp, cosim_rtl_update_window(rtl));
-    free(order); free(Lm); free(Lr); free(hp); free(sp); free(init); free(pixel); free(phs); free(cands); free(ncand);
-    if (abank) mis_free(&mis);
+    return bad;
+}
+
+int main(int argc, char **argv)
+{
+    bench_opts_t o;
+    if (parse_args(argc, argv, &o)) return 2;
+    rng_state = o.seed * 0x9E3779B97F4A7C15ull + 7;
+    char err[256];
+    cosim_rtl_t *rtl = cosim_rtl_new(o.preu, o.dp, o.pf, o.trace, err, sizeof err);
+    if (!rtl) { fprintf(stderr, "top_bench: %s\n", err); return 2; }
+    cosim_rtl_trace_window(rtl, o.win_from, o.win_to);
+    const uint32_t alpha32 = preu_f32(o.alpha), kappa32 = preu_kappa(alpha32);
+    cosim_rtl_in(rtl)->alpha = alpha32;
+    cosim_rtl_in(rtl)->kappa = kappa32;
+    cosim_drv_opts_t dopt = {.preu = o.preu, .datapath = o.dp, .hp_bank_w = cosim_rtl_hp_bank_w(rtl),
+                             .reorder = o.reorder, .gap = o.gap, .stall = o.stall, .seed = o.seed,
+                             .wait_limit = o.wait_limit};
+    cosim_drv_t *drv = cosim_drv_new(rtl, &dopt);
+    bench_work_t w;
+    mis_stream_t mis;
+    if (!drv || make_work(&o, alpha32, kappa32, &w, &mis)) { fprintf(stderr, "top_bench: out of memory\n"); return 2; }
+    cosim_drv_load_hp(drv, w.init, w.pixel, (size_t)o.nhp);
+
+    /* The photons, streamed to the RTL (the model took them in photon order above). */
+    if (!o.abank && o.reset_at >= 0) {
+        if (stream(drv, w.phs, w.cands, w.ncand, 0, o.reset_at < o.photons ? o.reset_at : o.photons)) return 1;
+        if (!(drv = reset_and_reload(rtl, drv, &dopt, w.init, w.pixel, (size_t)o.nhp))) {
+            fprintf(stderr, "top_bench: out of memory\n");
+            return 2;
+        }
+    }
+    if (o.hold_reset) cosim_rtl_set_reset(rtl, 1);   /* the PREE takes nothing: a wait must run out */
+    if (!o.abank && stream(drv, w.phs, w.cands, w.ncand, 0, o.photons)) return o.hold_reset ? 3 : 1;
+    if (o.hold_reset) { printf("top_bench: FAIL: no wait ran out with rst_ni held low\n"); return 1; }
+    uint64_t sent = cosim_drv_ops_sent(drv);
+    if (o.abank) {
+        if (misplaced_stream(rtl, &mis, o.preu, o.gap)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
+        sent = mis.ne;
+    }
+    if (cosim_drv_drain(drv)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
+    uint64_t cnt[COSIM_NCNT], cnt2[COSIM_NCNT];
+    cosim_drv_counters(drv, cnt);
+
+    int first_hp;
+    unsigned long long bad = compare_hit_points(drv, &o, &w, &first_hp);
+    long long rbad = compare_radiance(drv, rtl, &o, &w, bad);
+    if (rbad < 0) return 1;
+    cosim_drv_counters(drv, cnt2);
+    bad = report(&o, sent, cnt, cnt2, bad + (unsigned long long)rbad);
+    if (bad && !o.trace) leave_fail_trace(argc, argv, drv, first_hp, cosim_rtl_update_window(rtl));
+    free_work(&w);
+    if (o.abank) mis_free(&mis);
     cosim_drv_free(drv);
     cosim_rtl_free(rtl);
     return bad ? 1 : 0;
