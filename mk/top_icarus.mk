@@ -10,7 +10,7 @@
 # Products in $(BUILD)/top_icarus: top_vecgen, one .vvp per configuration, vectors per run.
 
 TOPIV_DIR  := $(BUILD)/top_icarus
-TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
+TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_counters.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
               rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 TOPIV_RTL_SUB := $(filter-out rtl/pree_top.v,$(TOPIV_RTL))
 TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC)

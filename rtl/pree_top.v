@@ -61,7 +61,7 @@
 // in distinct banks (distinct addresses mod NumPreu): the rate at which the PREUs consume
 // entries at full utilization, whatever PhotonsPerCycle.
 //
-// Counters (cnt_o, CtrW bits each, counting only while cnt_en_i is high), in order:
+// Counters (cnt_o, rtl/pree_counters.v; CtrW bits each, counting only while cnt_en_i is high):
 //   0 update cycles, 1 radiance cycles, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve (cycles in
 //   which fewer than NumPreu operations issued, by cause: the first blocked lane's cause in B,
 //   else abank when A left lanes for a bank conflict, else starve: the controller offered
@@ -157,8 +157,6 @@ module pree_top #(
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
   localparam B_SKID  /*verilator public*/ = (PipeFast != 0) ? 1 : 0; // B's skid slot (B skid)
   localparam SKID_W    = (HpAW + PH_W > CONST_W + STATE_W) ? HpAW + PH_W : CONST_W + STATE_W;
-  localparam [CtrW-1:0] CNT_ONE = 1;
-  localparam NCNT      = 7 + NumPreu;
   localparam PH_W      = 192;
 
   generate
@@ -626,38 +624,12 @@ module pree_top #(
   assign px_rdata_o = px_rd[px_hbank_q];
 
   // ===============================================================================================
-  // Idle and counters.
+  // Idle and counters (pree_counters).
   assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !s_full && !(|c_v_q) && !(|p_busy);
 
-  reg [NCNT*CtrW-1:0] cnt_q;
-  reg [2:0]            cause;    // 0 none, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve
-  reg                  found;
-  always @* begin : stall_cause
-    integer l;
-    cause = 3'd0;
-    found = 1'b0;
-    for (l = 0; l < NumPreu; l = l + 1)
-      if (!found && bl_pend[l] && !b_iss[l]) begin
-        found = 1'b1;
-        cause = b_haz[l] ? 3'd2 : b_dup[l] ? 3'd3 : 3'd4;
-      end
-    if (b_iss != {NumPreu{1'b1}} && !found) cause = bl_short ? 3'd5 : 3'd6;
-  end
-
-  always @(posedge clk_i or negedge rst_ni) begin : counters
-    integer l;
-    if (!rst_ni) begin
-      cnt_q <= {NCNT*CtrW{1'b0}};
-    end else if (cnt_en_i) begin
-      if (mode_i) cnt_q[1*CtrW +: CtrW] <= cnt_q[1*CtrW +: CtrW] + CNT_ONE;
-      else        cnt_q[0 +: CtrW]       <= cnt_q[0 +: CtrW] + CNT_ONE;
-      for (l = 2; l < 7; l = l + 1)
-        if (cause == l[2:0]) cnt_q[l*CtrW +: CtrW] <= cnt_q[l*CtrW +: CtrW] + CNT_ONE;
-      for (l = 0; l < NumPreu; l = l + 1)
-        if (p_valid[l]) cnt_q[(7+l)*CtrW +: CtrW] <= cnt_q[(7+l)*CtrW +: CtrW] + CNT_ONE;
-    end
-  end
-  assign cnt_o = cnt_q;
+  pree_counters #(.NumPreu(NumPreu), .CtrW(CtrW)) u_counters (
+    .clk_i(clk_i), .rst_ni(rst_ni), .en_i(cnt_en_i), .mode_i(mode_i), .pend_i(bl_pend),
+    .iss_i(b_iss), .haz_i(b_haz), .dup_i(b_dup), .short_i(bl_short), .op_i(p_valid), .cnt_o(cnt_o));
 
 `ifdef PREE_ASSERT
   // Protocol checks (simulation only): mode changes and host access only when idle, index
