@@ -76,9 +76,9 @@ SIM_TARGETS  += sim-top-icarus
 .PHONY: sim-top-icarus sim-top-icarus-runs sim-top-icarus-mutants
 
 # The vector writer: the fp32 PREU model and the radiance order of libpree's objects.
-$(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c $(BUILD)/model/pree/preu_fp32.o $(BUILD)/model/pree/adiso_order.o
+$(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c tb/cosim/bench_draw.h $(BUILD)/model/pree/preu_fp32.o $(BUILD)/model/pree/adiso_order.o
 	@mkdir -p $(@D)
-	$(CC) $(TOPIV_CFLAGS) $^ -o $@ -lm
+	$(CC) $(TOPIV_CFLAGS) $(filter-out %.h,$^) -o $@ -lm
 
 define TOPIV_CFG_RULE
 $(TOPIV_DIR)/top_tb_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)

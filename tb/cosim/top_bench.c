@@ -33,14 +33,11 @@
 #include <string.h>
 #include "adiso_order.h"
 #include "cosim_drv.h"
+#include "bench_draw.h"
 #include "fail_trace.h"
 
 static uint64_t rng_state;
-static uint32_t rnd(void)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return (uint32_t)(rng_state >> 33);
-}
+static uint32_t rnd(void) { return draw_u32(&rng_state); }
 static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(rnd() & 0xffffff) / 16777216.0f; }
 static uint32_t fb(float x) { return fp32_to_bits(x); }
 
@@ -202,7 +199,8 @@ typedef struct {
     uint64_t wait_limit, seed;
     const char *scenario, *trace;
     unsigned long long win_from, win_to;
-    int one, dense, mixed, abank;
+    draw_scenario_t sc;
+    int one, dense, abank;
 } bench_opts_t;
 
 /* Parses the command line into *o; 0, or 2 (a usage error, said on stderr). */
@@ -237,12 +235,12 @@ static int parse_args(int argc, char **argv, bench_opts_t *o)
         }
         else { fprintf(stderr, "top_bench: unknown option %s\n", a); return 2; }
     }
-    o->one = !strcmp(o->scenario, "one"), o->dense = !strcmp(o->scenario, "dense");
-    o->mixed = !strcmp(o->scenario, "mixed"), o->abank = !strcmp(o->scenario, "abank");
-    if (!o->one && !o->dense && !o->mixed && !o->abank && strcmp(o->scenario, "random")) {
+    o->abank = !strcmp(o->scenario, "abank");
+    if (draw_scenario(o->abank ? "random" : o->scenario, &o->sc)) {
         fprintf(stderr, "top_bench: unknown scenario %s\n", o->scenario);
         return 2;
     }
+    o->one = o->sc == DRAW_ONE, o->dense = o->sc == DRAW_DENSE;
     if (o->nhp < 1 || o->nhp > (1 << COSIM_HPAW) || o->photons < 0) { fprintf(stderr, "top_bench: bad sizes\n"); return 2; }
     if ((o->dp != 0 && o->dp != 1) || !(o->alpha > 0 && o->alpha <= 1)) {
         fprintf(stderr, "top_bench: bad --datapath or --alpha\n");
@@ -297,31 +295,6 @@ static void make_hit_points(const bench_opts_t *o, bench_work_t *w)
     }
 }
 
-/* Photon p's candidates by the scenario (at most MAX_CAND); returns how many. */
-static size_t draw_candidates(const bench_opts_t *o, int p, uint32_t *cand)
-{
-    size_t n = 0;
-    if (o->one) {
-        cand[n++] = 0;
-        return n;
-    }
-    size_t want = o->dense ? 1 + rnd() % 60 : 1 + rnd() % 40;
-    uint32_t base = o->dense ? (rnd() % (uint32_t)o->nhp) : 0;
-    while (n < want) {
-        uint32_t h = o->dense ? (base + rnd() % 80) % (uint32_t)o->nhp : rnd() % (uint32_t)o->nhp;
-        int dup = 0;
-        for (size_t k = 0; k < n; k++) dup |= cand[k] == h;
-        if (!dup) cand[n++] = h;
-        if (n >= (size_t)o->nhp) break;
-    }
-    if (o->mixed && p % 4 == 0) {
-        int has0 = 0;
-        for (size_t k = 0; k < n; k++) has0 |= cand[k] == 0;
-        if (!has0) cand[n++] = 0;
-    }
-    return n;
-}
-
 /* Allocates and draws the work; -1 when out of memory. */
 static int make_work(const bench_opts_t *o, uint32_t alpha32, uint32_t kappa32, bench_work_t *w, mis_stream_t *mis)
 {
@@ -337,7 +310,7 @@ static int make_work(const bench_opts_t *o, uint32_t alpha32, uint32_t kappa32, 
         preu_photon_t ph;
         uint32_t *cand = w->cands + (size_t)p * MAX_CAND;
         for (int c = 0; c < 3; c++) { ph.pos[c] = fb(frand(0, 1)); ph.phi[c] = fb(frand(0, 2)); }
-        size_t n = draw_candidates(o, p, cand);
+        size_t n = draw_candidates(&rng_state, o->abank ? DRAW_RANDOM : o->sc, p, (uint32_t)o->nhp, cand);
         for (size_t k = 0; k < n; k++) {
             if (o->dp) preu_stable_update(&w->sp[cand[k]], &ph, kappa32);
             else preu_update(&w->hp[cand[k]], &ph, alpha32);

@@ -26,20 +26,14 @@
 #include <stdlib.h>
 #include <string.h>
 #include "adiso_order.h"
+#include "bench_draw.h"
 #include "preu_fp32.h"
 
 #define MAX_CAND 64
 
 static uint64_t rng_state;
-static uint32_t rnd(void)
-{
-    rng_state = rng_state * 6364136223846793005ull + 1442695040888963407ull;
-    return (uint32_t)(rng_state >> 33);
-}
-static uint32_t frand_bits(float lo, float hi)
-{
-    return fp32_to_bits(lo + (hi - lo) * (float)(rnd() & 0xffffff) / 16777216.0f);
-}
+static uint32_t rnd(void) { return draw_u32(&rng_state); }
+static uint32_t frand_bits(float lo, float hi) { return draw_f32_bits(&rng_state, lo, hi); }
 
 static FILE *open_out(const char *base, const char *ext)
 {
@@ -77,9 +71,10 @@ int main(int argc, char **argv)
         else if (!strcmp(o, "--place")) place_random = !strcmp(v, "random");
         else { fprintf(stderr, "top_vecgen: unknown option %s\n", o); return 2; }
     }
-    const int one = !strcmp(scenario, "one"), dense = !strcmp(scenario, "dense");
-    const int mixed = !strcmp(scenario, "mixed"), random_sc = !strcmp(scenario, "random");
-    if (!out || !(one || dense || mixed || random_sc) || preu < 2 || preu > 64 || (preu & (preu - 1)) ||
+    draw_scenario_t sc = DRAW_RANDOM;
+    const int bad_sc = draw_scenario(scenario, &sc);
+    const int one = sc == DRAW_ONE, dense = sc == DRAW_DENSE, random_sc = sc == DRAW_RANDOM;
+    if (!out || bad_sc || preu < 2 || preu > 64 || (preu & (preu - 1)) ||
         hp_aw < 4 || hp_aw > 24 || idx_aw < 6 || idx_aw > 16 || px_aw < 2 || px_aw > 24 || photons < 1) {
         fprintf(stderr, "usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario "
                         "random|one|dense|mixed] [--photons N] [--hp N] [--seed S] [--place packed|random] OUT\n");
@@ -119,25 +114,9 @@ int main(int argc, char **argv)
     for (int p = 0; p < photons; p++) {
         preu_photon_t ph;
         for (int c = 0; c < 3; c++) { ph.pos[c] = frand_bits(0, 1); ph.phi[c] = frand_bits(0, 2); }
-        uint32_t cand[MAX_CAND];
-        size_t n = 0;
-        if (one) {
-            cand[n++] = 0;
-        } else if (!(random_sc && rnd() % 32 == 0)) {   /* random: about 3% photons without candidates */
-            size_t want = dense ? 1 + rnd() % 60 : 1 + rnd() % 40;
-            uint32_t base = dense ? rnd() % (uint32_t)nhp : 0;
-            while (n < want && n < (size_t)nhp) {
-                uint32_t h = dense ? (base + rnd() % 80) % (uint32_t)nhp : rnd() % (uint32_t)nhp;
-                int dup = 0;
-                for (size_t k = 0; k < n; k++) dup |= cand[k] == h;
-                if (!dup) cand[n++] = h;
-            }
-            if (mixed && p % 4 == 0) {
-                int has0 = 0;
-                for (size_t k = 0; k < n; k++) has0 |= cand[k] == 0;
-                if (!has0) cand[n++] = 0;
-            }
-        }
+        uint32_t cand[DRAW_MAX_CAND];
+        /* random: about 3% of the photons without candidates */
+        size_t n = (random_sc && rnd() % 32 == 0) ? 0 : draw_candidates(&rng_state, sc, p, (uint32_t)nhp, cand);
         for (size_t k = 0; k < n; k++) preu_update(&hp[cand[k]], &ph, PREU_ALPHA);
         uint64_t pa = 0;
         if (n) {
