@@ -50,44 +50,64 @@ static void put_hp(FILE *f, const preu_hp_t *h, uint32_t pixel)
             h->pos[2], h->pos[1], h->pos[0], h->n, h->r2, h->tau[2], h->tau[1], h->tau[0]);
 }
 
-int main(int argc, char **argv)
+/* The generator's options (the usage below) and what follows from them. */
+typedef struct {
+    int preu, hp_aw, idx_aw, px_aw, photons, nhp, place_random, per_px, npix;
+    const char *scenario, *out;
+    draw_scenario_t sc;
+    uint64_t seed;
+} vecgen_opts_t;
+
+/* Parses and checks the command line; 0, or 2 after a usage line on stderr. */
+static int parse_args(int argc, char **argv, vecgen_opts_t *o)
 {
-    int preu = 4, hp_aw = 10, idx_aw = 8, px_aw = 9, photons = 300, nhp = 0, place_random = 0;
-    const char *scenario = "random", *out = NULL;
-    uint64_t seed = 1;
+    *o = (vecgen_opts_t){.preu = 4, .hp_aw = 10, .idx_aw = 8, .px_aw = 9, .photons = 300, .scenario = "random",
+                         .seed = 1};
     for (int i = 1; i < argc; i++) {
-        const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (o[0] != '-') { out = o; continue; }
-        if (!v) { fprintf(stderr, "top_vecgen: %s needs a value\n", o); return 2; }
+        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (a[0] != '-') { o->out = a; continue; }
+        if (!v) { fprintf(stderr, "top_vecgen: %s needs a value\n", a); return 2; }
         i++;
-        if (!strcmp(o, "--preu")) preu = atoi(v);
-        else if (!strcmp(o, "--hp-aw")) hp_aw = atoi(v);
-        else if (!strcmp(o, "--idx-aw")) idx_aw = atoi(v);
-        else if (!strcmp(o, "--px-aw")) px_aw = atoi(v);
-        else if (!strcmp(o, "--scenario")) scenario = v;
-        else if (!strcmp(o, "--photons")) photons = atoi(v);
-        else if (!strcmp(o, "--hp")) nhp = atoi(v);
-        else if (!strcmp(o, "--seed")) seed = strtoull(v, NULL, 0);
-        else if (!strcmp(o, "--place")) place_random = !strcmp(v, "random");
-        else { fprintf(stderr, "top_vecgen: unknown option %s\n", o); return 2; }
+        if (!strcmp(a, "--preu")) o->preu = atoi(v);
+        else if (!strcmp(a, "--hp-aw")) o->hp_aw = atoi(v);
+        else if (!strcmp(a, "--idx-aw")) o->idx_aw = atoi(v);
+        else if (!strcmp(a, "--px-aw")) o->px_aw = atoi(v);
+        else if (!strcmp(a, "--scenario")) o->scenario = v;
+        else if (!strcmp(a, "--photons")) o->photons = atoi(v);
+        else if (!strcmp(a, "--hp")) o->nhp = atoi(v);
+        else if (!strcmp(a, "--seed")) o->seed = strtoull(v, NULL, 0);
+        else if (!strcmp(a, "--place")) o->place_random = !strcmp(v, "random");
+        else { fprintf(stderr, "top_vecgen: unknown option %s\n", a); return 2; }
     }
-    draw_scenario_t sc = DRAW_RANDOM;
-    const int bad_sc = draw_scenario(scenario, &sc);
-    const int one = sc == DRAW_ONE, dense = sc == DRAW_DENSE, random_sc = sc == DRAW_RANDOM;
-    if (!out || bad_sc || preu < 2 || preu > 64 || (preu & (preu - 1)) ||
-        hp_aw < 4 || hp_aw > 24 || idx_aw < 6 || idx_aw > 16 || px_aw < 2 || px_aw > 24 || photons < 1) {
+    const int bad_sc = draw_scenario(o->scenario, &o->sc);
+    if (!o->out || bad_sc || o->preu < 2 || o->preu > 64 || (o->preu & (o->preu - 1)) || o->hp_aw < 4 ||
+        o->hp_aw > 24 || o->idx_aw < 6 || o->idx_aw > 16 || o->px_aw < 2 || o->px_aw > 24 || o->photons < 1) {
         fprintf(stderr, "usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario "
                         "random|one|dense|mixed] [--photons N] [--hp N] [--seed S] [--place packed|random] OUT\n");
         return 2;
     }
-    const uint32_t depth = 1u << idx_aw;
-    if (nhp <= 0) nhp = (1 << hp_aw) - (1 << hp_aw) / 8;   /* leave some addresses unused */
-    const int per_px = dense ? 40 : 3;
-    const int npix = (nhp + per_px - 1) / per_px;
-    if (nhp > (1 << hp_aw) || npix > (1 << px_aw) || MAX_CAND + 2 * (uint32_t)preu > depth) {
-        fprintf(stderr, "top_vecgen: %d hit points / %d pixels / %d-entry photons do not fit\n", nhp, npix, MAX_CAND);
+    if (o->nhp <= 0) o->nhp = (1 << o->hp_aw) - (1 << o->hp_aw) / 8;   /* leave some addresses unused */
+    o->per_px = o->sc == DRAW_DENSE ? 40 : 3;
+    o->npix = (o->nhp + o->per_px - 1) / o->per_px;
+    if (o->nhp > (1 << o->hp_aw) || o->npix > (1 << o->px_aw) || MAX_CAND + 2 * (uint32_t)o->preu > (1u << o->idx_aw)) {
+        fprintf(stderr, "top_vecgen: %d hit points / %d pixels / %d-entry photons do not fit\n", o->nhp, o->npix,
+                MAX_CAND);
         return 2;
     }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    vecgen_opts_t opt;
+    if (parse_args(argc, argv, &opt)) return 2;
+    const int preu = opt.preu, photons = opt.photons, nhp = opt.nhp, place_random = opt.place_random;
+    const int per_px = opt.per_px, npix = opt.npix;
+    const int one = opt.sc == DRAW_ONE, random_sc = opt.sc == DRAW_RANDOM;
+    const draw_scenario_t sc = opt.sc;
+    const char *out = opt.out, *scenario = opt.scenario;
+    const uint32_t depth = 1u << opt.idx_aw;
+    const uint64_t seed = opt.seed;
     rng_state = seed * 0x9E3779B97F4A7C15ull + 11;
 
     FILE *fhp = open_out(out, "hp"), *fph = open_out(out, "ph"), *fidx = open_out(out, "idx");
@@ -149,7 +169,8 @@ int main(int argc, char **argv)
     for (int j = 0; j < npix; j++) fprintf(fpx, "%08x%08x%08x\n", L[3 * j + 2], L[3 * j + 1], L[3 * j]);
 
     const uint32_t meta[16] = {(uint32_t)nhp, (uint32_t)npix, (uint32_t)photons, (uint32_t)entries, ne,
-                               (uint32_t)ops, (uint32_t)preu, (uint32_t)hp_aw, (uint32_t)idx_aw, (uint32_t)px_aw,
+                               (uint32_t)ops, (uint32_t)preu, (uint32_t)opt.hp_aw, (uint32_t)opt.idx_aw,
+                               (uint32_t)opt.px_aw,
                                (uint32_t)place_random};
     for (int k = 0; k < 16; k++) fprintf(fmeta, "%08x\n", meta[k]);
     int bad = 0;
