@@ -52,7 +52,7 @@ FP32_IV_QUICK ?= 20000
 FP32_IV_FULL  ?= 200000
 FP32_SEED     ?= 1
 FP32_CFLAGS   := -std=c11 -D_GNU_SOURCE -O2 $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC) -Itb/fp32
-FP32_GEN_DEPS := tb/fp32/fp32_gen.h model/pree/fp32_ops.h model/pree/wide_acc.h
+FP32_GEN_DEPS := tb/fp32/fp32_gen.h tb/fp32/fp32_gen_cases.h model/pree/fp32_ops.h model/pree/wide_acc.h
 
 FP32_VL_BIN := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/vl_$(u)/fp32_bench_$(u))
 FP32_IV_SIM := $(foreach u,$(FP32_UNITS),$(FP32_DIR)/tb_fp32_$(u).vvp)
@@ -66,9 +66,18 @@ SIM_TARGETS   += sim-fp32
 
 # The case generator (shared by both simulators) and the Icarus vector writer: C11, with the
 # bit-exactness flags of the model, since the reference is host float arithmetic.
-$(FP32_DIR)/fp32_gen.o: tb/fp32/fp32_gen.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
+# fp32_gen.o: the binary32 units' cases (fp32_gen.c) and the stable datapath's (fp32_gen_wide.c)
+# in one relocatable object, which every bench links.
+$(FP32_DIR)/fp32_gen_%.o: tb/fp32/fp32_gen_%.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(FP32_CFLAGS) -c $< -o $@
+
+$(FP32_DIR)/fp32_gen_b32.o: tb/fp32/fp32_gen.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(CC) $(FP32_CFLAGS) -c $< -o $@
+
+$(FP32_DIR)/fp32_gen.o: $(FP32_DIR)/fp32_gen_b32.o $(FP32_DIR)/fp32_gen_wide.o
+	$(LD) -r $^ -o $@
 
 $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	$(CC) $(FP32_CFLAGS) $< $(FP32_DIR)/fp32_gen.o -o $@ -lm
