@@ -138,56 +138,26 @@ int chain(VHarness<Vpree_preu> &h, uint64_t n, double alpha)
     return errors ? 1 : 0;
 }
 
-}  // namespace
-
-int main(int argc, char **argv)
-{
-    if (argc >= 3 && !std::strcmp(argv[1], "--chain")) {
-        const uint64_t n = std::strtoull(argv[2], nullptr, 0);
-        const double alpha = argc >= 4 ? std::atof(argv[3]) : 0.7;
-        if (n < 1 || !(alpha > 0 && alpha <= 1)) { std::fprintf(stderr, "preu_bench: bad --chain arguments\n"); return 2; }
-        VHarness<Vpree_preu> h(argc, argv);
-        if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
-        h->valid_i = 0;
-        h.reset(2);
-        return chain(h, n, alpha);
-    }
-    std::vector<const char *> pos;
-    for (int i = 1; i < argc; i++) if (argv[i][0] != '+') pos.push_back(argv[i]);
-    int count = pos.size() > 0 ? std::atoi(pos[0]) : 200000;
-    uint64_t seed = pos.size() > 1 ? std::strtoull(pos[1], nullptr, 0) : 1;
-    if (count < 1) { std::fprintf(stderr, "preu_bench: count must be >= 1\n"); return 2; }
-
-    // The harness holds the plusargs for the model; tracing is compiled in but off unless
-    // +trace=FILE is given.
-    VHarness<Vpree_preu> h(argc, argv);
-    if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
-    Vpree_preu *const dut = &h.dut();
-
-    std::vector<preu_vec_t> seq(count);
-    preu_seq_gen(seq.data(), count, seed, DP);
-    for (int i = 1; i < argc; i++) {
-        unsigned long long bad;
-        if (std::sscanf(argv[i], "+inject_error=%llu", &bad) == 1 && bad < (unsigned long long)count) {
-            if (seq[bad].mode) seq[bad].lo[0] ^= 1; else seq[bad].sto[0] ^= 1;
-        }
-    }
-
-    // Reset: two cycles with rst_ni low, inputs idle.
-    dut->valid_i = 0; dut->mode_i = 0;
-    h.reset(2);
-
+// The random-sequence run: the sequence, what is in flight, the counters; one cycle is drive()
+// (this cycle's inputs: junk, then the operation offered, if any), then check() (this cycle's
+// outputs against the expected ones), then the harness's tick.
+struct Run {
+    Vpree_preu *dut;
+    const std::vector<preu_vec_t> &seq;
+    const int count;
     std::deque<Pending> results, lreqs;
     uint32_t junk_state = 12345;
-    auto junk = [&junk_state]() { junk_state = junk_state * 1664525u + 1013904223u; return junk_state; };
-    int next = 0, gap_left = seq[0].gap, mode = 0;
+    int next = 0, gap_left, mode = 0;
     bool l_due = false;            // lreq_o was high last cycle: drive that op's L now
     uint32_t l_index = 0, ne_cur = 0, alpha_cur = 0, kappa_cur = 0;
     uint64_t cycle = 0, issued = 0, checked = 0, accepted = 0, switches = 0, idle = 0;
-    const uint64_t max_cycles = (uint64_t)count * (40 + RAD_LAT) + 1000;
 
-    while ((next < count || !results.empty()) && cycle < max_cycles) {
-        // Inputs for this cycle: junk first, then whatever is meant to be read.
+    Run(Vpree_preu *d, const std::vector<preu_vec_t> &s, int n) : dut(d), seq(s), count(n), gap_left(s[0].gap) {}
+    uint32_t junk() { junk_state = junk_state * 1664525u + 1013904223u; return junk_state; }
+    bool done() const { return next >= count && results.empty(); }
+
+    void drive()
+    {
         uint32_t j[PREU_STATE_MAX];
         for (auto *w : {&dut->hp_pos_i, &dut->hp_f_i, &dut->ph_pos_i, &dut->ph_phi_i, &dut->l_i}) {
             j[0] = junk(); j[1] = junk(); j[2] = junk();
@@ -231,8 +201,10 @@ int main(int argc, char **argv)
             idle++;
         }
         dut->eval();
+    }
 
-        // Outputs of this cycle.
+    void check_lreq()
+    {
         l_due = false;
         if (dut->lreq_o) {
             if (lreqs.empty() || lreqs.front().due != cycle || dut->lreq_tag_o != lreqs.front().index) {
@@ -247,49 +219,102 @@ int main(int argc, char **argv)
             report(seq[lreqs.front().index], lreqs.front().index, "lreq_o missing", cycle);
             lreqs.pop_front();
         }
-        if (dut->valid_o) {
-            if (results.empty()) {
-                report(seq[0], 0, "valid_o with nothing in flight", cycle);
-            } else {
-                Pending p = results.front();
-                results.pop_front();
-                const preu_vec_t &v = seq[p.index];
-                char msg[240];
-                if (p.due != cycle || dut->tag_o != p.index) {
-                    std::snprintf(msg, sizeof msg, "result at cycle %" PRIu64 " tag %u, expected cycle %" PRIu64 " tag %u",
-                                  cycle, dut->tag_o, p.due, p.index);
-                    report(v, p.index, msg, cycle);
-                } else if (v.mode == 0) {
-                    if (dut->accept_o != v.accept || !eq(dut->state_o, v.sto)) {
-                        int n = std::snprintf(msg, sizeof msg, "got accept %d state", dut->accept_o);
-                        for (int k = NST; k-- > 0 && n < (int)sizeof msg - 10;)
-                            n += std::snprintf(msg + n, sizeof msg - n, " %08x", dut->state_o[k]);
-                        report(v, p.index, msg, cycle);
-                    }
-                    accepted += v.accept;
-                } else {
-                    if (dut->accept_o || !eq(dut->l_o, v.lo)) {
-                        std::snprintf(msg, sizeof msg, "got accept %d l %08x %08x %08x", dut->accept_o,
-                                      dut->l_o[0], dut->l_o[1], dut->l_o[2]);
-                        report(v, p.index, msg, cycle);
-                    }
-                }
-                checked++;
-            }
-        } else if (!results.empty() && results.front().due == cycle) {
-            report(seq[results.front().index], results.front().index, "valid_o missing", cycle);
-            results.pop_front();
-        }
-
-        h.tick();
-        cycle++;
     }
 
-    bool ok = errors == 0 && checked == (uint64_t)count && results.empty();
+    void check_result()
+    {
+        if (!dut->valid_o) {
+            if (!results.empty() && results.front().due == cycle) {
+                report(seq[results.front().index], results.front().index, "valid_o missing", cycle);
+                results.pop_front();
+            }
+            return;
+        }
+        if (results.empty()) {
+            report(seq[0], 0, "valid_o with nothing in flight", cycle);
+            return;
+        }
+        Pending p = results.front();
+        results.pop_front();
+        const preu_vec_t &v = seq[p.index];
+        char msg[240];
+        if (p.due != cycle || dut->tag_o != p.index) {
+            std::snprintf(msg, sizeof msg, "result at cycle %" PRIu64 " tag %u, expected cycle %" PRIu64 " tag %u",
+                          cycle, dut->tag_o, p.due, p.index);
+            report(v, p.index, msg, cycle);
+        } else if (v.mode == 0) {
+            if (dut->accept_o != v.accept || !eq(dut->state_o, v.sto)) {
+                int n = std::snprintf(msg, sizeof msg, "got accept %d state", dut->accept_o);
+                for (int k = NST; k-- > 0 && n < (int)sizeof msg - 10;)
+                    n += std::snprintf(msg + n, sizeof msg - n, " %08x", dut->state_o[k]);
+                report(v, p.index, msg, cycle);
+            }
+            accepted += v.accept;
+        } else if (dut->accept_o || !eq(dut->l_o, v.lo)) {
+            std::snprintf(msg, sizeof msg, "got accept %d l %08x %08x %08x", dut->accept_o,
+                          dut->l_o[0], dut->l_o[1], dut->l_o[2]);
+            report(v, p.index, msg, cycle);
+        }
+        checked++;
+    }
+};
+
+}  // namespace
+
+int main(int argc, char **argv)
+{
+    if (argc >= 3 && !std::strcmp(argv[1], "--chain")) {
+        const uint64_t n = std::strtoull(argv[2], nullptr, 0);
+        const double alpha = argc >= 4 ? std::atof(argv[3]) : 0.7;
+        if (n < 1 || !(alpha > 0 && alpha <= 1)) { std::fprintf(stderr, "preu_bench: bad --chain arguments\n"); return 2; }
+        VHarness<Vpree_preu> h(argc, argv);
+        if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
+        h->valid_i = 0;
+        h.reset(2);
+        return chain(h, n, alpha);
+    }
+    std::vector<const char *> pos;
+    for (int i = 1; i < argc; i++) if (argv[i][0] != '+') pos.push_back(argv[i]);
+    int count = pos.size() > 0 ? std::atoi(pos[0]) : 200000;
+    uint64_t seed = pos.size() > 1 ? std::strtoull(pos[1], nullptr, 0) : 1;
+    if (count < 1) { std::fprintf(stderr, "preu_bench: count must be >= 1\n"); return 2; }
+
+    // The harness holds the plusargs for the model; tracing is compiled in but off unless
+    // +trace=FILE is given.
+    VHarness<Vpree_preu> h(argc, argv);
+    if (h.trace_error()) { std::fprintf(stderr, "preu_bench: %s\n", h.trace_error()); return 2; }
+    Vpree_preu *const dut = &h.dut();
+
+    std::vector<preu_vec_t> seq(count);
+    preu_seq_gen(seq.data(), count, seed, DP);
+    for (int i = 1; i < argc; i++) {
+        unsigned long long bad;
+        if (std::sscanf(argv[i], "+inject_error=%llu", &bad) == 1 && bad < (unsigned long long)count) {
+            if (seq[bad].mode) seq[bad].lo[0] ^= 1; else seq[bad].sto[0] ^= 1;
+        }
+    }
+
+    // Reset: two cycles with rst_ni low, inputs idle.
+    dut->valid_i = 0; dut->mode_i = 0;
+    h.reset(2);
+
+    Run r(dut, seq, count);
+    const uint64_t max_cycles = (uint64_t)count * (40 + RAD_LAT) + 1000;
+    while (!r.done() && r.cycle < max_cycles) {
+        r.drive();
+        r.check_lreq();
+        r.check_result();
+        h.tick();
+        r.cycle++;
+    }
+
+    const uint64_t cycle = r.cycle;
+    bool ok = errors == 0 && r.checked == (uint64_t)count && r.results.empty();
     std::printf("preu_bench: %s datapath, seed %" PRIu64 ": %" PRIu64 " operations issued, %" PRIu64 " checked "
                 "(%" PRIu64 " update accepted), %" PRIu64 " mode switches, %" PRIu64 " cycles, %" PRIu64
                 " idle, %" PRIu64 " mismatches: %s\n",
-                DP ? "stable" : "paper", seed, issued, checked, accepted, switches, cycle, idle, errors, ok ? "PASS" : "FAIL");
+                DP ? "stable" : "paper", seed, r.issued, r.checked, r.accepted, r.switches, cycle, r.idle, errors,
+                ok ? "PASS" : "FAIL");
     if (!ok) {
         if (errors == 0) first_cycle = cycle;   // the run ended short: trace its last cycles
         fail_trace_bench(argc, argv, "preu_bench", DP ? "stable" : "paper", first_cycle, RAD_LAT + 16, 8);
