@@ -16,10 +16,8 @@
 //   PipeFast 1 (the units' deep plans and an operand register in front of each unit,
 //   docs/fpga.md): update 48 / 52, radiance 64.
 // Each unit's Stages may be overridden (AddStages .. WaccStages); the plan follows.
-//
-// The operation order, the operand order of every unit and the values are those of
-// docs/preu_datapath.md, which model/pree/preu_fp32.c and preu_stable.c implement in C; the two
-// are bit-exact whatever the stage plan.
+// Operation order, operand order and values: docs/preu_datapath.md, which model/pree/preu_fp32.c
+// and preu_stable.c implement in C, bit-exact with this RTL whatever the stage plan.
 //
 // Protocol: one operation may enter every cycle with valid_i (no back-pressure). Its result
 // appears with valid_o and its tag exactly UPD_LATENCY cycles later in update mode, RAD_LATENCY
