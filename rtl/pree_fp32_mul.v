@@ -76,6 +76,14 @@ module pree_fp32_mul #(
   // The split product (four partial products) when its products are registered.
   localparam SPLIT = (seam_regs(3) != 0);
 
+  // Every plan that registers seam 3 registers seam 2 too: the split product's pree_fp32_dsp_mul
+  // holds both registers, so a plan without seam 2 would be one cycle out of step.
+  generate
+    if (SPLIT && seam_regs(2) == 0) begin : g_bad_plan
+      pree_fp32_mul_split_product_needs_seam_2 u_fail ();
+    end
+  endgenerate
+
   // ---------------------------------------------------------------- entry: seam 0, the check
   // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
   wire        valid0;

@@ -31,7 +31,8 @@
 // The datapath is cut at six seams (pree_fp32_pipe each, a register or a wire):
 //   A classify (special result carried beside the datapath), double the exponent, split the
 //     significand into H and L                                                      -> seam 1
-//   B the products H^2, H*L, L^2                                                     -> seam 2
+//   B the products H^2, H*L, L^2 (with seams 1 and 2 registered, each in a pree_fp32_dsp_mul
+//     whose input and output registers are those seams for it)                       -> seam 2
 //   C their sum: {H^2, L^2} + H*L * 2^18 (H^2 and L^2 do not overlap)               -> seam 3
 //   D normalise: one-bit select, sticky bit, exponent, the denormalising shift amount
 //     (pree_fp32_denorm_amt, formed for both binades and picked by the select)     -> seam 4
