@@ -3,7 +3,7 @@
 is. Reads the trace (fst2vcd, from Debian's gtkwave), samples pree_top once a cycle (at the clock's
 low phase, the cycle's inputs and combinational outputs) and finds the first photon accepted
 (ph_valid_i and ph_ready_o), the first hazard stall and the first bank conflict (the stall cause
-the counters count, pree_top's `cause`: 2 hazard, 4 bank conflict in stage B, 5 stage A's
+the counters count, `cause` in pree_top's u_counters (rtl/pree_counters.v): 2 hazard, 4 bank conflict in stage B, 5 stage A's
 lanes left for a bank conflict). The view starts 4 cycles before the first photon, the primary
 marker stands on it and markers A, B, C on the others; the cycle list is printed and written to
 OUT.cycles.txt, with the number of cycles of each kind (which
@@ -45,10 +45,10 @@ def scan(fst):
                 scope.append(line.split()[2])
             elif line.startswith("$upscope"):
                 scope.pop()
-            elif line.startswith("$var") and scope == ["TOP", "pree_top"]:
+            elif line.startswith("$var") and scope in (["TOP", "pree_top"], ["TOP", "pree_top", "u_counters"]):
                 f = line.split()
                 name = f[4]
-                if name in WANT:
+                if name in WANT and (name == "cause") == (scope[-1] == "u_counters"):
                     ids[f[3]] = WANT[name]
             elif line.startswith("$enddefinitions"):
                 header = False
