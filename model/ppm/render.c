@@ -21,8 +21,6 @@
 #include "render_dist.h"
 #include "render_session.h"
 
-#define SCREEN_GROUPS 256   /* bucket groups a thread screens at a time */
-
 long render_peak_rss_kb(void)
 {
     struct rusage ru;
@@ -73,7 +71,7 @@ static int init_state(hitpoints_t *h, const render_options_t *opt, double r0)
 static void free_photon_pass(render_session_t *s)
 {
     if (s->bb)
-        for (unsigned c = 0; c < TRACE_CHUNKS; c++) photon_hits_free(&s->bb->chunk[c]);
+        for (unsigned c = 0; c < TRACE_CHUNKS * SCREEN_BLOCKS_MAX; c++) photon_hits_free(&s->bb->chunk[c]);
     grid_free(&s->grid);
     update_batch_free(&s->batch);
     if (s->scratch)
@@ -182,6 +180,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
      * grid of every hit point and routes what it keeps to the owning part. */
     s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
+    if (render_screen_blocks_set(s, err, errlen)) goto fail;
     s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
     if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
     for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
@@ -207,131 +206,6 @@ fail:
     if (stop_requested(opt->interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the %s", phase);
     session_free(s);
     return NULL;
-}
-
-/* The update of one traced block: photon-major per owned part, or screened bucket-major and
- * applied per part. 0 or -1 (out of memory). */
-static int update_block(render_session_t *s)
-{
-    hitpoints_t *h = &s->res->hp;
-    const precision_t prec = s->opt.precision;
-    const int T = s->T;
-    block_buffers_t *bb = s->bb;
-    if (s->photon_major) {
-        update_ops_t *ops = s->opt.record_ops ? &s->ops : NULL;
-#pragma omp parallel num_threads(T)
-        {
-            const int p = omp_get_thread_num();
-            for (unsigned c = 0; c < TRACE_CHUNKS; c++)
-                update_part(h, &s->grid, p, prec, s->skip, bb->chunk[c].hits, bb->chunk[c].n, &s->ust[p], ops);
-        }
-        return ops && ops->failed ? -1 : 0;
-    }
-    if (render_screen_block(s, T > 1 ? s->owner : NULL, T)) return -1;
-    int failed = 0;   /* applying: each thread its own part */
-#pragma omp parallel for num_threads(T) schedule(static, 1) reduction(| : failed)
-    for (int q = 0; q < T; q++)
-        failed |= update_batch_apply(h, prec, &s->batch, q, s->scratch, T, &s->ust[omp_get_thread_num()]);
-    return failed ? -1 : 0;
-}
-
-int render_screen_block(render_session_t *s, const uint16_t *owner, int lists)
-{
-    const int T = s->T;
-    int failed = update_batch_prepare(&s->batch, s->bb->chunk, TRACE_CHUNKS, s->grid.num_buckets);
-    s->batch.owner = owner;
-    for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], lists);
-    if (failed) return -1;
-#pragma omp parallel num_threads(T) reduction(| : failed)
-    {
-        const int p = omp_get_thread_num();
-#pragma omp for schedule(dynamic, 1)
-        for (size_t gi = 0; gi < s->batch.n_groups; gi += SCREEN_GROUPS)
-            failed |= update_batch_screen(&s->res->hp, &s->grid, s->opt.precision, s->skip, &s->batch, gi,
-                                          gi + SCREEN_GROUPS, &s->ust[p], &s->scratch[p]);
-    }
-    return failed ? -1 : 0;
-}
-
-/* Radii only shrink: after blocks 1, 2, 4, 8, ... drop the grid entries that the current radii
- * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor when recording the
- * co-simulation's operations (the host does not read the PREE's radii), nor with the environment
- * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). */
-int render_refilter_enabled(const render_session_t *s)
-{
-    return s->skip && !s->opt.record_ops && !getenv("PREE_NO_REFILTER");
-}
-
-int render_refilter_now(render_session_t *s)
-{
-    render_stats_t *st = &s->res->stats;
-    const double t = omp_get_wtime();
-    const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, s->T);
-    if (dropped < 0) return -1;
-    st->grid_refilters++;
-    st->grid_entries_final -= (size_t)dropped;
-    st->sec_refilter += omp_get_wtime() - t;
-    return 0;
-}
-
-/* After each block: a re-filter when the block count is a power of two. 0 or -1 (memory). */
-static int refilter_block(render_session_t *s)
-{
-    s->blocks++;
-    if ((s->blocks & (s->blocks - 1)) || !render_refilter_enabled(s)) return 0;
-    return render_refilter_now(s);
-}
-
-static int step_block(render_session_t *s, char *err, size_t errlen)
-{
-    render_stats_t *st = &s->res->stats;
-    if (s->interrupted || s->done_photons >= s->emitted_target || !s->res->hp.n) return 0;
-    uint64_t count = s->emitted_target - s->done_photons;
-    if (count > PHOTON_BLOCK) count = PHOTON_BLOCK;
-    update_ops_clear(&s->ops);
-    char block_name[32];   /* fault injection: "block1" is this run's first block */
-    snprintf(block_name, sizeof block_name, "block%llu",
-             (unsigned long long)((s->done_photons - s->res->stats.photons_resumed) / PHOTON_BLOCK + 1));
-    render_test_interrupt(block_name);
-    double t = omp_get_wtime();
-    const int traced = render_trace_block(s, s->opt.photon_offset + s->done_photons, count);
-    if (traced < 0) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
-    if (traced > 0) {   /* interrupted: the image keeps the whole blocks done */
-        s->interrupted = 1;
-        if (s->opt.progress) fputc('\n', stderr);
-        return 0;
-    }
-    st->sec_trace += omp_get_wtime() - t;
-    if (s->opt.precision == PRECISION_FP32 && render_fp32_check_hits(s->bb->chunk, TRACE_CHUNKS, err, errlen)) return -1;
-    t = omp_get_wtime();
-    if (update_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
-    st->sec_update += omp_get_wtime() - t;
-    if (refilter_block(s)) { snprintf(err, errlen, "out of memory in the photon pass"); return -1; }
-    for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
-        st->photon_hits += s->bb->chunk[c].n;
-        st->photon_segments += s->bb->chunk[c].segments;
-        s->bb->chunk[c].segments = 0;
-    }
-    s->done_photons += count;
-    render_progress(s);
-    if (s->opt.interrupt && *s->opt.interrupt && s->done_photons < s->emitted_target) {
-        /* Keep whole batches of 1000 photons so the radiance normalisation holds. */
-        s->interrupted = 1;
-        if (s->opt.progress) fputc('\n', stderr);
-    }
-    return 1;
-}
-
-int render_step(render_session_t *s, char *err, size_t errlen)
-{
-    if (s->nranks > 1) {
-        const int r = render_round_step(s, err, errlen);
-        if (r < 0) s->failed = 1;
-        return r;
-    }
-    int r = step_block(s, err, errlen);
-    if (r < 0) s->failed = 1;
-    return r;
 }
 
 const update_ops_t *render_block_ops(const render_session_t *s) { return &s->ops; }

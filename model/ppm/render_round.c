@@ -102,7 +102,7 @@ static int screen_and_pack(render_session_t *s, uint64_t photons, round_slot_t *
 {
     const int T = s->T, N = s->nranks;
     const precision_t prec = s->opt.precision;
-    if (render_screen_block(s, s->rank_of, LISTS(s))) return -1;
+    if (render_screen_block(s, s->rank_of, LISTS(s), 1)) return -1;
     size_t used = 0;
     for (int d = 0; d < N; d++) {
         if (update_batch_gather(&s->xs, s->scratch, T, d, s->batch.n)) return -1;
@@ -250,7 +250,7 @@ int render_round_step(render_session_t *s, char *err, size_t errlen)
         char block_name[32];
         snprintf(block_name, sizeof block_name, "block%llu", (unsigned long long)(first / PHOTON_BLOCK + 1));
         render_test_interrupt(block_name);
-        const int traced = render_trace_block(s, s->opt.photon_offset + first, count);
+        const int traced = render_trace_block(s, s->opt.photon_offset + first, count, 0);
         if (traced < 0) { snprintf(mine, sizeof mine, "out of memory in the photon pass"); status = FAILED; }
         else if (traced > 0) status = ABANDONED;
         else if (s->opt.precision == PRECISION_FP32 && render_fp32_check_hits(s->bb->chunk, TRACE_CHUNKS, mine, sizeof mine))

@@ -72,7 +72,7 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     }
     render_session_t *s = render_open(scene, opt, res, err, errlen);
     if (!s) return -1;
-    const uint64_t every = opt->checkpoint_every ? opt->checkpoint_every : RENDER_CHECKPOINT_EVERY;
+    const uint64_t every = render_checkpoint_every(opt);
     while (render_step(s, err, errlen) > 0) {
         const int more = s->done_photons < s->emitted_target;
         if (opt->checkpoint && more && s->done_photons - s->last_checkpoint >= every && session_checkpoint(s, err, errlen)) {

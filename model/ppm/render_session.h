@@ -10,10 +10,15 @@
 
 #define PHOTON_BLOCK RENDER_PHOTON_BLOCK   /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
-_Static_assert(TRACE_CHUNKS <= UPDATE_BATCH_MAX_CHUNKS, "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
+/* Photon blocks traced before one update (a screening batch, render.c): the update screens them
+ * together against the radii at the batch's start and applies them in photon order. */
+#define SCREEN_BLOCKS_MAX 4u
+_Static_assert(TRACE_CHUNKS * SCREEN_BLOCKS_MAX <= UPDATE_BATCH_MAX_CHUNKS,
+               "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
 
+/* The traced hits: block k of a batch in chunk[k * TRACE_CHUNKS ..], in photon order. */
 typedef struct {
-    photon_hits_t chunk[TRACE_CHUNKS];
+    photon_hits_t chunk[TRACE_CHUNKS * SCREEN_BLOCKS_MAX];
     unsigned long long no_cell;
 } block_buffers_t;
 
@@ -29,6 +34,10 @@ struct render_session {
     render_result_t *res;
     double t_start, t_photons;
     int T, skip, photon_major, interrupted, last_decile;
+    unsigned screen_blocks;  /* blocks a screening batch takes at most (1 .. SCREEN_BLOCKS_MAX) */
+    int screen_forced;       /* screen_blocks set by PREE_SCREEN_BLOCKS: no memory rule */
+    size_t hits_per_block, kept_per_block, kept_most;   /* the last batch's, per block; the most kept */
+    size_t grid_dropped_first;   /* grid entries the first block's re-filter dropped */
     size_t npix;
     grid_t grid;
     block_buffers_t *bb;
@@ -63,24 +72,35 @@ struct render_session {
 };
 
 /* The photon pass's steps that render_round.c shares (render.c): trace the photons of sequence
- * indices [first, first + count) into the block buffers, dropping hits that reach no hit point's
- * cell when skipping (0, -1 out of memory, or 1: stopped, the block abandoned); progress on
+ * indices [first, first + count) into the block buffers' slot for block `slot` of a batch,
+ * dropping hits that reach no hit point's cell when skipping (0, -1 out of memory, or 1:
+ * stopped, the block abandoned); progress on
  * stderr (a failed write only stops the printing); whether the grid is re-filtered, and a
  * re-filter now (0 or -1). */
-int render_trace_block(render_session_t *s, uint64_t first, uint64_t count);
+int render_trace_block(render_session_t *s, uint64_t first, uint64_t count, unsigned slot);
 void render_progress(render_session_t *s);
 int render_refilter_enabled(const render_session_t *s);
 int render_refilter_now(render_session_t *s);
-/* Screen the traced block (bb) with the session's T threads into their scratch lists (`lists`
- * of them), each kept candidate in list owner[hit point] (list 0 when owner is NULL). 0 or -1
- * (memory). */
-int render_screen_block(render_session_t *s, const uint16_t *owner, int lists);
+/* Screen the first `blocks` traced blocks (bb) with the session's T threads into their scratch
+ * lists (`lists` of them), each kept candidate in list owner[hit point] (list 0 when owner is
+ * NULL). 0 or -1 (memory). */
+int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, unsigned blocks);
 
 /* More than one MPI rank (render_round.c): the partition (0, or -1 with err), a round of photon
  * blocks (1, 0 when ended, -1 with err), and every rank's state and counters to rank 0. */
 int render_round_open(render_session_t *s, char *err, size_t errlen);
 int render_round_step(render_session_t *s, char *err, size_t errlen);
 void render_round_close(render_session_t *s);
+
+/* The batch's cap (screen_blocks) from the scan and PREE_SCREEN_BLOCKS (render_step.c): 0, or
+ * -1 with err for a value out of range. */
+int render_screen_blocks_set(render_session_t *s, char *err, size_t errlen);
+
+/* Photons between checkpoints (render_run.c writes one after the block that reaches it). */
+static inline uint64_t render_checkpoint_every(const render_options_t *opt)
+{
+    return opt->checkpoint_every ? opt->checkpoint_every : RENDER_CHECKPOINT_EVERY;
+}
 
 /* The update counters summed over the threads. */
 update_stats_t render_session_update_totals(const render_session_t *s);

@@ -10,7 +10,7 @@
 /* Photon hits whose cell look-up is fetched ahead of the one being made. */
 #define BUCKET_AHEAD 8
 
-int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
+int render_trace_block(render_session_t *s, uint64_t first, uint64_t count, unsigned slot)
 {
     const scene_t *scene = s->scene;
     const tracer_t *tr = s->tr;
@@ -18,6 +18,7 @@ int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
     const int skip = s->skip;
     const stop_flag_t *stop = s->opt.interrupt;
     block_buffers_t *bb = s->bb;
+    photon_hits_t *chunk = bb->chunk + (size_t)slot * TRACE_CHUNKS;
     int failed = 0, stopped = 0;
     unsigned long long no_cell = 0;
     const uint64_t per = (count + TRACE_CHUNKS - 1) / TRACE_CHUNKS;
@@ -25,7 +26,7 @@ int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
     for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
         /* Work on a copy: neighbouring chunks share cache lines, and their counters change with
          * every segment and hit. */
-        photon_hits_t local = bb->chunk[c];
+        photon_hits_t local = chunk[c];
         photon_hits_t *out = &local;
         out->n = 0;
         uint64_t lo = first + c * per, hi = lo + per;
@@ -51,11 +52,11 @@ int render_trace_block(render_session_t *s, uint64_t first, uint64_t count)
             out->hits[keep++] = *ph;
         }
         if (!failed && !stopped) out->n = keep;
-        bb->chunk[c] = local;
+        chunk[c] = local;
     }
     if (failed) return -1;
     if (stopped) {
-        for (unsigned c = 0; c < TRACE_CHUNKS; c++) bb->chunk[c].n = bb->chunk[c].segments = 0;
+        for (unsigned c = 0; c < TRACE_CHUNKS; c++) chunk[c].n = chunk[c].segments = 0;
         return 1;
     }
     bb->no_cell += no_cell;

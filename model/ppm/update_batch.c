@@ -145,6 +145,19 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
  * (double mode) or binary32 distance squared (fp32 mode). */
 typedef struct { uint32_t hit, hp; double v2; } kept_t;
 
+size_t update_batch_kept_bytes(void)
+{
+    return 2 * sizeof(kept_t);
+}
+
+size_t update_batch_kept(const update_scratch_t *all, int nthreads)
+{
+    size_t n = 0;
+    for (int t = 0; t < nthreads; t++)
+        for (int p = 0; p < all[t].num_lists; p++) n += all[t].list[p].n;
+    return n;
+}
+
 void update_batch_scratch_free(update_scratch_t *s)
 {
     for (int p = 0; p < s->num_lists; p++) free(s->list[p].v);

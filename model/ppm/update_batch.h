@@ -23,6 +23,12 @@ typedef struct {
     int avx2;                   /* screen in AVX2 lanes */
 } update_batch_t;
 
+/* Bytes a batch holds per hit besides the hit itself (its pointer, its key and the sort's
+ * scratch key, its sorted copy), and per kept candidate (its list entry and its copy grouped by
+ * hit): what a batch of more photons costs (render_step.c). */
+#define UPDATE_BATCH_HIT_BYTES (sizeof(const photon_hit_t *) + 2 * sizeof(uint64_t) + sizeof(batch_hit_t))
+size_t update_batch_kept_bytes(void);
+
 /* A part's kept candidates from one screening thread. */
 typedef struct { void *v; size_t n, cap; } kept_list_t;
 
@@ -41,6 +47,9 @@ typedef struct {
 #define UPDATE_BATCH_MAX_CHUNKS 256
 int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigned nchunks, size_t num_buckets);
 void update_batch_free(update_batch_t *b);
+
+/* The candidates kept by the last screening, over the nthreads threads' scratch all[]. */
+size_t update_batch_kept(const update_scratch_t *all, int nthreads);
 
 /* Empty a thread's kept lists, one per part. 0 or -1 (memory). */
 int update_batch_scratch_reset(update_scratch_t *s, int num_parts);

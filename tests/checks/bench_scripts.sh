@@ -5,8 +5,9 @@
 # disjoint reference) and draw its plot; bench-engine with one run a row must print every row,
 # both target lines, the smallppm byte-identity line and draw its picture (it fails by itself when
 # an image changes with the thread count, the scan or the screening's lanes); bench-count must
-# give its rows, the same twice; bench-scale at a small frame must give its two rows (re-filter on
-# and off) with one image hash and fewer candidates with the re-filter.
+# give its rows, the same twice; bench-scale at a small frame must give its three rows (screening
+# batches, one block at a time, no re-filter) with one image hash, the same candidates with and
+# without the batches and fewer with the re-filter.
 # cost: 51 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
@@ -20,9 +21,10 @@ for prec in double fp32; do
 done
 expect_eq "convergence plot is a PNG" "$(head -c 4 "$TMP/conv/convergence.png" | od -An -c | tr -d ' ')" "211PNG"
 SCALE_SIZES="96x72:60000" run scripts/bench-scale.sh "$PREE" "$TMP/scale"
-expect_eq "bench-scale rows" "$(tail -n +3 "$TMP/scale/scale.txt" | wc -l)" 2
-on=$(awk '$3 == "on" { print $8 }' "$TMP/scale/scale.txt"); off=$(awk '$3 == "off" { print $8 }' "$TMP/scale/scale.txt")
-[ "$on" -lt "$off" ] || fail "bench-scale: the re-filter examined $on candidates, not fewer than $off"
+expect_eq "bench-scale rows" "$(tail -n +3 "$TMP/scale/scale.txt" | wc -l)" 3
+cand() { awk -v m="$1" '$3 == m { print $8 }' "$TMP/scale/scale.txt"; }
+expect_eq "bench-scale: candidates with batches = one block at a time" "$(cand batches)" "$(cand one-block)"
+[ "$(cand batches)" -lt "$(cand no-refilter)" ] || fail "bench-scale: the re-filter examined $(cand batches) candidates, not fewer than $(cand no-refilter)"
 RUNS=1 run scripts/bench-engine.sh "$PREE" "$TMP/eng"
 expect_eq "engine rows" "$(grep -cE '^(smallppm|cells) (double|fp32) [12] (bucket|photon) ' "$TMP/eng/engine.txt")" 8
 expect_eq "target lines" "$(grep -c '^target: ' "$TMP/eng/engine.txt")" 2
