@@ -97,13 +97,48 @@ static int parse_args(int argc, char **argv, vecgen_opts_t *o)
     return 0;
 }
 
+/* Hit points in the unit cube, per_px consecutive ones per pixel ("one": a radius covering it),
+ * written to fhp. */
+static void make_hit_points(FILE *fhp, preu_hp_t *hp, const vecgen_opts_t *opt)
+{
+    for (int i = 0; i < opt->nhp; i++) {
+        for (int c = 0; c < 3; c++) {
+            hp[i].pos[c] = frand_bits(0, 1);
+            hp[i].f[c] = frand_bits(0, 1);
+        }
+        hp[i].r2 = opt->sc == DRAW_ONE ? fp32_to_bits(4.0f) : frand_bits(0.01f, 0.2f);
+        put_hp(fhp, &hp[i], (uint32_t)(i / opt->per_px));
+    }
+}
+
+/* Radiance: each pixel accumulated from +0 in the hardware's issue order, written to fpx.
+ * 0, 1 (memory) or 2 (the order). */
+static int write_radiance(FILE *fpx, const preu_hp_t *hp, const vecgen_opts_t *opt, uint32_t ne)
+{
+    uint32_t *order = malloc((size_t)opt->nhp * sizeof *order);
+    uint32_t *L = calloc((size_t)opt->npix * 3, sizeof *L);
+    int rc = !order || !L;
+    if (!rc && adiso_order((uint32_t)opt->nhp, opt->preu, 12, order)) {
+        fprintf(stderr, "top_vecgen: adiso_order failed\n");
+        rc = 2;
+    }
+    if (!rc) {
+        for (int k = 0; k < opt->nhp; k++)
+            preu_radiance(L + 3 * (size_t)(order[k] / (uint32_t)opt->per_px), &hp[order[k]], ne);
+        for (int j = 0; j < opt->npix; j++) fprintf(fpx, "%08x%08x%08x\n", L[3 * j + 2], L[3 * j + 1], L[3 * j]);
+    }
+    free(order);
+    free(L);
+    return rc;
+}
+
 int main(int argc, char **argv)
 {
     vecgen_opts_t opt;
     if (parse_args(argc, argv, &opt)) return 2;
     const int preu = opt.preu, photons = opt.photons, nhp = opt.nhp, place_random = opt.place_random;
     const int per_px = opt.per_px, npix = opt.npix;
-    const int one = opt.sc == DRAW_ONE, random_sc = opt.sc == DRAW_RANDOM;
+    const int random_sc = opt.sc == DRAW_RANDOM;
     const draw_scenario_t sc = opt.sc;
     const char *out = opt.out, *scenario = opt.scenario;
     const uint32_t depth = 1u << opt.idx_aw;
@@ -114,19 +149,8 @@ int main(int argc, char **argv)
     FILE *fhpx = open_out(out, "hpx"), *fpx = open_out(out, "px"), *fmeta = open_out(out, "meta");
     preu_hp_t *hp = calloc((size_t)nhp, sizeof *hp);
     uint64_t *start = malloc((size_t)photons * sizeof *start);   /* absolute entry of each sent photon */
-    uint32_t *order = malloc((size_t)nhp * sizeof *order);
-    uint32_t *L = calloc((size_t)npix * 3, sizeof *L);
-    if (!fhp || !fph || !fidx || !fhpx || !fpx || !fmeta || !hp || !start || !order || !L) return 1;
-
-    /* Hit points in the unit cube, per_px consecutive ones per pixel; "one": a radius covering it. */
-    for (int i = 0; i < nhp; i++) {
-        for (int c = 0; c < 3; c++) {
-            hp[i].pos[c] = frand_bits(0, 1);
-            hp[i].f[c] = frand_bits(0, 1);
-        }
-        hp[i].r2 = one ? fp32_to_bits(4.0f) : frand_bits(0.01f, 0.2f);
-        put_hp(fhp, &hp[i], (uint32_t)(i / per_px));
-    }
+    if (!fhp || !fph || !fidx || !fhpx || !fpx || !fmeta || !hp || !start) return 1;
+    make_hit_points(fhp, hp, &opt);
 
     /* Photons: model update in photon order; index entries placed in the circular table. */
     uint64_t alloc_end = 0, prev_p = 0, entries = 0, ops = 0;
@@ -162,11 +186,9 @@ int main(int argc, char **argv)
     }
     for (int i = 0; i < nhp; i++) put_hp(fhpx, &hp[i], (uint32_t)(i / per_px));
 
-    /* Radiance: each pixel accumulated from +0 in the hardware's issue order. */
     const uint32_t ne = preu_n_emitted((uint64_t)photons);
-    if (adiso_order((uint32_t)nhp, preu, 12, order)) { fprintf(stderr, "top_vecgen: adiso_order failed\n"); return 2; }
-    for (int k = 0; k < nhp; k++) preu_radiance(L + 3 * (size_t)(order[k] / (uint32_t)per_px), &hp[order[k]], ne);
-    for (int j = 0; j < npix; j++) fprintf(fpx, "%08x%08x%08x\n", L[3 * j + 2], L[3 * j + 1], L[3 * j]);
+    const int rad = write_radiance(fpx, hp, &opt, ne);
+    if (rad) return rad;
 
     const uint32_t meta[16] = {(uint32_t)nhp, (uint32_t)npix, (uint32_t)photons, (uint32_t)entries, ne,
                                (uint32_t)ops, (uint32_t)preu, (uint32_t)opt.hp_aw, (uint32_t)opt.idx_aw,
@@ -180,6 +202,6 @@ int main(int argc, char **argv)
     printf("top_vecgen preu=%d scenario=%s place=%s photons=%d sent=%d hp=%d pixels=%d entries=%llu ops=%llu\n",
            preu, scenario, place_random ? "random" : "packed", photons, sent, nhp, npix,
            (unsigned long long)entries, (unsigned long long)ops);
-    free(hp); free(start); free(order); free(L);
+    free(hp); free(start);
     return 0;
 }
