@@ -7,6 +7,7 @@
  * return to pixel order. Each hit point's own sequence of updates is the same in any order,
  * so results are unchanged to the bit. */
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 #include "grid.h"
@@ -77,95 +78,52 @@ uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, doubl
     return perm;
 }
 
-/* The arrays a permutation moves: the non-NULL ones of a hit-point set. */
-#define PERMUTE_ARRAYS 9
-typedef struct {
-    unsigned char *a[PERMUTE_ARRAYS];
-    size_t sz[PERMUTE_ARRAYS], off[PERMUTE_ARRAYS], n, bytes;   /* bytes: one element of each */
-} hp_arrays_t;
+/* Bytes of an element a permutation pass moves at most: an element is moved in slices of up to
+ * this many bytes, each slice of every element through a scratch array of n slices. */
+#define PERMUTE_SLICE 24
 
-static void arrays_add(hp_arrays_t *s, void *a, size_t sz)
+/* Move bytes [off, off + len) of every element of array a (elements of sz bytes) to its place:
+ * gathered (new[k] = old[perm[k]]) or scattered (new[perm[k]] = old[k]), through scratch (n *
+ * len bytes). Each pass is n independent random reads or writes, which the processor overlaps
+ * and the threads share. */
+static void permute_slice(unsigned char *a, size_t sz, size_t off, size_t len, size_t n, const uint32_t *perm,
+                          int scatter, unsigned char *scratch)
 {
-    if (!a) return;
-    s->a[s->n] = a;
-    s->sz[s->n] = sz;
-    s->off[s->n] = s->bytes;
-    s->bytes += sz;
-    s->n++;
-}
-
-/* One element of size sz: the fixed sizes inline, the rest through memcpy's call. */
-static inline void move_elem(unsigned char *dst, const unsigned char *src, size_t sz)
-{
-    switch (sz) {
-    case 1: *dst = *src; break;
-    case 4: memcpy(dst, src, 4); break;
-    case 8: memcpy(dst, src, 8); break;
-    case 24: memcpy(dst, src, 24); break;
-    case 56: memcpy(dst, src, 56); break;
-    default: memcpy(dst, src, sz);
+    if (scatter) {
+#pragma omp parallel for schedule(static)
+        for (size_t k = 0; k < n; k++) memcpy(scratch + (size_t)perm[k] * len, a + k * sz + off, len);
+    } else {
+#pragma omp parallel for schedule(static)
+        for (size_t k = 0; k < n; k++) memcpy(scratch + k * len, a + (size_t)perm[k] * sz + off, len);
     }
+#pragma omp parallel for schedule(static)
+    for (size_t k = 0; k < n; k++) memcpy(a + k * sz + off, scratch + k * len, len);
 }
 
-/* Element j of every array to (or from) buf, packed. */
-static void save_all(const hp_arrays_t *s, unsigned char *buf, size_t j)
-{
-    for (size_t i = 0; i < s->n; i++) move_elem(buf + s->off[i], s->a[i] + j * s->sz[i], s->sz[i]);
-}
-
-static void load_all(const hp_arrays_t *s, size_t j, const unsigned char *buf)
-{
-    for (size_t i = 0; i < s->n; i++) move_elem(s->a[i] + j * s->sz[i], buf + s->off[i], s->sz[i]);
-}
-
-/* Permute every array in place, cycle by cycle and all arrays in one walk (each step touches
- * the permutation and the scratch bits once for all of them): gathered (new[k] = old[perm[k]])
- * or scattered (new[perm[k]] = old[k]). A copy of an array would add up to 128 bytes a hit
- * point to the render's peak. 0 or -1 (memory). */
+/* Permute every array of the hit points, slice by slice (PERMUTE_SLICE bytes): gathered
+ * (new[k] = old[perm[k]]) or scattered (new[perm[k]] = old[k]). The scratch adds 24 bytes a
+ * hit point to the memory of the moment, where a copy of each array would add up to 64 (and
+ * an in-place walk along the permutation's cycles, one dependent cache miss after another, took
+ * three times as long). 0 or -1 (memory). */
 static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
 {
-    hp_arrays_t s = {0};
-    arrays_add(&s, h->hot, sizeof *h->hot);
-    arrays_add(&s, h->weight, sizeof *h->weight);
-    arrays_add(&s, h->flux, sizeof *h->flux);
-    arrays_add(&s, h->r2, sizeof *h->r2);
-    arrays_add(&s, h->pixel, sizeof *h->pixel);
-    arrays_add(&s, h->dark, sizeof *h->dark);
-    arrays_add(&s, h->fp32, sizeof *h->fp32);
-    arrays_add(&s, h->stable, sizeof *h->stable);
-    arrays_add(&s, h->r2_f32, sizeof *h->r2_f32);
+    struct { void *a; size_t sz; } arr[] = {
+        {h->hot, sizeof *h->hot}, {h->weight, sizeof *h->weight}, {h->flux, sizeof *h->flux},
+        {h->r2, sizeof *h->r2}, {h->pixel, sizeof *h->pixel}, {h->dark, sizeof *h->dark},
+        {h->fp32, sizeof *h->fp32}, {h->stable, sizeof *h->stable}, {h->r2_f32, sizeof *h->r2_f32},
+    };
     const size_t n = h->n;
-    uint64_t *done = calloc((n + 63) / 64 + 1, sizeof *done);
-    unsigned char *carry = malloc(2 * s.bytes + 1), *t = carry + s.bytes;
-    if (!done || !carry) { free(done); free(carry); return -1; }
-#define DONE(i) (done[(i) >> 6] >> ((i) & 63) & 1)
-#define MARK(i) (done[(i) >> 6] |= (uint64_t)1 << ((i) & 63))
-    for (size_t k = 0; k < n; k++) {
-        if (DONE(k)) continue;
-        MARK(k);
-        if (perm[k] == k) continue;
-        save_all(&s, carry, k);
-        if (scatter) {   /* carry old[k] to its place perm[k], taking what stood there on */
-            for (size_t j = perm[k]; j != k; j = perm[j]) {
-                save_all(&s, t, j);
-                load_all(&s, j, carry);
-                memcpy(carry, t, s.bytes);
-                MARK(j);
-            }
-            load_all(&s, k, carry);
-        } else {   /* pull old[perm[j]] into j along the cycle */
-            size_t j = k;
-            for (size_t next = perm[j]; next != k; j = next, next = perm[j]) {
-                for (size_t i = 0; i < s.n; i++) move_elem(s.a[i] + j * s.sz[i], s.a[i] + next * s.sz[i], s.sz[i]);
-                MARK(next);
-            }
-            load_all(&s, j, carry);
+    if (!n) return 0;
+    unsigned char *scratch = malloc(n * PERMUTE_SLICE);
+    if (!scratch) return -1;
+    for (size_t i = 0; i < sizeof arr / sizeof *arr; i++) {
+        if (!arr[i].a) continue;
+        for (size_t off = 0; off < arr[i].sz; off += PERMUTE_SLICE) {
+            const size_t len = arr[i].sz - off < PERMUTE_SLICE ? arr[i].sz - off : PERMUTE_SLICE;
+            permute_slice(arr[i].a, arr[i].sz, off, len, n, perm, scatter, scratch);
         }
     }
-#undef DONE
-#undef MARK
-    free(done);
-    free(carry);
+    free(scratch);
     return 0;
 }
 
