@@ -28,8 +28,7 @@
 
 COSIM_DIR    := $(BUILD)/cosim
 COSIM_PREUS  := 4 8 16
-COSIM_RTL    := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_counters.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
-                rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
+COSIM_RTL    := $(shell grep -v '^//' rtl/pree.f)   # the RTL filelist (pree_top and its wrappers)
 COSIM_INCS   := rtl/pree_preu_plan.vh
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 # Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels

@@ -10,9 +10,7 @@
 # Products in $(BUILD)/top_icarus: top_vecgen, one .vvp per configuration, vectors per run.
 
 TOPIV_DIR  := $(BUILD)/top_icarus
-TOPIV_RTL  := rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_counters.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v \
-              rtl/pree_preu.v $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
-TOPIV_RTL_SUB := $(filter-out rtl/pree_top.v,$(TOPIV_RTL))
+TOPIV_RTL  := $(shell grep -v '^//' rtl/pree.f)
 TOPIV_CFLAGS := -std=c11 -O2 -g $(FPFLAGS) -fexcess-precision=standard $(WARN) $(MODEL_INC)
 TOPIV_IVERILOG := iverilog -g2005 -Wall -DPREE_ASSERT -Irtl -s top_tb
 
@@ -53,15 +51,20 @@ TOPIV_CFG_p16_random := p16
 TOPIV_ARG_p16_random := --scenario random --photons 10 --hp 160 --seed 8
 TOPIV_PLUS_p16_random := +gap=20 +seed=8
 
-# Mutants: name, sed expression on rtl/pree_top.v, the run that must catch it.
+# Mutants: name, the file edited (TOPIV_FILE_, default rtl/pree_top.v), sed expression, the run
+# that must catch it.
 TOPIV_MUTANTS := nohaz nodup noaconf nobconf winrad
-TOPIV_SED_nohaz   := s/b_haz\[l\] = 1'b1;/b_haz[l] = 1'b0;/
+TOPIV_FILE_nohaz  := rtl/pree_top_issue.v
+TOPIV_SED_nohaz   := s/haz_o\[l\] = 1'b1;/haz_o[l] = 1'b0;/
 TOPIV_RUN_nohaz   := p4_one
-TOPIV_SED_nodup   := s/b_dup\[l\] = 1'b1;/b_dup[l] = 1'b0;/
+TOPIV_FILE_nodup  := rtl/pree_top_issue.v
+TOPIV_SED_nodup   := s/dup_o\[l\] = 1'b1;/dup_o[l] = 1'b0;/
 TOPIV_RUN_nodup   := p4_one
-TOPIV_SED_noaconf := s/a_conf\[l\] = 1'b1;/a_conf[l] = 1'b0;/
+TOPIV_FILE_noaconf := rtl/pree_top_read.v
+TOPIV_SED_noaconf := s/conf\[l\] = 1'b1;/conf[l] = 1'b0;/
 TOPIV_RUN_noaconf := p4_abank
-TOPIV_SED_nobconf := s/b_bcf\[l\] = 1'b1;/b_bcf[l] = 1'b0;/
+TOPIV_FILE_nobconf := rtl/pree_top_issue.v
+TOPIV_SED_nobconf := s/bcf\[l\] = 1'b1;/bcf[l] = 1'b0;/
 TOPIV_RUN_nobconf := p4_random
 TOPIV_SED_winrad  := s/WIN_RAD \/\*verilator public\*\/ = ST_ADD + 1;/WIN_RAD \/*verilator public*\/ = ST_ADD;/
 TOPIV_RUN_winrad  := p4_dense
@@ -89,15 +92,16 @@ define TOPIV_RUN_RULE
 $(TOPIV_DIR)/$(1).meta: $(TOPIV_DIR)/top_vecgen mk/top_icarus.mk
 	$(TOPIV_DIR)/top_vecgen $(TOPIV_GEOM_$(TOPIV_CFG_$(1))) $(TOPIV_ARG_$(1)) $(TOPIV_DIR)/$(1) >$(TOPIV_DIR)/$(1).vecgen.txt
 endef
-# A mutant: pree_top.v with one edit (the rule fails when the edit no longer applies).
+# A mutant: one RTL file with one edit (the rule fails when the edit no longer applies).
+topiv_mfile = $(or $(TOPIV_FILE_$(1)),rtl/pree_top.v)
 define TOPIV_MUT_RULE
 $(TOPIV_DIR)/mut_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	sed "$(TOPIV_SED_$(1))" rtl/pree_top.v >$(TOPIV_DIR)/mut_$(1)_pree_top.v
-	@if cmp -s rtl/pree_top.v $(TOPIV_DIR)/mut_$(1)_pree_top.v; then \
-	  echo "mutant $(1): the edit '$(TOPIV_SED_$(1))' no longer applies to rtl/pree_top.v"; exit 1; fi
+	sed "$(TOPIV_SED_$(1))" $(call topiv_mfile,$(1)) >$(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1)))
+	@if cmp -s $(call topiv_mfile,$(1)) $(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))); then \
+	  echo "mutant $(1): the edit '$(TOPIV_SED_$(1))' no longer applies to $(call topiv_mfile,$(1))"; exit 1; fi
 	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(TOPIV_CFG_$(TOPIV_RUN_$(1)))) -o $$@ tb/cosim/top_tb.v \
-	  $(TOPIV_DIR)/mut_$(1)_pree_top.v $(TOPIV_RTL_SUB)
+	  $(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))) $(filter-out $(call topiv_mfile,$(1)),$(TOPIV_RTL))
 endef
 $(foreach c,$(TOPIV_CFGS),$(eval $(call TOPIV_CFG_RULE,$(c))))
 $(foreach r,$(TOPIV_RUNS),$(eval $(call TOPIV_RUN_RULE,$(r))))

@@ -2,71 +2,36 @@
 // PREUs, the AFTSO-HpUOC dispatcher (update mode), the ADISO-REC leaping-address generator
 // (radiance mode), the hit-point memory, the index table and the pixel memory, with hazard
 // detection so that results never depend on timing. docs/pree_top.md is the user's manual:
-// interfaces, timing diagrams, memory organisation, hazards, the radiance order.
+// interfaces, host protocol, timing diagrams, memory organisation, hazards, the radiance order,
+// the counters.
 //
-// Modes (mode_i; change it only while idle_o is high):
-//   0 update:   photons come in on ph_* (valid/ready), up to PhotonsPerCycle side by side
-//               (slot s in bits [s*W +: W], slot 0 the oldest; a slot with N^P = 0 is empty).
-//               Photon k's candidate list is N^P hit-point addresses held in the index table
-//               at p_addr .. p_addr + N^P - 1, written beforehand (or in the same cycle) through
-//               idx_*. AFTSO-HpUOC (a buffer of 4 x PhotonsPerCycle entries) turns the photons
-//               into up to NumPreu hit-point update operations per cycle.
-//   1 radiance: a pulse on rad_start_i with n_hit_i = N starts one pass: ADISO-REC hands every
-//               hit-point address in [0, N) to a PREU once, and each adds its flux to its pixel.
+// Modes (mode_i; change it, alpha_i and kappa_i only while idle_o is high): 0 update, photons in
+// on ph_* (up to PhotonsPerCycle a cycle; photon k's N^P candidates in the index table from
+// p_addr, written through idx_*, up to NumPreu entries a cycle in distinct banks); 1 radiance,
+// a pulse on rad_start_i hands every hit point in [0, n_hit_i) to a PREU once, which adds its
+// flux to its pixel. Host ports hp_* and px_* only while idle; read data a cycle after the enable.
 //
-// Pipeline (both modes; a lane l of a stage feeds PREU l):
-//   A  controller lanes (combinational offer of AFTSO / ADISO); reads of the first RAM:
-//      update: index table (bank = ref_addr mod NumPreu), radiance: hit-point memory.
-//      Lanes read in lane order; a lane whose bank an earlier unread lane of the offer already
-//      uses waits (bank conflict, "abank"); the controller is stalled until every lane of
-//      its offer has been read. A reads only when stage B empties in this cycle (PipeFast 0);
-//      with PipeFast 1, whenever B's skid slot is empty at the start of the cycle (a register;
-//      see "B skid" below), so that A's reads do not wait on B's issue in the same cycle.
-//   B  the read results: hit-point address (update) or hit-point data and pixel (radiance).
-//      Issue in lane order (a prefix of the pending lanes) to the next step: a lane waits
-//      while its key (hit point / pixel) is in flight (hazard "haz"), an earlier pending lane
-//      of the stage has the same key ("dup") or the same bank of the memory it is about to
-//      use ("bank"; hit-point banks in update, pixel banks in radiance). Update: issue = read
-//      of the hit-point memory; radiance: issue = PREU input (the held RAM output).
-//   C  update only: the hit-point data, into the PREU (valid_i), with the photon.
-//   B skid (PipeFast 1 only): a second B slot of registers. B's lanes live at the RAM outputs
-//      (R); when A reads while lanes of R are left after this cycle's issue, the leftover lanes
-//      and their RAM outputs (update: index entry; radiance: hit-point data) are copied into the
-//      slot (S), which then issues first, in the same order, while A waits (a_go = !S full).
-//      The issue order, hence every result, is that of PipeFast 0; the cycles differ
-//      (host/cosim_shadow.c models both).
-//   The PREU result is written back: update, the hit point's state when accepted (the PREU's
-//   update latency after C: 10 stages for the paper datapath, 12 for the stable one);
-//   radiance, the pixel sum (read at PREU S10, written at S12).
-// Datapath (parameter): 0 the paper's PREU datapath, state {n, r2, tau} (160 bits); 1 the stable
-// one, state {k, w, T} (320 bits): docs/preu_datapath.md. alpha_i (paper) and kappa_i (stable,
-// (1 - alpha) / alpha) are run-time constants in binary32; change them only while idle_o is high.
-// Hazard windows (cycles after issue in which the same key must not issue again), from the
-// PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update latency (issue, C, the PREU's
-// update stages, write at the end of the last): 11 paper / 13 stable with PipeFast 0, 49 / 53
-// with PipeFast 1; radiance the add's latency + 1 (pixel read RAD_LAT - add latency - 1 cycles
-// after issue, written RAD_LAT after): 3 with PipeFast 0 (9 and 12), 9 with PipeFast 1 (55 and
-// 64). ADISO-REC's pipeline depth is the PREU's radiance latency (12, or 64). Consequence: per
-// hit point, updates happen in photon order; per pixel, contributions add in ADISO issue order
-// (step by step, lane 0 first), which model/pree/adiso_order.c reproduces.
-//
-// Memories (all pree_ram_sdp, one write and one read port each):
-//   index table   NumPreu banks x 2^(IdxAW-log2 NumPreu) words of HpAW bits, circular
-//   hit points    2^HpBankW banks, each a constant part {pixel, f, pos} (written by the host)
-//                 and a state part (host or update write-back; layout by Datapath); bank = low bits
-//                 XOR the next HpBankW bits (hp_bank), row = the bits above the low HpBankW
-//   pixels        2^PxBankW banks of 96-bit {b, g, r} sums; bank = low bits of the pixel
-// Host ports (hp_*, px_*): use them only while idle_o is high; read data comes one cycle after
-// the read enable. The index load port writes up to NumPreu entries per cycle, which must lie
-// in distinct banks (distinct addresses mod NumPreu): the rate at which the PREUs consume
-// entries at full utilization, whatever PhotonsPerCycle.
-//
-// Counters (cnt_o, rtl/pree_counters.v; CtrW bits each, counting only while cnt_en_i is high):
-//   0 update cycles, 1 radiance cycles, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve (cycles in
-//   which fewer than NumPreu operations issued, by cause: the first blocked lane's cause in B,
-//   else abank when A left lanes for a bank conflict, else starve: the controller offered
-//   fewer), then 7 + l: operations into PREU l. photons_done_o counts photons whose last
-//   index-table entry has been read (the host may then reuse their entries); it wraps.
+// Pipeline (a lane l of a stage feeds PREU l):
+//   A  the controller's offer, read in lane order, one lane per bank a cycle (pree_top_read):
+//      update, the index table; radiance, the hit-point memory. A reads when B empties in this
+//      cycle (PipeFast 0) or when B's skid slot is empty (PipeFast 1, a register).
+//   B  the read results issue in lane order, a prefix of the pending lanes, each free of a
+//      hazard (its key, the hit point or the pixel, in flight), a same-key earlier lane and a
+//      same-bank one (pree_top_issue). Update: issue = the hit-point read; radiance: the PREU.
+//      PipeFast 1: B's leftover lanes with their RAM outputs move into a skid slot that issues
+//      first, in the same order (host/cosim_shadow.c models both).
+//   C  update: the hit-point data and the photon into the PREU. Results are written back:
+//      update, the state when accepted; radiance, the pixel sum.
+// Hazard windows follow the PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update
+// latency (11 / 13 paper / stable, 49 / 53 with PipeFast 1); radiance the add's latency + 1 (3, or
+// 9). ADISO-REC's depth is the radiance latency (12, or 64). So, per hit point, updates happen
+// in photon order, and per pixel, contributions add in ADISO issue order (model/pree/adiso_order.c).
+// Memories (pree_ram_banks of pree_ram_sdp): the index table in NumPreu banks (address mod
+// NumPreu); the hit points in 2^HpBankW banks ({pixel, f, pos} and the state: paper {n, r2, tau},
+// stable {k, w, T}), bank = low bits XOR the next HpBankW bits; the pixel sums in 2^PxBankW banks.
+// Counters (cnt_o, pree_counters, while cnt_en_i): update and radiance cycles, haz, dup, bank,
+// abank, starve, then the operations into each PREU; photons_done_o counts photons whose last
+// index entry has been read (the host may reuse their entries; it wraps).
 `default_nettype none
 
 module pree_top #(
@@ -222,18 +187,16 @@ module pree_top #(
     .stall_i(~mode_i | ~a_all), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
 
   // ===============================================================================================
-  // Stage A: read the offer's lanes in lane order, one lane per bank per cycle.
-  reg  [NumPreu-1:0]         a_done_q;
+  // Stage A: read the offer's lanes in lane order, one lane per bank a cycle (pree_top_read).
   wire [NumPreu-1:0]         ctl_valid = mode_i ? ad_valid : af_valid;
-  wire [NumPreu-1:0]         a_valid   = ctl_valid & ~a_done_q;
   reg  [NumPreu*ABANK_W-1:0] a_bank;
   reg  [NumPreu*AADDR_W-1:0] a_addr;
-  reg  [NumPreu-1:0]         a_rd, a_conf;
-  reg                        a_pre;
+  wire [NumPreu-1:0]         a_rd;
+  wire                       a_short;
   wire                       a_go;        // stage B empties in this cycle
 
   always @* begin : a_lanes
-    integer l, m;
+    integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
       a_addr[l*AADDR_W +: AADDR_W] = {AADDR_W{1'b0}};
       a_bank[l*ABANK_W +: ABANK_W] = {ABANK_W{1'b0}};
@@ -245,40 +208,12 @@ module pree_top #(
         a_bank[l*ABANK_W +: LANE_W]  = af_ref[l*IdxAW +: LANE_W];
       end
     end
-    a_pre = 1'b1;
-    for (l = 0; l < NumPreu; l = l + 1) begin
-      a_conf[l] = 1'b0;
-      for (m = 0; m < l; m = m + 1)
-        if (a_valid[m] && a_bank[m*ABANK_W +: ABANK_W] == a_bank[l*ABANK_W +: ABANK_W])
-          a_conf[l] = 1'b1;
-      a_rd[l] = a_go && a_valid[l] && !a_conf[l] && a_pre;
-      a_pre   = a_pre && (!a_valid[l] || a_rd[l]);
-    end
   end
 
-  assign a_all = &(~ctl_valid | a_done_q | a_rd);
-  wire a_short = a_go && |(a_valid & ~a_rd);
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni)    a_done_q <= {NumPreu{1'b0}};
-    else if (a_all) a_done_q <= {NumPreu{1'b0}};
-    else            a_done_q <= a_done_q | a_rd;
-  end
-
-  // Photons whose last index entry has been read.
-  reg [31:0] photons_done_q;
-  reg [31:0] last_rd;
-  always @* begin : last_count
-    integer l;
-    last_rd = 32'd0;
-    for (l = 0; l < NumPreu; l = l + 1)
-      if (a_rd[l] && af_last[l] && !mode_i) last_rd = last_rd + 32'd1;
-  end
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) photons_done_q <= 32'd0;
-    else         photons_done_q <= photons_done_q + last_rd;
-  end
-  assign photons_done_o = photons_done_q;
+  pree_top_read #(.NumPreu(NumPreu), .BankW(ABANK_W)) u_read (
+    .clk_i(clk_i), .rst_ni(rst_ni), .go_i(a_go), .valid_i(ctl_valid), .bank_i(a_bank),
+    .last_i(af_last), .count_last_i(~mode_i), .rd_o(a_rd), .all_o(a_all), .short_o(a_short),
+    .photons_done_o(photons_done_o));
 
   // ===============================================================================================
   // Index table: NumPreu banks; bank = address mod NumPreu (its low LANE_W bits). A's lanes read
@@ -302,7 +237,7 @@ module pree_top #(
   reg  [NumPreu*AADDR_W-1:0] b_addr_q;
   reg  [NumPreu*PH_W-1:0]    b_data_q;
   reg                        b_short_q;
-  reg  [NumPreu-1:0]         b_iss;
+  wire [NumPreu-1:0]         b_iss;
   wire                       s_full;    // B skid: the slot holds lanes (they issue first)
 
   always @(posedge clk_i or negedge rst_ni) begin
@@ -451,42 +386,11 @@ module pree_top #(
     end
   end
 
-  // In-flight window: the keys issued in each of the last WIN_UPD cycles.
-  reg [WIN_UPD*NumPreu-1:0]       inf_v_q;
-  reg [WIN_UPD*NumPreu*KEY_W-1:0] inf_k_q;
-
-  always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) inf_v_q <= {WIN_UPD*NumPreu{1'b0}};
-    else         inf_v_q <= {inf_v_q[0 +: (WIN_UPD-1)*NumPreu], b_iss};
-  end
-  always @(posedge clk_i) begin
-    inf_k_q <= {inf_k_q[0 +: (WIN_UPD-1)*NumPreu*KEY_W], b_key};
-  end
-
-  // Issue: a prefix of the pending lanes, each free of hazards and conflicts.
-  reg [NumPreu-1:0] b_haz, b_dup, b_bcf;
-  reg               b_pre;
-  always @* begin : b_issue
-    integer l, m, s;
-    b_pre = 1'b1;
-    for (l = 0; l < NumPreu; l = l + 1) begin
-      b_haz[l] = 1'b0;
-      b_dup[l] = 1'b0;
-      b_bcf[l] = 1'b0;
-      for (s = 0; s < WIN_UPD; s = s + 1)
-        for (m = 0; m < NumPreu; m = m + 1)
-          if ((s < WIN_RAD || !mode_i) && inf_v_q[s*NumPreu + m] &&
-              inf_k_q[(s*NumPreu + m)*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W])
-            b_haz[l] = 1'b1;
-      for (m = 0; m < l; m = m + 1)
-        if (bl_pend[m]) begin
-          if (b_key[m*KEY_W +: KEY_W] == b_key[l*KEY_W +: KEY_W]) b_dup[l] = 1'b1;
-          else if (b_bank[m*BBANK_W +: BBANK_W] == b_bank[l*BBANK_W +: BBANK_W]) b_bcf[l] = 1'b1;
-        end
-      b_iss[l] = bl_pend[l] && b_pre && !b_haz[l] && !b_dup[l] && !b_bcf[l];
-      b_pre    = b_pre && (!bl_pend[l] || b_iss[l]);
-    end
-  end
+  // Issue: a prefix of the pending lanes, each free of hazards and conflicts (pree_top_issue).
+  wire [NumPreu-1:0] b_haz, b_dup;
+  pree_top_issue #(.NumPreu(NumPreu), .KeyW(KEY_W), .BankW(BBANK_W), .WinUpd(WIN_UPD), .WinRad(WIN_RAD)) u_issue (
+    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .pend_i(bl_pend), .key_i(b_key), .bank_i(b_bank),
+    .iss_o(b_iss), .haz_o(b_haz), .dup_o(b_dup));
 
   // A reads when B empties in this cycle; with the skid, when the slot is empty (a register).
   assign a_go = (B_SKID != 0) ? !s_full : &(~b_pend_q | b_iss);

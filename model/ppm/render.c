@@ -1,9 +1,10 @@
-/* render.c: the render driver: phases in order, threads, timing, progress and interrupt.
+/* render.c: the render driver: the session's set-up (phases in order, threads, the grid), the
+ * radiance pass and the close.
  *
- * The photon pass runs in blocks: photons of a block are traced in parallel into ordered
- * chunk buffers, then each thread updates the hit points it owns from all of the block's
- * hits in photon order. So every hit point sees its photons in index order, and the result
- * does not depend on the number of threads. */
+ * The photon pass (render_step.c) runs in blocks: photons of a block are traced in parallel into
+ * ordered chunk buffers, then each thread updates the hit points it owns from all of the block's
+ * (or the screening batch's) hits in photon order. So every hit point sees its photons in index
+ * order, and the result does not depend on the number of threads. */
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>

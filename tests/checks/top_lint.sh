@@ -6,7 +6,7 @@
 # cost: 180 (its seconds in a serial run; the runner starts costly checks first)
 set -u
 cd "$(dirname "$0")/../.."
-srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_counters.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
+srcs=$(grep -v '^//' rtl/pree.f | tr '\n' ' ')   # the RTL filelist
 fail=0
 for d in 0 1; do
   for p in 4 8 16; do

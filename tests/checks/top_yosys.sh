@@ -4,7 +4,7 @@
 # no combinational loop, no multiple drivers. The full synth_xilinx run is `make synth-top`.
 set -u
 cd "$(dirname "$0")/../.."
-srcs="rtl/pree_top.v rtl/pree_ram_sdp.v rtl/pree_ram_banks.v rtl/pree_counters.v rtl/pree_aftso_hpuoc.v rtl/pree_adiso_rec.v rtl/pree_preu.v $(ls rtl/pree_fp32_*.v | tr "\n" " ") rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
+srcs=$(grep -v '^//' rtl/pree.f | tr '\n' ' ')   # the RTL filelist
 mkdir -p build/cosim
 for d in 0 1; do
   cmd="read_verilog -Irtl $srcs; chparam -set NumPreu 4 -set HpAW 10 -set HpBankW 4 -set IdxAW 8 -set PxAW 8 -set PxBankW 2 -set Datapath $d pree_top; hierarchy -check -top pree_top; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr t:\$sr; check -assert"
