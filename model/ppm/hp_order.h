@@ -10,8 +10,8 @@
  * then index. NULL when out of memory. */
 uint32_t *hp_order_spatial(const hitpoints_t *h, int width, int num_parts, double cell);
 
-/* Rearrange every array of h into that order, and back, in place. 0, or -1 when out of memory
- * (nothing is moved). */
+/* Rearrange every array of h into that order, and back, each array in its own memory (through a
+ * scratch of 24 bytes a hit point). 0, or -1 when out of memory (nothing is moved). */
 int hp_order_apply(hitpoints_t *h, const uint32_t *perm);
 int hp_order_restore(hitpoints_t *h, const uint32_t *perm);
 

@@ -10,8 +10,8 @@
 
 #define PHOTON_BLOCK RENDER_PHOTON_BLOCK   /* whole batches of 1000 photons */
 #define TRACE_CHUNKS 64u
-/* Photon blocks traced before one update (a screening batch, render.c): the update screens them
- * together against the radii at the batch's start and applies them in photon order. */
+/* Photon blocks traced before one update (a screening batch, render_step.c): the update screens
+ * them together against the radii at the batch's start and applies them in photon order. */
 #define SCREEN_BLOCKS_MAX 4u
 _Static_assert(TRACE_CHUNKS * SCREEN_BLOCKS_MAX <= UPDATE_BATCH_MAX_CHUNKS,
                "update_batch_prepare takes at most UPDATE_BATCH_MAX_CHUNKS chunks");
@@ -71,12 +71,11 @@ struct render_session {
     unsigned long long bytes_sent;   /* this rank's bytes to the other ranks */
 };
 
-/* The photon pass's steps that render_round.c shares (render.c): trace the photons of sequence
- * indices [first, first + count) into the block buffers' slot for block `slot` of a batch,
- * dropping hits that reach no hit point's cell when skipping (0, -1 out of memory, or 1:
- * stopped, the block abandoned); progress on
- * stderr (a failed write only stops the printing); whether the grid is re-filtered, and a
- * re-filter now (0 or -1). */
+/* The photon pass's steps that render_round.c shares (render_trace.c, render_step.c): trace the
+ * photons of sequence indices [first, first + count) into the block buffers' slot for block
+ * `slot` of a batch, dropping hits that reach no hit point's cell when skipping (0, -1 out of
+ * memory, or 1: stopped, the block abandoned); progress on stderr (a failed write only stops the
+ * printing); whether the grid is re-filtered, and a re-filter now (0 or -1). */
 int render_trace_block(render_session_t *s, uint64_t first, uint64_t count, unsigned slot);
 void render_progress(render_session_t *s);
 int render_refilter_enabled(const render_session_t *s);

@@ -178,7 +178,7 @@ static int finish_block(render_session_t *s, unsigned slot, uint64_t count)
 {
     render_stats_t *st = &s->res->stats;
     if (refilter_block(s)) return -1;
-    if (s->blocks == 1) s->grid_dropped_first = s->res->stats.grid_entries - s->res->stats.grid_entries_final;
+    if (s->blocks == 1) s->grid_dropped_first = st->grid_entries - st->grid_entries_final;
     photon_hits_t *chunk = s->bb->chunk + (size_t)slot * TRACE_CHUNKS;
     for (unsigned c = 0; c < TRACE_CHUNKS; c++) {
         st->photon_hits += chunk[c].n;
