@@ -29,7 +29,7 @@
 COSIM_DIR    := $(BUILD)/cosim
 COSIM_PREUS  := 4 8 16
 COSIM_RTL    := $(shell grep -v '^//' rtl/pree.f)   # the RTL filelist (pree_top and its wrappers)
-COSIM_INCS   := rtl/pree_preu_plan.vh
+COSIM_INCS   := $(wildcard rtl/*.vh)   # the RTL's include files
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 # Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels
 # 2^(log2 NumPreu + 2). The model directory names carry them (and a version of the bank hash),

@@ -30,7 +30,7 @@ sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
 # --pipe-fast) and takes one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's
 # port, not yet the wrapper's): the pree_top parameters without either.
 define AXI_VL_RULE
-$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \

@@ -84,7 +84,7 @@ $(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c tb/cosim/bench_draw.h $(BUILD)/mo
 	$(CC) $(TOPIV_CFLAGS) $(filter-out %.h,$^) -o $@ -lm
 
 define TOPIV_CFG_RULE
-$(TOPIV_DIR)/top_tb_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)
+$(TOPIV_DIR)/top_tb_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) $(wildcard rtl/*.vh) mk/top_icarus.mk | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(1)) -o $$@ tb/cosim/top_tb.v $(TOPIV_RTL)
 endef
@@ -95,7 +95,7 @@ endef
 # A mutant: one RTL file with one edit (the rule fails when the edit no longer applies).
 topiv_mfile = $(or $(TOPIV_FILE_$(1)),rtl/pree_top.v)
 define TOPIV_MUT_RULE
-$(TOPIV_DIR)/mut_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) mk/top_icarus.mk | $(DEPS_STAMP)
+$(TOPIV_DIR)/mut_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) $(wildcard rtl/*.vh) mk/top_icarus.mk | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	sed "$(TOPIV_SED_$(1))" $(call topiv_mfile,$(1)) >$(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1)))
 	@if cmp -s $(call topiv_mfile,$(1)) $(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))); then \

@@ -1,8 +1,8 @@
 // pree.f: the PREE RTL in dependency order (leaves first), for Vivado (read_verilog -f / add_files),
 // Verilator (-f), Icarus (-c) and Yosys (read_verilog of each line). Top for an FPGA build:
 // pree_axi (docs/integration.md); pree_top for the bare engine. Paths relative to the repository.
-// The include directory is rtl/ (rtl/pree_preu_plan.vh): -Irtl for Verilator and Icarus, +incdir+rtl or
-// Vivado's include_dirs elsewhere.
+// The include directory is rtl/ (rtl/pree_preu_plan.vh, rtl/pree_hp_bank.vh): -Irtl for Verilator
+// and Icarus, +incdir+rtl or Vivado's include_dirs elsewhere.
 rtl/pree_ram_sdp.v
 rtl/pree_ram_banks.v
 rtl/pree_reset_sync.v
@@ -36,6 +36,8 @@ rtl/pree_adiso_rec.v
 rtl/pree_counters.v
 rtl/pree_top_read.v
 rtl/pree_top_issue.v
+rtl/pree_top_skid.v
+rtl/pree_top_hpmem.v
 rtl/pree_top.v
 rtl/pree_axil_slave.v
 rtl/pree_axi.v

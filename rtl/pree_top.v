@@ -19,7 +19,7 @@
 //      hazard (its key, the hit point or the pixel, in flight), a same-key earlier lane and a
 //      same-bank one (pree_top_issue). Update: issue = the hit-point read; radiance: the PREU.
 //      PipeFast 1: B's leftover lanes with their RAM outputs move into a skid slot that issues
-//      first, in the same order (host/cosim_shadow.c models both).
+//      first, in the same order (pree_top_skid; host/cosim_shadow.c models both).
 //   C  update: the hit-point data and the photon into the PREU. Results are written back:
 //      update, the state when accepted; radiance, the pixel sum.
 // Hazard windows follow the PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update
@@ -27,8 +27,8 @@
 // 9). ADISO-REC's depth is the radiance latency (12, or 64). So, per hit point, updates happen
 // in photon order, and per pixel, contributions add in ADISO issue order (model/pree/adiso_order.c).
 // Memories (pree_ram_banks of pree_ram_sdp): the index table in NumPreu banks (address mod
-// NumPreu); the hit points in 2^HpBankW banks ({pixel, f, pos} and the state: paper {n, r2, tau},
-// stable {k, w, T}), bank = low bits XOR the next HpBankW bits; the pixel sums in 2^PxBankW banks.
+// NumPreu); the hit points in 2^HpBankW banks (pree_top_hpmem; bank: rtl/pree_hp_bank.vh); the
+// pixel sums in 2^PxBankW banks (the pixel's low bits).
 // Counters (cnt_o, pree_counters, while cnt_en_i): update and radiance cycles, haz, dup, bank,
 // abank, starve, then the operations into each PREU; photons_done_o counts photons whose last
 // index entry has been read (the host may reuse their entries; it wraps).
@@ -92,10 +92,9 @@ module pree_top #(
 );
 
 `include "pree_preu_plan.vh"
+`include "pree_hp_bank.vh"
 
   localparam LANE_W    = $clog2(NumPreu);
-  localparam HP_BANKS  = 1 << HpBankW;
-  localparam HP_ROW_W  = HpAW - HpBankW;
   localparam PX_BANKS  = 1 << PxBankW;
   localparam PX_ROW_W  = PxAW - PxBankW;
   localparam IDX_ROW_W = IdxAW - LANE_W;
@@ -121,35 +120,16 @@ module pree_top #(
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
   localparam B_SKID  /*verilator public*/ = (PipeFast != 0) ? 1 : 0; // B's skid slot (B skid)
-  localparam SKID_W    = (HpAW + PH_W > CONST_W + STATE_W) ? HpAW + PH_W : CONST_W + STATE_W;
   localparam PH_W      = 192;
 
+  // Parameter checks (elaboration fails on a module that does not exist): StateW follows
+  // Datapath; NumPreu is a power of two (index-table banks and ADISO groups are cut by bits).
   generate
     if (StateW != ((Datapath != 0) ? 320 : 160)) begin : g_bad_statew
       pree_top_statew_is_set_by_datapath u_fail ();
     end
-  endgenerate
-
-  // NumPreu must be a power of two (index-table banks and ADISO groups are cut by bits).
-  generate
     if ((1 << LANE_W) != NumPreu || NumPreu < 2) begin : g_bad_numpreu
       pree_top_numpreu_must_be_a_power_of_two_at_least_2 u_fail ();
-    end
-  endgenerate
-
-  // Hit-point bank of an address: the low HpBankW bits XOR the next HpBankW bits, so that hit
-  // points a multiple of 2^HpBankW apart (neighbours one image row apart) still spread over the
-  // banks. The row inside the bank is the address without its low HpBankW bits.
-  function [HpBankW-1:0] hp_bank;
-    input [2*HpBankW-1:0] a;      // the low 2*HpBankW address bits
-    begin
-      hp_bank = a[HpBankW-1:0] ^ a[HpBankW +: HpBankW];
-    end
-  endfunction
-
-  generate
-    if (HpAW < 2 * HpBankW) begin : g_bad_hpbankw
-      pree_top_hpaw_must_be_at_least_twice_hpbankw u_fail ();
     end
   endgenerate
 
@@ -254,126 +234,63 @@ module pree_top #(
     end
   end
 
-  // Bank outputs as arrays (one word per bank), read with narrow indices: each lane's selection
-  // is a 2^HpBankW:1 (hit points), NumPreu:1 (index table) or 2^PxBankW:1 (pixels) multiplexer.
-  // RAM ports drive plain wires that are then assigned to the array words (Yosys re-derives,
-  // and renames, a module whose cell ports drive array words directly).
-  wire [CONST_W-1:0] hpc_rd [0:HP_BANKS-1];
-  wire [STATE_W-1:0] hps_rd [0:HP_BANKS-1];
-  wire [95:0]        px_rd  [0:PX_BANKS-1];
-
-  // Each lane's hit-point read: update, the issue in B (address from the index table); radiance,
-  // the read in A (ADISO's address). hsel_q holds the bank a lane read last, so that the lane's
-  // data (radiance: in B; update: in C) is selected by a registered bank number. Lane 0 also
-  // carries the host's reads (hp_re_i, only while idle): hp_rdata_o is lane 0's selection.
+  // Each lane's hit-point read (pree_top_hpmem): update, the issue in B (address from the index
+  // table); radiance, the read in A (ADISO's address). The lane's data (radiance: in B; update: in
+  // C) comes from the bank it read last.
   reg  [NumPreu*HpAW-1:0]    b_hp;     // update: the B lanes' hit-point addresses (index table)
   reg  [NumPreu-1:0]         hr_re;
   reg  [NumPreu*HpAW-1:0]    hr_addr;
-  reg  [NumPreu*HpBankW-1:0] hr_bank;
-  reg  [NumPreu*HpBankW-1:0] hsel_q;
+  wire [NumPreu*CONST_W-1:0] hm_c;     // each lane's hit-point data
+  wire [NumPreu*STATE_W-1:0] hm_s;
   wire [NumPreu*PxAW-1:0]    l_pix;    // the pixel of each lane's selected hit point
 
   always @* begin : hp_lane_rd
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      if (mode_i) begin
-        hr_re[l]                 = a_rd[l];
-        hr_addr[l*HpAW +: HpAW]  = ad_addr[l*HpAW +: HpAW];
-      end else begin
-        hr_re[l]                 = b_iss[l];
-        hr_addr[l*HpAW +: HpAW]  = b_hp[l*HpAW +: HpAW];
-      end
-      hr_bank[l*HpBankW +: HpBankW] = hp_bank(hr_addr[l*HpAW +: 2*HpBankW]);
+      hr_re[l]                = mode_i ? a_rd[l] : b_iss[l];
+      hr_addr[l*HpAW +: HpAW] = mode_i ? ad_addr[l*HpAW +: HpAW] : b_hp[l*HpAW +: HpAW];
     end
   end
 
-  always @(posedge clk_i) begin : hp_lane_sel
+  // R, the lanes at the RAM outputs: update, the index entry (from the bank the lane's index
+  // address names) and the photon; radiance, the hit-point data.
+  reg  [NumPreu*HpAW-1:0] r_hp;
+  always @* begin : r_lanes
     integer l;
     for (l = 0; l < NumPreu; l = l + 1)
-      if (hr_re[l])                hsel_q[l*HpBankW +: HpBankW] <= hr_bank[l*HpBankW +: HpBankW];
-      else if (l == 0 && hp_re_i) hsel_q[l*HpBankW +: HpBankW] <= hp_bank(hp_addr_i[2*HpBankW-1:0]);
+      r_hp[l*HpAW +: HpAW] = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
   end
 
-  // B skid (PipeFast 1): the slot's lanes, their records and short flag; without it, nothing.
-  wire [NumPreu-1:0]        s_pend;
-  wire [NumPreu*SKID_W-1:0] s_rec;
-  wire                      s_short;
-  generate
-    if (B_SKID != 0) begin : g_skid
-      reg                        full_q, short_q;
-      reg  [NumPreu-1:0]         pend_q;
-      reg  [NumPreu*SKID_W-1:0]  rec_q;
-      // What B leaves after this cycle's issue: the slot's own lanes, or R's (then copied).
-      wire [NumPreu-1:0]         left = (full_q ? pend_q : b_pend_q) & ~b_iss;
-      // R's records (the lanes at the RAM outputs), as the slot keeps them: update, the index
-      // entry and the photon; radiance, the hit-point data {const, state} from the bank the lane
-      // read last.
-      reg  [NumPreu*SKID_W-1:0]   r_rec;
-      always @* begin : r_lanes
-        integer l;
-        for (l = 0; l < NumPreu; l = l + 1) begin
-          r_rec[l*SKID_W +: SKID_W] = {SKID_W{1'b0}};
-          if (mode_i)
-            r_rec[l*SKID_W +: CONST_W + STATE_W] = {hpc_rd[hsel_q[l*HpBankW +: HpBankW]],
-                                                    hps_rd[hsel_q[l*HpBankW +: HpBankW]]};
-          else
-            r_rec[l*SKID_W +: HpAW + PH_W] = {idx_rd[b_addr_q[l*AADDR_W +: LANE_W]],
-                                              b_data_q[l*PH_W +: PH_W]};
-        end
-      end
-      always @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni) begin
-          full_q <= 1'b0;
-          pend_q <= {NumPreu{1'b0}};
-        end else begin
-          full_q <= |left;
-          pend_q <= left;
-        end
-      end
-      always @(posedge clk_i) begin
-        if (!full_q) begin
-          rec_q   <= r_rec;
-          short_q <= b_short_q;
-        end
-      end
-      assign s_full  = full_q;
-      assign s_pend  = pend_q;
-      assign s_rec   = rec_q;
-      assign s_short = short_q;
-    end else begin : g_no_skid
-      assign s_full  = 1'b0;
-      assign s_pend  = {NumPreu{1'b0}};
-      for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_rec   // (a replication per lane)
-        assign s_rec[gl*SKID_W +: SKID_W] = {SKID_W{1'b0}};
-      end
-      assign s_short = 1'b0;
-    end
-  endgenerate
+  // B skid (PipeFast 1, pree_top_skid): what B leaves moves into a slot that issues first.
+  wire [NumPreu-1:0]         s_pend;
+  wire                       s_short;
+  wire [NumPreu*HpAW-1:0]    s_hp;
+  wire [NumPreu*PH_W-1:0]    s_ph;
+  wire [NumPreu*CONST_W-1:0] s_hc;
+  wire [NumPreu*STATE_W-1:0] s_hs;
+  pree_top_skid #(.Skid(B_SKID), .NumPreu(NumPreu), .HpAW(HpAW), .PhW(PH_W), .ConstW(CONST_W),
+                  .StateW(STATE_W)) u_skid (
+    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .r_pend_i(b_pend_q), .r_short_i(b_short_q),
+    .r_hp_i(r_hp), .r_ph_i(b_data_q), .r_hc_i(hm_c), .r_hs_i(hm_s), .iss_i(b_iss),
+    .full_o(s_full), .pend_o(s_pend), .short_o(s_short),
+    .hp_o(s_hp), .ph_o(s_ph), .hc_o(s_hc), .hs_o(s_hs));
 
-  // B's live lanes (the slot's while it holds any, else R's); their records below (b_lanes).
-  wire [NumPreu-1:0]        bl_pend  = s_full ? s_pend : b_pend_q;
-  wire                      bl_short = s_full ? s_short : b_short_q;
+  // B's live lanes: the slot's while it holds any, else R's.
+  wire [NumPreu-1:0]         bl_pend  = s_full ? s_pend : b_pend_q;
+  wire                       bl_short = s_full ? s_short : b_short_q;
+  wire [NumPreu*PH_W-1:0]    b_ph     = s_full ? s_ph : b_data_q;   // update: the photons
+  wire [NumPreu*CONST_W-1:0] b_hc     = s_full ? s_hc : hm_c;       // radiance: hit-point data
+  wire [NumPreu*STATE_W-1:0] b_hs     = s_full ? s_hs : hm_s;
+  always @* b_hp = s_full ? s_hp : r_hp;
 
   // The B lanes' keys: update, the hit-point address read from the index table; radiance, the
   // pixel of the hit point read in A.
   reg  [NumPreu*KEY_W-1:0]    b_key;
   reg  [NumPreu*BBANK_W-1:0]  b_bank;
-  reg  [NumPreu*PH_W-1:0]     b_ph;     // update: the B lanes' photons
-  reg  [NumPreu*CONST_W-1:0]  b_hc;     // radiance: the B lanes' hit-point data
-  reg  [NumPreu*STATE_W-1:0]  b_hs;
 
-  always @* begin : b_lanes
+  always @* begin : b_keys
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      if (s_full) begin
-        {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}             = s_rec[l*SKID_W +: HpAW + PH_W];
-        {b_hc[l*CONST_W +: CONST_W], b_hs[l*STATE_W +: STATE_W]} = s_rec[l*SKID_W +: CONST_W + STATE_W];
-      end else begin
-        b_hp[l*HpAW +: HpAW]       = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
-        b_ph[l*PH_W +: PH_W]       = b_data_q[l*PH_W +: PH_W];
-        b_hc[l*CONST_W +: CONST_W] = hpc_rd[hsel_q[l*HpBankW +: HpBankW]];
-        b_hs[l*STATE_W +: STATE_W] = hps_rd[hsel_q[l*HpBankW +: HpBankW]];
-      end
       b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       if (mode_i) begin
@@ -417,18 +334,18 @@ module pree_top #(
   wire [NumPreu*96-1:0]      p_l;
   wire [NumPreu*STATE_W-1:0] p_state;
   reg  [NumPreu*PxBankW-1:0] px_rbank_q;
+  wire [95:0]                px_rd [0:PX_BANKS-1];   // the pixel banks' reads (pixel memory)
   // Write-back requests per lane (update: the accepted state at its hit point; radiance: the pixel
   // sum at its pixel), then the host's port as one more lane of the memories below.
   wire [NumPreu-1:0]      wb_hp_en, wb_px_en;
-  wire [NumPreu*HpAW-1:0] wb_hp_addr;     // {row, bank}
+  wire [NumPreu*HpAW-1:0] wb_hp_addr;
   wire [NumPreu*PxAW-1:0] p_lpix, p_wpix; // the pixel read (lreq) and written back
   generate
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
       // The lane's hit-point data: radiance, B's (read in A); update, from the bank the lane
       // read last (in B).
-      wire [HpBankW-1:0] hsel = hsel_q[gl*HpBankW +: HpBankW];
-      wire [CONST_W-1:0] hc   = mode_i ? b_hc[gl*CONST_W +: CONST_W] : hpc_rd[hsel]; // {pixel, f, pos}
-      wire [STATE_W-1:0] hs   = mode_i ? b_hs[gl*STATE_W +: STATE_W] : hps_rd[hsel];
+      wire [CONST_W-1:0] hc   = mode_i ? b_hc[gl*CONST_W +: CONST_W] : hm_c[gl*CONST_W +: CONST_W];
+      wire [STATE_W-1:0] hs   = mode_i ? b_hs[gl*STATE_W +: STATE_W] : hm_s[gl*STATE_W +: STATE_W];
       wire [95:0]        li   = px_rd[px_rbank_q[gl*PxBankW +: PxBankW]];
       wire [KEY_W-1:0]   tag;
       assign l_pix[gl*PxAW +: PxAW] = hc[192 +: PxAW];
@@ -453,8 +370,7 @@ module pree_top #(
 
       // Write-back: update, the accepted hit-point state; radiance, the pixel sum.
       assign wb_hp_en[gl]   = !mode_i && p_vout[gl] && p_acc[gl];
-      assign wb_hp_addr[gl*HpAW +: HpAW] = {p_tag[gl*KEY_W + HpBankW +: HP_ROW_W],
-                                            hp_bank(p_tag[gl*KEY_W +: 2*HpBankW])};
+      assign wb_hp_addr[gl*HpAW +: HpAW] = p_tag[gl*KEY_W +: HpAW];
       assign wb_px_en[gl]   = mode_i && p_vout[gl];
       assign p_lpix[gl*PxAW +: PxAW] = p_ltag[gl*KEY_W +: PxAW];
       assign p_wpix[gl*PxAW +: PxAW] = p_tag[gl*KEY_W +: PxAW];
@@ -468,42 +384,13 @@ module pree_top #(
   end
 
   // ===============================================================================================
-  // Hit-point memory: HP_BANKS banks of a constant and a state RAM. Lanes: the PREU lanes
-  // (update: B's issue; radiance: A's read; state writes: update write-back), then the host
-  // (both parts; the constant part has no other writer).
-  localparam HM_LANES = NumPreu + 1;
-  wire [HpAW-1:0]              host_hp_addr = {hp_addr_i[HpAW-1:HpBankW],
-                                              hp_bank(hp_addr_i[2*HpBankW-1:0])};
-  wire [HM_LANES*HpAW-1:0]     hm_rd_addr;
-  wire [HP_BANKS*CONST_W-1:0]  hpc_rdata;
-  wire [HP_BANKS*STATE_W-1:0]  hps_rdata;
-
-  generate
-    for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_hm_lane
-      assign hm_rd_addr[gl*HpAW +: HpAW] = {hr_addr[gl*HpAW + HpBankW +: HP_ROW_W],
-                                            hr_bank[gl*HpBankW +: HpBankW]};
-    end
-  endgenerate
-  assign hm_rd_addr[NumPreu*HpAW +: HpAW] = host_hp_addr;
-
-  pree_ram_banks #(.BankW(HpBankW), .RowW(HP_ROW_W), .Width(CONST_W), .Lanes(HM_LANES)) u_hp_const (
-    .clk_i(clk_i), .rd_i({hp_re_i, hr_re}), .rd_addr_i(hm_rd_addr),
-    .wr_i({hp_we_i, {NumPreu{1'b0}}}), .wr_addr_i({host_hp_addr, {NumPreu*HpAW{1'b0}}}),
-    .wr_data_i({hp_wdata_i[STATE_W +: CONST_W], {NumPreu*CONST_W{1'b0}}}), .rdata_o(hpc_rdata));
-  pree_ram_banks #(.BankW(HpBankW), .RowW(HP_ROW_W), .Width(STATE_W), .Lanes(HM_LANES)) u_hp_state (
-    .clk_i(clk_i), .rd_i({hp_re_i, hr_re}), .rd_addr_i(hm_rd_addr),
-    .wr_i({hp_we_i, wb_hp_en}), .wr_addr_i({host_hp_addr, wb_hp_addr}),
-    .wr_data_i({hp_wdata_i[0 +: STATE_W], p_state}), .rdata_o(hps_rdata));
-  generate
-    for (gb = 0; gb < HP_BANKS; gb = gb + 1) begin : g_hp
-      assign hpc_rd[gb] = hpc_rdata[gb*CONST_W +: CONST_W];
-      assign hps_rd[gb] = hps_rdata[gb*STATE_W +: STATE_W];
-    end
-  endgenerate
-
-  // Host read: lane 0's selection (its bank register follows hp_re_i while idle).
-  wire [HpBankW-1:0] hp_hsel = hsel_q[0 +: HpBankW];
-  assign hp_rdata_o = {hpc_rd[hp_hsel], hps_rd[hp_hsel]};
+  // Hit-point memory (pree_top_hpmem): the PREU lanes' reads (update: B's issue; radiance: A's
+  // read) and state writes (update write-back), and the host's port.
+  pree_top_hpmem #(.NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .ConstW(CONST_W),
+                   .StateW(STATE_W)) u_hpmem (
+    .clk_i(clk_i), .rd_i(hr_re), .rd_addr_i(hr_addr), .wr_i(wb_hp_en), .wr_addr_i(wb_hp_addr),
+    .wr_state_i(p_state), .rd_const_o(hm_c), .rd_state_o(hm_s), .hp_we_i(hp_we_i),
+    .hp_re_i(hp_re_i), .hp_addr_i(hp_addr_i), .hp_wdata_i(hp_wdata_i), .hp_rdata_o(hp_rdata_o));
 
   // ===============================================================================================
   // Pixel memory: PX_BANKS banks of {b, g, r}; bank = the pixel's low bits. Lanes: the PREU lanes
