@@ -225,14 +225,12 @@ static void one_line(char *s)
         if (*s == '\n' || *s == '\r') *s = ' ';
 }
 
-/* Copy the imported triangles into m (transformed), resolving materials and collecting
- * emitters. Returns 0 or -1 (err filled). */
-static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, const char *path,
-                   mesh_t *m, corners_t *emit, size_t *dropped, size_t *excluded, size_t *non_tri,
-                   char *err, size_t errlen)
+/* Counts the triangle meshes' vertices and faces (faces of other meshes add to *non_tri) and
+ * allocates m's arrays for them (normals only when the model has some and o wants them).
+ * Returns 0 or -1 (err filled). */
+static int mesh_alloc(const mesh_opts_t *o, const struct aiScene *as, const char *path, mesh_t *m,
+                      size_t *non_tri, char *err, size_t errlen)
 {
-    char base[128];
-    base_name(path, base, sizeof base);
     size_t nv = 0, nt = 0;
     int any_normals = 0;
     for (unsigned i = 0; i < as->mNumMeshes; i++) {
@@ -243,14 +241,93 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
         any_normals |= am->mNormals != NULL;
     }
     if (nv > UINT32_MAX) { snprintf(err, errlen, "%s: more than 2^32 vertices", path); return -1; }
+    int normals = any_normals && o->normals != NORMALS_FLAT;
     m->vertices = malloc((nv ? nv : 1) * 3 * sizeof *m->vertices);
     m->indices = malloc((nt ? nt : 1) * 3 * sizeof *m->indices);
     m->tri_material = malloc((nt ? nt : 1) * sizeof *m->tri_material);
-    if (any_normals && o->normals != NORMALS_FLAT) m->normals = calloc((nv ? nv : 1) * 3, sizeof *m->normals);
-    if (!m->vertices || !m->indices || !m->tri_material || (any_normals && o->normals != NORMALS_FLAT && !m->normals)) {
+    if (normals) m->normals = calloc((nv ? nv : 1) * 3, sizeof *m->normals);
+    if (!m->vertices || !m->indices || !m->tri_material || (normals && !m->normals)) {
         snprintf(err, errlen, "%s: out of memory", path);
         return -1;
     }
+    return 0;
+}
+
+/* Transforms mesh am's vertices (and normals, by the cofactor matrix cof) into m from vertex v0.
+ * Returns 0, or -1 (err filled) for a vertex that is not finite or lies beyond the range. */
+static int copy_vertices(const struct aiMesh *am, const mesh_opts_t *o, const double cof[3][3],
+                         mesh_t *m, size_t v0, const char *path, char *err, size_t errlen)
+{
+    const double (*a)[3] = o->m;
+    for (unsigned k = 0; k < am->mNumVertices; k++) {
+        vec3 p = v3(am->mVertices[k].x, am->mVertices[k].y, am->mVertices[k].z);
+        vec3 q = v3(a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + o->t.x,
+                    a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + o->t.y,
+                    a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z + o->t.z);
+        float *dst = m->vertices + 3 * (v0 + k);
+        dst[0] = (float)q.x; dst[1] = (float)q.y; dst[2] = (float)q.z;
+        if (!v3_is_finite(p) || !isfinite(dst[0]) || !isfinite(dst[1]) || !isfinite(dst[2])) {
+            snprintf(err, errlen, "%s: vertex %zu is not finite%s", path, v0 + k + 1,
+                     v3_is_finite(p) ? " after the transform (or beyond float range)" : "");
+            return -1;
+        }
+        if (fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))) > SCENE_COORD_MAX) {
+            snprintf(err, errlen, "%s: vertex %zu lies beyond +-%g (the range the tracer and binary32 hold)%s",
+                     path, v0 + k + 1, SCENE_COORD_MAX, " after the transform");
+            return -1;
+        }
+        if (m->normals && am->mNormals) {
+            vec3 n = v3(am->mNormals[k].x, am->mNormals[k].y, am->mNormals[k].z);
+            vec3 r = v3(cof[0][0] * n.x + cof[0][1] * n.y + cof[0][2] * n.z,
+                        cof[1][0] * n.x + cof[1][1] * n.y + cof[1][2] * n.z,
+                        cof[2][0] * n.x + cof[2][1] * n.y + cof[2][2] * n.z);
+            double l2 = v3_dot(r, r);
+            if (l2 > 0 && isfinite(l2)) {   /* else left 0: that corner falls back to flat */
+                r = v3_norm(r);
+                float *nd = m->normals + 3 * (v0 + k);
+                nd[0] = (float)r.x; nd[1] = (float)r.y; nd[2] = (float)r.z;
+            }
+        }
+    }
+    return 0;
+}
+
+/* Appends mesh am's triangles (vertices from v0) to m with material mat (-2: excluded), their
+ * corners to emit when it is not NULL; faces that are not triangles and triangles of area 0 are
+ * counted, not kept. Returns 0 or -1 (err filled). */
+static int copy_faces(const struct aiMesh *am, mesh_t *m, size_t v0, int mat, corners_t *emit,
+                      size_t *dropped, size_t *excluded, size_t *non_tri, const char *path,
+                      char *err, size_t errlen)
+{
+    for (unsigned f = 0; f < am->mNumFaces; f++) {
+        const struct aiFace *fc = &am->mFaces[f];
+        if (fc->mNumIndices != 3) { (*non_tri)++; continue; }
+        if (mat == -2) { (*excluded)++; continue; }
+        vec3 c[3];
+        for (int k = 0; k < 3; k++) {
+            const float *pv = m->vertices + 3 * (v0 + fc->mIndices[k]);
+            c[k] = v3(pv[0], pv[1], pv[2]);
+        }
+        vec3 x = v3_cross(v3_sub(c[1], c[0]), v3_sub(c[2], c[0]));
+        double l2 = v3_dot(x, x);
+        if (!(l2 > 0) || !isfinite(l2)) { (*dropped)++; continue; }
+        size_t t = m->num_triangles++;
+        for (int k = 0; k < 3; k++) m->indices[3 * t + k] = (uint32_t)(v0 + fc->mIndices[k]);
+        m->tri_material[t] = mat;
+        if (emit && corners_push(emit, c)) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
+    }
+    return 0;
+}
+
+/* Copy the imported triangles into m (transformed), resolving materials and collecting
+ * emitters. Returns 0 or -1 (err filled). */
+static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, const char *path,
+                   mesh_t *m, corners_t *emit, size_t *dropped, size_t *excluded, size_t *non_tri,
+                   char *err, size_t errlen)
+{
+    char base[128];
+    base_name(path, base, sizeof base);
+    if (mesh_alloc(o, as, path, m, non_tri, err, errlen)) return -1;
     int *mat_of = malloc((as->mNumMaterials ? as->mNumMaterials : 1) * sizeof *mat_of);
     if (!mat_of) { snprintf(err, errlen, "%s: out of memory", path); return -1; }
     for (unsigned k = 0; k < as->mNumMaterials; k++) mat_of[k] = -3;   /* not resolved yet */
@@ -267,38 +344,7 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
     for (unsigned i = 0; i < as->mNumMeshes && rc == 0; i++) {
         const struct aiMesh *am = as->mMeshes[i];
         if (!(am->mPrimitiveTypes & aiPrimitiveType_TRIANGLE)) continue;
-        for (unsigned k = 0; k < am->mNumVertices; k++) {
-            vec3 p = v3(am->mVertices[k].x, am->mVertices[k].y, am->mVertices[k].z);
-            vec3 q = v3(a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + o->t.x,
-                        a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + o->t.y,
-                        a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z + o->t.z);
-            float *dst = m->vertices + 3 * (v0 + k);
-            dst[0] = (float)q.x; dst[1] = (float)q.y; dst[2] = (float)q.z;
-            if (!v3_is_finite(p) || !isfinite(dst[0]) || !isfinite(dst[1]) || !isfinite(dst[2])) {
-                snprintf(err, errlen, "%s: vertex %zu is not finite%s", path, v0 + k + 1,
-                         v3_is_finite(p) ? " after the transform (or beyond float range)" : "");
-                rc = -1;
-                break;
-            }
-            if (fmax(fabs(q.x), fmax(fabs(q.y), fabs(q.z))) > SCENE_COORD_MAX) {
-                snprintf(err, errlen, "%s: vertex %zu lies beyond +-%g (the range the tracer and binary32 hold)%s",
-                         path, v0 + k + 1, SCENE_COORD_MAX, " after the transform");
-                rc = -1;
-                break;
-            }
-            if (m->normals && am->mNormals) {
-                vec3 n = v3(am->mNormals[k].x, am->mNormals[k].y, am->mNormals[k].z);
-                vec3 r = v3(cof[0][0] * n.x + cof[0][1] * n.y + cof[0][2] * n.z,
-                            cof[1][0] * n.x + cof[1][1] * n.y + cof[1][2] * n.z,
-                            cof[2][0] * n.x + cof[2][1] * n.y + cof[2][2] * n.z);
-                double l2 = v3_dot(r, r);
-                if (l2 > 0 && isfinite(l2)) {   /* else left 0: that corner falls back to flat */
-                    r = v3_norm(r);
-                    float *nd = m->normals + 3 * (v0 + k);
-                    nd[0] = (float)r.x; nd[1] = (float)r.y; nd[2] = (float)r.z;
-                }
-            }
-        }
+        rc = copy_vertices(am, o, (const double (*)[3])cof, m, v0, path, err, errlen);
         unsigned mi = am->mMaterialIndex < as->mNumMaterials ? am->mMaterialIndex : 0;
         if (rc == 0 && as->mNumMaterials > 0 && mat_of[mi] == -3) {
             mat_of[mi] = resolve_material(s, o, as->mMaterials[mi], base, err, errlen);
@@ -312,23 +358,9 @@ static int convert(scene_t *s, const mesh_opts_t *o, const struct aiScene *as, c
             mtl_props(as->mMaterials[mi], &p);
             emits = mesh_material_is_emissive(&p);
         }
-        for (unsigned f = 0; f < am->mNumFaces && rc == 0; f++) {
-            const struct aiFace *fc = &am->mFaces[f];
-            if (fc->mNumIndices != 3) { (*non_tri)++; continue; }
-            if (mat == -2) { (*excluded)++; continue; }
-            vec3 c[3];
-            for (int k = 0; k < 3; k++) {
-                const float *pv = m->vertices + 3 * (v0 + fc->mIndices[k]);
-                c[k] = v3(pv[0], pv[1], pv[2]);
-            }
-            vec3 x = v3_cross(v3_sub(c[1], c[0]), v3_sub(c[2], c[0]));
-            double l2 = v3_dot(x, x);
-            if (!(l2 > 0) || !isfinite(l2)) { (*dropped)++; continue; }
-            size_t t = m->num_triangles++;
-            for (int k = 0; k < 3; k++) m->indices[3 * t + k] = (uint32_t)(v0 + fc->mIndices[k]);
-            m->tri_material[t] = mat;
-            if (emits && corners_push(&emit[mi], c)) { snprintf(err, errlen, "%s: out of memory", path); rc = -1; }
-        }
+        if (rc == 0)
+            rc = copy_faces(am, m, v0, mat, emits ? &emit[mi] : NULL, dropped, excluded, non_tri, path,
+                            err, errlen);
         v0 += am->mNumVertices;
     }
     m->num_vertices = v0;
