@@ -106,6 +106,77 @@ static void session_free(render_session_t *s)
     free(s);
 }
 
+/* render_open's BVH build and eye pass: the hit points, their figures, the memory check with
+ * their true count. *phase names the step under way. Returns 0 or -1 (err filled). */
+static int open_eye(render_session_t *s, const char **phase, char *err, size_t errlen)
+{
+    const render_options_t *opt = &s->opt;
+    render_result_t *res = s->res;
+    render_stats_t *st = &res->stats;
+    *phase = "BVH build";
+    render_test_interrupt("bvh");
+    double t = omp_get_wtime();
+    s->tr = tracer_create(s->scene, opt->interrupt, err, errlen);
+    if (!s->tr) return -1;
+    st->sec_bvh = omp_get_wtime() - t;
+    *phase = "eye pass";
+    render_test_interrupt("eye");
+    t = omp_get_wtime();
+    eye_stats_t es;
+    if (eye_pass(s->scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
+    if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(s->scene, opt, &res->hp);
+    st->sec_eye = omp_get_wtime() - t;
+    st->hit_points = res->hp.n;
+    if (mem_check((uint64_t)res->hp.n * MEM_HIT_POINT_BYTES, opt->max_memory, "the hit points' state and grid",
+                  err, errlen))
+        return -1;
+    st->eye_rays = es.rays;
+    st->glass_splits = es.glass_splits;
+    for (size_t i = 0; i < res->hp.n; i++) st->hit_points_zero_weight += hitpoints_zero_weight(&res->hp, i);
+    return 0;
+}
+
+/* render_open's grid step: the initial radius, the spatial order of the hit points, their
+ * state, the owners and the grid. *phase names the step under way. Returns 0 or -1 (err filled). */
+static int open_grid(render_session_t *s, const char **phase, char *err, size_t errlen)
+{
+    const render_options_t *opt = &s->opt;
+    render_result_t *res = s->res;
+    render_stats_t *st = &res->stats;
+    *phase = "grid build";
+    render_test_interrupt("grid");
+    double t = omp_get_wtime();
+    st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
+        snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
+                 "bounding box) is 0: use a larger image", res->hp.n);
+        return -1;
+    }
+    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c); the state is
+     * set per hit point, so it is made after the reordering, which then moves fewer arrays. */
+    s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
+    if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); return -1; }
+    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); return -1; }
+    /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
+     * grid of every hit point and routes what it keeps to the owning part. */
+    s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
+    if (render_screen_blocks_set(s, err, errlen)) return -1;
+    s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
+    if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); return -1; }
+    for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
+    if (render_round_open(s, err, errlen)) return -1;
+    if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
+                                !s->skip, opt->interrupt, err, errlen))
+        return -1;
+    st->r_safe = s->grid.r_safe;
+    for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
+    st->grid_entries_final = st->grid_entries;
+    st->hit_point_bytes = hitpoints_bytes_each(&res->hp);
+    st->grid_entry_bytes = GRID_ENTRY_BYTES;
+    st->sec_grid = omp_get_wtime() - t;
+    return 0;
+}
+
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                               char *err, size_t errlen)
 {
@@ -141,60 +212,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     res->width = opt->width;
     res->height = opt->height;
 
-    /* Acceleration structure and eye pass. */
-    phase = "BVH build";
-    render_test_interrupt("bvh");
-    double t = omp_get_wtime();
-    s->tr = tracer_create(scene, opt->interrupt, err, errlen);
-    if (!s->tr) goto fail;
-    st->sec_bvh = omp_get_wtime() - t;
-    phase = "eye pass";
-    render_test_interrupt("eye");
-    t = omp_get_wtime();
-    eye_stats_t es;
-    if (eye_pass(scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) goto fail;
-    if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(scene, opt, &res->hp);
-    st->sec_eye = omp_get_wtime() - t;
-    st->hit_points = res->hp.n;
-    if (mem_check((uint64_t)res->hp.n * MEM_HIT_POINT_BYTES, opt->max_memory, "the hit points' state and grid",
-                  err, errlen))
-        goto fail;
-    st->eye_rays = es.rays;
-    st->glass_splits = es.glass_splits;
-    for (size_t i = 0; i < res->hp.n; i++) st->hit_points_zero_weight += hitpoints_zero_weight(&res->hp, i);
-
-    /* Initial radius, hit-point state, and the grid. */
-    phase = "grid build";
-    render_test_interrupt("grid");
-    t = omp_get_wtime();
-    st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
-    if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
-        snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
-                 "bounding box) is 0: use a larger image", res->hp.n);
-        goto fail;
-    }
-    /* The photon pass holds the hit points in spatial order (model/ppm/hp_order.c); the state is
-     * set per hit point, so it is made after the reordering, which then moves fewer arrays. */
-    s->perm = hp_order_spatial(&res->hp, opt->width, s->T, st->r0);
-    if (!s->perm || hp_order_apply(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
-    if (init_state(&res->hp, opt, st->r0)) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
-    /* The photon-major scan reads a grid part per thread; the bucket-major screening reads one
-     * grid of every hit point and routes what it keeps to the owning part. */
-    s->photon_major = opt->record_ops || opt->scan == SCAN_PHOTON;
-    if (render_screen_blocks_set(s, err, errlen)) goto fail;
-    s->owner = malloc((res->hp.n ? res->hp.n : 1) * sizeof *s->owner);
-    if (!s->owner) { snprintf(err, errlen, "out of memory for hit points"); goto fail; }
-    for (size_t i = 0; i < res->hp.n; i++) s->owner[i] = (uint16_t)grid_owner(&res->hp, i, opt->width, s->T);
-    if (render_round_open(s, err, errlen)) goto fail;
-    if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
-                                !s->skip, opt->interrupt, err, errlen))
-        goto fail;
-    st->r_safe = s->grid.r_safe;
-    for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
-    st->grid_entries_final = st->grid_entries;
-    st->hit_point_bytes = hitpoints_bytes_each(&res->hp);
-    st->grid_entry_bytes = GRID_ENTRY_BYTES;
-    st->sec_grid = omp_get_wtime() - t;
+    if (open_eye(s, &phase, err, errlen) || open_grid(s, &phase, err, errlen)) goto fail;
 
     s->emitted_target = render_emitted(opt->photons);
     s->ust = calloc((size_t)s->T, sizeof *s->ust);
