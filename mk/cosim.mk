@@ -128,7 +128,7 @@ $(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
-$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
+$(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/top_bench_abank.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 

@@ -35,6 +35,7 @@
 #include "cosim_drv.h"
 #include "bench_draw.h"
 #include "fail_trace.h"
+#include "top_bench_abank.h"
 
 static uint64_t rng_state;
 static uint32_t rnd(void) { return draw_u32(&rng_state); }
@@ -42,103 +43,6 @@ static float frand(float lo, float hi) { return lo + (hi - lo) * (float)(rnd() &
 static uint32_t fb(float x) { return fp32_to_bits(x); }
 
 #define MAX_CAND 64
-#define IDX_DEPTH (1u << COSIM_IDXAW)
-
-/* The abank scenario's photon stream: index entries in write order, each with the count of
- * photons that must be done (photons_done_o) before it overwrites their entries, and photons
- * with the end of their entries in that order. */
-typedef struct {
-    uint32_t *e_addr, *e_hp, *e_need;
-    size_t ne;
-    preu_photon_t *ph;
-    uint32_t *p_addr, *p_n;
-    size_t *p_eend;
-    uint64_t *p_start;          /* absolute index-table position of each photon's first entry */
-    size_t nph, oldest;
-    uint64_t alloc_end;
-} mis_stream_t;
-
-static int mis_init(mis_stream_t *m, size_t photons)
-{
-    memset(m, 0, sizeof *m);
-    size_t pe = photons ? photons : 1, ee = pe * MAX_CAND;
-    m->e_addr = malloc(ee * sizeof *m->e_addr);
-    m->e_hp = malloc(ee * sizeof *m->e_hp);
-    m->e_need = malloc(ee * sizeof *m->e_need);
-    m->ph = malloc(pe * sizeof *m->ph);
-    m->p_addr = malloc(pe * sizeof *m->p_addr);
-    m->p_n = malloc(pe * sizeof *m->p_n);
-    m->p_eend = malloc(pe * sizeof *m->p_eend);
-    m->p_start = malloc(pe * sizeof *m->p_start);
-    return m->e_addr && m->e_hp && m->e_need && m->ph && m->p_addr && m->p_n && m->p_eend && m->p_start ? 0 : -1;
-}
-
-static void mis_free(mis_stream_t *m)
-{
-    free(m->e_addr); free(m->e_hp); free(m->e_need); free(m->ph);
-    free(m->p_addr); free(m->p_n); free(m->p_eend); free(m->p_start);
-}
-
-/* Place one photon at a random padding of 0..2P-1 entries after the previous one. */
-static void mis_add(mis_stream_t *m, int preu, const preu_photon_t *ph, const uint32_t *cand, size_t n)
-{
-    if (n == 0) return;   /* dropped by the PREE anyway: not sent */
-    uint64_t p = m->alloc_end + rnd() % (2u * (uint32_t)preu);
-    /* Entries p .. p+n-1 overwrite those of every photon that starts before p + n - depth. */
-    while (m->oldest < m->nph && m->p_start[m->oldest] + IDX_DEPTH < p + n) m->oldest++;
-    for (size_t k = 0; k < n; k++) {   /* the k-th operation reads entry p + n - 1 - k */
-        m->e_addr[m->ne] = (uint32_t)((p + n - 1 - k) & (IDX_DEPTH - 1));
-        m->e_hp[m->ne] = cand[k];
-        m->e_need[m->ne] = (uint32_t)m->oldest;
-        m->ne++;
-    }
-    m->ph[m->nph] = *ph;
-    m->p_addr[m->nph] = (uint32_t)(p & (IDX_DEPTH - 1));
-    m->p_n[m->nph] = (uint32_t)n;
-    m->p_eend[m->nph] = m->ne;
-    m->p_start[m->nph] = p;
-    m->nph++;
-    m->alloc_end = p + n;
-}
-
-/* Stream it into the RTL (docs/pree_top.md, "Host protocol"): each cycle up to P entries in
- * order, in distinct banks, once their photons_done condition holds; the head photon once its
- * entries are written, except in random gaps. Leaves the photon input idle afterwards. */
-static int misplaced_stream(cosim_rtl_t *rtl, const mis_stream_t *m, int preu, double gap)
-{
-    cosim_in_t *in = cosim_rtl_in(rtl);
-    size_t e = 0, p = 0;
-    uint64_t guard = 0;
-    int ready = cosim_rtl_ph_ready(rtl);
-    in->cnt_en = 1;
-    while (p < m->nph) {
-        uint32_t done = cosim_rtl_photons_done(rtl), used = 0;
-        int nw = 0;
-        while (nw < preu && e < m->ne && m->e_need[e] <= done && !(used & 1u << (m->e_addr[e] % (uint32_t)preu))) {
-            used |= 1u << (m->e_addr[e] % (uint32_t)preu);
-            in->idx_we[nw] = 1;
-            in->idx_addr[nw] = m->e_addr[e];
-            in->idx_data[nw] = m->e_hp[e];
-            nw++;
-            e++;
-        }
-        for (int j = nw; j < preu; j++) in->idx_we[j] = 0;
-        in->ph_valid = m->p_eend[p] <= e && !(gap > 0 && (double)rnd() / 2147483648.0 < gap);
-        memcpy(in->ph_pos[0], m->ph[p].pos, sizeof in->ph_pos[0]);
-        memcpy(in->ph_phi[0], m->ph[p].phi, sizeof in->ph_phi[0]);
-        in->ph_paddr[0] = m->p_addr[p];
-        in->ph_n[0] = m->p_n[p];
-        for (int j = 1; j < COSIM_MAX_PPC; j++) in->ph_n[j] = 0;   /* one photon a cycle */
-        int take = in->ph_valid && ready;   /* ph_ready_o depends on the state only */
-        cosim_rtl_tick(rtl);
-        ready = cosim_rtl_ph_ready(rtl);
-        if (take) p++;
-        if (++guard > 100000000ull) return -1;
-    }
-    in->ph_valid = 0;
-    for (int j = 0; j < preu; j++) in->idx_we[j] = 0;
-    return 0;
-}
 
 /* Stream photons [from, to) (candidates of photon p at cand + p * MAX_CAND, ncand[p] of them). */
 static int stream(cosim_drv_t *drv, const preu_photon_t *ph, const uint32_t *cand, const int *ncand, int from, int to)
@@ -304,7 +208,7 @@ static int make_work(const bench_opts_t *o, uint32_t alpha32, uint32_t kappa32, 
                         .phs = malloc(np * sizeof *w->phs), .cands = malloc(np * MAX_CAND * sizeof *w->cands),
                         .ncand = malloc(np * sizeof *w->ncand)};
     if (!w->hp || !w->sp || !w->init || !w->pixel || !w->phs || !w->cands || !w->ncand) return -1;
-    if (o->abank && mis_init(mis, (size_t)o->photons)) return -1;
+    if (o->abank && mis_init(mis, (size_t)o->photons, MAX_CAND)) return -1;
     make_hit_points(o, w);
     for (int p = 0; p < o->photons; p++) {
         preu_photon_t ph;
@@ -315,7 +219,7 @@ static int make_work(const bench_opts_t *o, uint32_t alpha32, uint32_t kappa32, 
             if (o->dp) preu_stable_update(&w->sp[cand[k]], &ph, kappa32);
             else preu_update(&w->hp[cand[k]], &ph, alpha32);
         }
-        if (o->abank) mis_add(mis, o->preu, &ph, cand, n);
+        if (o->abank) mis_add(mis, o->preu, &ph, cand, n, &rng_state);
         w->phs[p] = ph;
         w->ncand[p] = (int)n;
     }
@@ -449,7 +353,7 @@ int main(int argc, char **argv)
     if (o.hold_reset) { printf("top_bench: FAIL: no wait ran out with rst_ni held low\n"); return 1; }
     uint64_t sent = cosim_drv_ops_sent(drv);
     if (o.abank) {
-        if (misplaced_stream(rtl, &mis, o.preu, o.gap)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
+        if (misplaced_stream(rtl, &mis, o.preu, o.gap, &rng_state)) { fprintf(stderr, "top_bench: the misplaced stream does not drain\n"); return 1; }
         sent = mis.ne;
     }
     if (cosim_drv_drain(drv)) { fprintf(stderr, "top_bench: %s\n", cosim_drv_error(drv)); return 1; }
