@@ -13,11 +13,12 @@ STRESS_DIR := $(OUT)/stress
 STRESS_HP  := $(BUILD)/stress/stress_hitpoint
 .PHONY: stress stress-hitpoint stress-rtl stress-render stress-plots
 
-$(BUILD)/stress/stress_hitpoint.o: tests/stress/stress_hitpoint.c $(DEPS_STAMP)
+STRESS_HP_OBJS := $(patsubst tests/stress/%.c,$(BUILD)/stress/%.o,$(wildcard tests/stress/*.c))
+$(BUILD)/stress/%.o: tests/stress/%.c $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -c $< -o $@
-$(STRESS_HP): $(BUILD)/stress/stress_hitpoint.o $(LIBPREE)
-	$(CC) $(LDFLAGS) $< $(LIBPREE) -o $@ -lm
+$(STRESS_HP): $(STRESS_HP_OBJS) $(LIBPREE)
+	$(CC) $(LDFLAGS) $(STRESS_HP_OBJS) $(LIBPREE) -o $@ -lm
 
 TEST_PREREQS += $(STRESS_HP)
 
