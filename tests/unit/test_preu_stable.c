@@ -269,8 +269,9 @@ static void test_count_through_2pow32(void **state)
     }
 }
 
-/* Non-finite and out-of-range inputs: the defined behaviour (docs/numerics.md table). */
-static void test_special_inputs(void **state)
+/* Non-finite and out-of-range inputs: the defined behaviour (docs/numerics.md table), in four
+ * tests. Photon flux and weight: NaN, infinite, negative and zero values. */
+static void test_special_flux_weight(void **state)
 {
     (void)state;
     const uint32_t kappa = preu_kappa(PREU_ALPHA);
@@ -313,6 +314,16 @@ static void test_special_inputs(void **state)
     assert_int_equal(preu_stable_update(&hp, &p, kappa), 1);
     assert_true(hp.T[0] == WIDE_ZERO);
     assert_true(hp.T[1] == WIDE_NAN);
+}
+
+/* Special inputs: photon positions out of range, initial radii at the ends of the range. */
+static void test_special_position_r2(void **state)
+{
+    (void)state;
+    const uint32_t kappa = preu_kappa(PREU_ALPHA);
+    const preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f, 1.0f);
+    preu_shp_t hp, before;
+    preu_photon_t p;
 
     /* photon position NaN or infinite, or d2 overflowing: rejected, nothing changes */
     static const uint32_t bad_pos[] = {0x7fc00000u, 0x7f800000u, 0xff800000u, 0x7149f2cau /* 1e30 */};
@@ -344,6 +355,16 @@ static void test_special_inputs(void **state)
     assert_true(hp.w == WIDE_ZERO && hp.k == 1 && hp.T[0] == WIDE_ZERO);
     p.pos[0] = 0x7f800000u;
     assert_int_equal(preu_stable_update(&hp, &p, kappa), 0);
+}
+
+/* Special inputs: saturated w, and T infinite or NaN. */
+static void test_special_w_T(void **state)
+{
+    (void)state;
+    const uint32_t kappa = preu_kappa(PREU_ALPHA);
+    const preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f, 1.0f);
+    preu_shp_t hp;
+    preu_photon_t p;
 
     /* w saturated (WIDE_MAX): accepts only d2 <= ~2.9e-39, stays saturated; T saturates */
     hp = fresh(1.0);
@@ -362,6 +383,15 @@ static void test_special_inputs(void **state)
     hp.T[0] = WIDE_INF; hp.T[1] = WIDE_NAN;
     assert_int_equal(preu_stable_update(&hp, &ph, kappa), 1);
     assert_true(hp.T[0] == WIDE_INF && hp.T[1] == WIDE_NAN);
+}
+
+/* Special inputs: kappa NaN, zero, negative and infinite, and the count wrapping. */
+static void test_special_kappa_count(void **state)
+{
+    (void)state;
+    const uint32_t kappa = preu_kappa(PREU_ALPHA);
+    const preu_photon_t ph = photon_at(10.0f, 20.0f, 30.0f, 1.0f);
+    preu_shp_t hp;
 
     /* kappa: NaN (alpha NaN) -> w NaN, then nothing is accepted; 0 (alpha 1) -> w constant;
      * negative (alpha > 1) -> the term dropped, w constant; inf (alpha 0) -> w saturates */
@@ -425,7 +455,10 @@ int main(void)
         cmocka_unit_test(test_screen_r2_bound_monotone),
         cmocka_unit_test(test_wide_add),
         cmocka_unit_test(test_count_through_2pow32),
-        cmocka_unit_test(test_special_inputs),
+        cmocka_unit_test(test_special_flux_weight),
+        cmocka_unit_test(test_special_position_r2),
+        cmocka_unit_test(test_special_w_T),
+        cmocka_unit_test(test_special_kappa_count),
         cmocka_unit_test(test_radiance),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
