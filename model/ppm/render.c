@@ -106,6 +106,15 @@ static void session_free(render_session_t *s)
     free(s);
 }
 
+/* A set-up step begins: *phase names it (an interrupt's message says where it stopped), the test
+ * hook may stop the render there, and the step's start time is returned. */
+static double step_begin(const char **phase, const char *name, const char *hook)
+{
+    *phase = name;
+    render_test_interrupt(hook);
+    return omp_get_wtime();
+}
+
 /* render_open's BVH build and eye pass: the hit points, their figures, the memory check with
  * their true count. *phase names the step under way. Returns 0 or -1 (err filled). */
 static int open_eye(render_session_t *s, const char **phase, char *err, size_t errlen)
@@ -113,15 +122,11 @@ static int open_eye(render_session_t *s, const char **phase, char *err, size_t e
     const render_options_t *opt = &s->opt;
     render_result_t *res = s->res;
     render_stats_t *st = &res->stats;
-    *phase = "BVH build";
-    render_test_interrupt("bvh");
-    double t = omp_get_wtime();
+    double t = step_begin(phase, "BVH build", "bvh");
     s->tr = tracer_create(s->scene, opt->interrupt, err, errlen);
     if (!s->tr) return -1;
     st->sec_bvh = omp_get_wtime() - t;
-    *phase = "eye pass";
-    render_test_interrupt("eye");
-    t = omp_get_wtime();
+    t = step_begin(phase, "eye pass", "eye");
     eye_stats_t es;
     if (eye_pass(s->scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
     if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(s->scene, opt, &res->hp);
@@ -143,9 +148,7 @@ static int open_grid(render_session_t *s, const char **phase, char *err, size_t 
     const render_options_t *opt = &s->opt;
     render_result_t *res = s->res;
     render_stats_t *st = &res->stats;
-    *phase = "grid build";
-    render_test_interrupt("grid");
-    double t = omp_get_wtime();
+    const double t = step_begin(phase, "grid build", "grid");
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
     if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
         snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
