@@ -85,17 +85,17 @@ $(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(VHAR
 endef
 # Icarus benches and the C models' vectors for them (the .ncyc file holds the cycle count).
 define CTRL_AFTSO_ICARUS_RULE
-$(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).vvp: tb/ctrl/aftso_tb.v $(AFTSO_RTL)
+$(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).vvp: tb/ctrl/aftso_tb.v tb/ctrl/vec_tb.vh $(AFTSO_RTL)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -DPREE_ASSERT -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$^
+	iverilog -g2005 -Wall -DPREE_ASSERT -Itb/ctrl -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$(filter %.v,$$^)
 $(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).ncyc: $(CTRL_DIR)/aftso_vecgen
 	@mkdir -p $$(@D)
 	$$< --preu $(1) --early-ready $(2) --seed $(1)$(2)7 --cycles 3000 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
 endef
 define CTRL_ADISO_ICARUS_RULE
-$(CTRL_DIR)/icarus/adiso_p$(1).vvp: tb/ctrl/adiso_tb.v $(ADISO_RTL)
+$(CTRL_DIR)/icarus/adiso_p$(1).vvp: tb/ctrl/adiso_tb.v tb/ctrl/vec_tb.vh $(ADISO_RTL)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -P adiso_tb.NumPreu=$(1) -P adiso_tb.PipeDepth=12 -o $$@ $$^
+	iverilog -g2005 -Wall -Itb/ctrl -P adiso_tb.NumPreu=$(1) -P adiso_tb.PipeDepth=12 -o $$@ $$(filter %.v,$$^)
 $(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
 	@mkdir -p $$(@D)
 	$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@

@@ -13,10 +13,9 @@ module adiso_tb;
   localparam STIM_W = 4 + 32;
   localparam EXP_W  = 4 + 16 + NumPreu * 32;
 
-  reg [STIM_W-1:0] stim [0:MAXCYC-1];
-  reg [EXP_W-1:0]  expv [0:MAXCYC-1];
-  reg [1023:0]     stim_file, exp_file;
-  integer          ncyc, c, g, errors;
+`define VEC_TB "adiso_tb"
+`include "vec_tb.vh"
+  integer          g;
 
   reg                    clk, rst_n, start, stall;
   reg  [31:0]            n_hit;
@@ -45,13 +44,7 @@ module adiso_tb;
   endtask
 
   initial begin
-    if (!$value$plusargs("stim=%s", stim_file) || !$value$plusargs("exp=%s", exp_file) ||
-        !$value$plusargs("ncyc=%d", ncyc))
-      $fatal(1, "adiso_tb: need +stim=FILE +exp=FILE +ncyc=N");
-    if (ncyc > MAXCYC) $fatal(1, "adiso_tb: ncyc above %0d", MAXCYC);
-    $readmemh(stim_file, stim, 0, ncyc - 1);
-    $readmemh(exp_file, expv, 0, ncyc - 1);
-    errors = 0;
+    vec_load;
     clk = 1'b0;
     for (c = 0; c < ncyc; c = c + 1) begin
       {rst_n, start, stall} = stim[c][STIM_W-1 -: 3];
@@ -64,10 +57,9 @@ module adiso_tb;
       if (got_valid !== e[EXP_W-5 -: 16]) mismatch("addr_valid_o", -1, {16'd0, got_valid}, {16'd0, e[EXP_W-5 -: 16]});
       for (g = 0; g < NumPreu; g = g + 1)
         if (addr[g*32 +: 32] !== e[g*32 +: 32]) mismatch("addr_o", g, addr[g*32 +: 32], e[g*32 +: 32]);
-      #4 clk = 1'b1;
-      #5 clk = 1'b0;
+      vec_clock;
     end
-    if (errors != 0) $fatal(1, "adiso_tb: FAIL, %0d mismatches in %0d cycles", errors, ncyc);
+    vec_end;
     $display("adiso_tb: PASS preu=%0d pipe=%0d cycles=%0d", NumPreu, PipeDepth, ncyc);
     $finish;
   end

@@ -15,10 +15,9 @@ module aftso_tb;
   localparam LANE_W = 32 + 32 + 192;
   localparam EXP_W  = 4 + 16 + 16 + NumPreu * LANE_W;
 
-  reg [STIM_W-1:0] stim [0:MAXCYC-1];
-  reg [EXP_W-1:0]  expv [0:MAXCYC-1];
-  reg [1023:0]     stim_file, exp_file;
-  integer          ncyc, c, l, errors;
+`define VEC_TB "aftso_tb"
+`include "vec_tb.vh"
+  integer          l;
 
   reg                      clk, rst_n, in_valid, stall;
   reg  [191:0]             in_data;
@@ -57,13 +56,7 @@ module aftso_tb;
   endtask
 
   initial begin
-    if (!$value$plusargs("stim=%s", stim_file) || !$value$plusargs("exp=%s", exp_file) ||
-        !$value$plusargs("ncyc=%d", ncyc))
-      $fatal(1, "aftso_tb: need +stim=FILE +exp=FILE +ncyc=N");
-    if (ncyc > MAXCYC) $fatal(1, "aftso_tb: ncyc above %0d", MAXCYC);
-    $readmemh(stim_file, stim, 0, ncyc - 1);
-    $readmemh(exp_file, expv, 0, ncyc - 1);
-    errors = 0;
+    vec_load;
     clk = 1'b0;
     for (c = 0; c < ncyc; c = c + 1) begin
       {rst_n, in_valid, stall} = stim[c][STIM_W-1 -: 3];
@@ -88,10 +81,9 @@ module aftso_tb;
         if (lane_id[l*32 +: 32] !== el[223:192])       mismatch("id", l, lane_id[l*32 +: 32], el[223:192]);
         if (lane_data[l*192 +: 192] !== el[191:0])     mismatch("data", l, lane_data[l*192 +: 192], el[191:0]);
       end
-      #4 clk = 1'b1;
-      #5 clk = 1'b0;
+      vec_clock;
     end
-    if (errors != 0) $fatal(1, "aftso_tb: FAIL, %0d mismatches in %0d cycles", errors, ncyc);
+    vec_end;
     $display("aftso_tb: PASS preu=%0d early_ready=%0d cycles=%0d", NumPreu, EarlyReady, ncyc);
     $finish;
   end
