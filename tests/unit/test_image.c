@@ -56,6 +56,16 @@ static char *slurp(const char *path, size_t *len)
     return buf;
 }
 
+/* The file at path holds exactly the text want. */
+static void expect_file(const char *path, const char *want)
+{
+    size_t len;
+    char *got = slurp(path, &len);
+    assert_int_equal(len, strlen(want));
+    assert_memory_equal(got, want, len);
+    free(got);
+}
+
 /* Values worked out by hand from int(pow(1-exp(-L), 1/2.2)*255 + .5). */
 static void test_tonemap_known_values(void **state)
 {
@@ -87,12 +97,7 @@ static void test_ppm_exact_bytes(void **state)
     const double rgb[6] = {0.0, INFINITY, 1.0, 0.5, 2.0, 1e-3};
     char err[512] = "";
     assert_int_equal(pree_image_write(path, 2, 1, rgb, err, sizeof err), 0);
-    size_t len;
-    char *got = slurp(path, &len);
-    const char want[] = "P3\n2 1\n255\n0 255 207 167 239 11 ";
-    assert_int_equal(len, sizeof want - 1);
-    assert_memory_equal(got, want, len);
-    free(got);
+    expect_file(path, "P3\n2 1\n255\n0 255 207 167 239 11 ");
     assert_int_equal(count_entries(*state), 1);   /* the temporary file is gone */
 }
 
@@ -103,12 +108,7 @@ static void test_ppm_u8_bytes(void **state)
     const unsigned char rgb[6] = {0, 9, 10, 99, 100, 255};
     char err[512] = "";
     assert_int_equal(pree_image_write_u8(path, 1, 2, rgb, err, sizeof err), 0);
-    size_t len;
-    char *got = slurp(path, &len);
-    const char want[] = "P3\n1 2\n255\n0 9 10 99 100 255 ";
-    assert_int_equal(len, sizeof want - 1);
-    assert_memory_equal(got, want, len);
-    free(got);
+    expect_file(path, "P3\n1 2\n255\n0 9 10 99 100 255 ");
 }
 
 /* A 13x7 gradient written as .ppm, .png and .exr reads back as tone-mapped bytes / floats. */
@@ -207,12 +207,7 @@ static void test_failed_write_keeps_old_file(void **state)
     const double one[3] = {1.0, 1.0, 1.0};
     assert_int_equal(pree_image_write(path, 1, 1, one, err, sizeof err), 0);
     assert_int_equal(pree_image_write(path, 0, 1, one, err, sizeof err), -1);
-    size_t len;
-    char *got = slurp(path, &len);
-    const char want[] = "P3\n1 1\n255\n207 207 207 ";
-    assert_int_equal(len, sizeof want - 1);
-    assert_memory_equal(got, want, len);
-    free(got);
+    expect_file(path, "P3\n1 1\n255\n207 207 207 ");
 }
 
 static void test_read_errors(void **state)
