@@ -210,37 +210,30 @@ static void test_failed_write_keeps_old_file(void **state)
     expect_file(path, "P3\n1 1\n255\n207 207 207 ");
 }
 
-static void test_read_errors(void **state)
+/* Reading dir/name, with content written there first (NULL: no file), fails with a one-line
+ * message that names the file and leaves no image. */
+static void expect_read_error(const char *dir, const char *name, const char *content)
 {
     char path[256], err[512] = "";
     pree_image_t img = {0};
-    snprintf(path, sizeof path, "%s/absent.png", (char *)*state);
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    if (content) {
+        FILE *f = fopen(path, "wb");
+        assert_non_null(f);
+        fputs(content, f);
+        fclose(f);
+    }
     assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
     assert_null(img.rgb);
     assert_non_null(strstr(err, path));
     assert_null(strchr(err, '\n'));
+}
 
-    /* Not an image at all. */
-    snprintf(path, sizeof path, "%s/junk.png", (char *)*state);
-    FILE *f = fopen(path, "wb");
-    fputs("this is not a png\n", f);
-    fclose(f);
-    err[0] = 0;
-    assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
-    assert_null(img.rgb);
-    assert_non_null(strstr(err, path));
-    assert_null(strchr(err, '\n'));
-
-    /* A PPM whose pixels stop early. */
-    snprintf(path, sizeof path, "%s/short.ppm", (char *)*state);
-    f = fopen(path, "wb");
-    fputs("P3\n4 4\n255\n1 2 3 4 5 6 ", f);
-    fclose(f);
-    err[0] = 0;
-    assert_int_equal(pree_image_read(path, &img, err, sizeof err), -1);
-    assert_null(img.rgb);
-    assert_non_null(strstr(err, path));
-    assert_null(strchr(err, '\n'));
+static void test_read_errors(void **state)
+{
+    expect_read_error(*state, "absent.png", NULL);
+    expect_read_error(*state, "junk.png", "this is not a png\n");          /* not an image at all */
+    expect_read_error(*state, "short.ppm", "P3\n4 4\n255\n1 2 3 4 5 6 ");   /* pixels stop early */
 }
 
 static void put_file(const char *dir, const char *name, const void *data, size_t len, char *path)
