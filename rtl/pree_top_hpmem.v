@@ -1,7 +1,7 @@
-// pree_top_hpmem: pree_top's hit-point memory (docs/pree_top.md, "Memory organisation"):
-// 2^HpBankW banks (pree_ram_banks) of a constant part {pixel, f, pos} and a state part, shared by
-// the PREU lanes and the host. Addresses are hit points; the bank is hp_bank() of the address
-// (rtl/pree_hp_bank.vh), the row the address without its low HpBankW bits.
+// pree_top_hpmem: pree_top's hit-point memory (docs/pree_top.md, "Pipeline, memories and
+// hazards"): 2^HpBankW banks (pree_ram_banks) of a constant part {pixel, f, pos} and a state part,
+// shared by the PREU lanes and the host. Addresses are hit points; the bank is hp_bank() of the
+// address (rtl/pree_hp_bank.vh), the row the address without its low HpBankW bits.
 // Lanes: reads (update: B's issue; radiance: A's read), state writes (update write-back), and the
 // host (both parts; the constant part has no other writer). Each lane's read data is that of the
 // bank the lane read last (hsel_q, registered when the lane reads), so a lane's selection is a

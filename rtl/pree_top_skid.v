@@ -1,4 +1,4 @@
-// pree_top_skid: pree_top's stage-B skid slot (PipeFast 1; docs/fpga.md, "The B-to-A register").
+// pree_top_skid: pree_top's stage-B skid slot (PipeFast 1; docs/fpga.md, "B's skid slot").
 // What B leaves after a cycle's issue moves, with the lanes' records, into the slot, which issues
 // first: so A reads when the slot is empty, a register, instead of when B empties in this cycle.
 // The records are those of R, the lanes at the RAM outputs: update, the index entry and the
