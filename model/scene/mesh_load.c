@@ -7,7 +7,6 @@
 #include <assimp/ObjMaterial.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
