@@ -214,7 +214,7 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
                                  .win = cosim_rtl_update_window(rtl),
-                                 .skid = cosim_rtl_b_skid(rtl),
+                                 .reg_flow = cosim_rtl_reg_flow(rtl),
                                  .reorder = opt->reorder, .window = opt->window};
         d->sched = cosim_sched_new(&so, emit, d);
         if (!d->sched) { free(d); return NULL; }

@@ -85,7 +85,7 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
                                  .win = rtl ? cosim_rtl_update_window(rtl) : opt->win,
-                                 .skid = rtl ? cosim_rtl_b_skid(rtl) : opt->skid,
+                                 .reg_flow = rtl ? cosim_rtl_reg_flow(rtl) : opt->reg_flow,
                                  .reorder = opt->reorder, .window = opt->window, .ppc = d->ppc};
         d->sched = cosim_sched_new(&so, emit, d);
         if (!d->sched) { cosim_drv_free(d); return NULL; }

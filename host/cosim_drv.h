@@ -60,7 +60,7 @@ typedef struct {
                           needs schedule; the counters are the model's prediction) */
     int ppc;           /* with model_only: the top's PhotonsPerCycle (else the RTL's) */
     int win;           /* with model_only: its update hazard window (else the RTL's) */
-    int skid;          /* with model_only: whether it has B's skid slot (else the RTL's) */
+    int reg_flow;      /* with model_only: whether it has PipeFast 1's registered flow (else the RTL's) */
 } cosim_drv_opts_t;
 
 typedef struct cosim_drv cosim_drv_t;

@@ -154,9 +154,9 @@ static cosim_rtl_t *open_rtl(const render_options_t *opt, const cosim_args_t *c,
         cosim_rtl_free(rtl);
         return NULL;
     }
-    if (cosim_rtl_b_skid(rtl) != cosim_b_skid(c->pipefast)) {
-        fprintf(stderr, "pree cosim: the RTL's B skid is %d, the host's table says %d\n", cosim_rtl_b_skid(rtl),
-                cosim_b_skid(c->pipefast));
+    if (cosim_rtl_reg_flow(rtl) != cosim_reg_flow(c->pipefast)) {
+        fprintf(stderr, "pree cosim: the RTL's registered flow is %d, the host's table says %d\n", cosim_rtl_reg_flow(rtl),
+                cosim_reg_flow(c->pipefast));
         cosim_rtl_free(rtl);
         return NULL;
     }
@@ -228,7 +228,7 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
     cosim_drv_opts_t dopt = {.preu = r->opt.preu, .datapath = r->dp, .hp_bank_w = hp_bank_w, .reorder = c->reorder,
                               .schedule = c->schedule, .window = c->window, .gap = c->gap, .seed = 1,
                               .model_only = c->model_only, .ppc = ppc, .win = r->win,
-                              .skid = cosim_b_skid(c->pipefast)};
+                              .reg_flow = cosim_reg_flow(c->pipefast)};
     if (!(r->ctx.drv = cosim_drv_new(r->rtl, &dopt))) { fprintf(stderr, "pree cosim: out of memory\n"); return 1; }
     r->opt.record_ops = 1;
     r->opt.one_rank = 1;   /* under mpirun too: each rank runs the whole engine (cosim_part_t) */

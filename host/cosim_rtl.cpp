@@ -3,7 +3,8 @@
 // (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header
 // (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath,
 // PipeFast) each: the one list of configurations. Each model's update hazard window is its
-// pree_top's public WIN_UPD, and whether it has B's skid slot its public B_SKID.
+// pree_top's public WIN_UPD, and whether it has PipeFast 1's registered flow (A's offer register,
+// B's skid slot) its public REG_FLOW.
 #include "cosim_rtl.h"
 
 #include <cstdio>
@@ -79,14 +80,14 @@ struct cosim_rtl {
     virtual int radiance_depth() = 0;
     virtual uint64_t cycle() = 0;
     virtual void trace_window(uint64_t from, uint64_t to) = 0;
-    virtual int b_skid() = 0;
+    virtual int reg_flow() = 0;
     virtual int ppc() = 0;
     virtual void set_reset(int on) = 0;
 };
 
 namespace {
 
-template <class V, int NP, int HPB, int PPC, int DP, int WIN, int RAD, int SKID>
+template <class V, int NP, int HPB, int PPC, int DP, int WIN, int RAD, int REG_FLOW>
 struct Rtl : cosim_rtl {
     static const unsigned SW = DP ? 320 : 160;   // state bits of a hit point
     // Trace time in picoseconds (the models' time precision): the paper's 125 MHz clock, 8 ns a
@@ -164,7 +165,7 @@ struct Rtl : cosim_rtl {
     int radiance_depth() override { return RAD; }
     uint64_t cycle() override { return top.trace_cycle(); }
     void trace_window(uint64_t from, uint64_t to) override { top.set_trace_window(from, to); }
-    int b_skid() override { return SKID; }
+    int reg_flow() override { return REG_FLOW; }
     int ppc() override { return PPC; }
     void set_reset(int on) override
     {
@@ -206,7 +207,7 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
 #define X(V, NP, DP, PF) \
     if (!r && preu == (NP) && (datapath != 0) == (DP) && (pipefast != 0) == (PF)) \
         r = new Rtl<V, NP, COSIM_HPB_##NP, COSIM_PPC_##NP, DP, V##_pree_top::WIN_UPD, V##_pree_top::RAD_LAT, \
-                    V##_pree_top::B_SKID>(fst);
+                    V##_pree_top::REG_FLOW>(fst);
     COSIM_MODELS
 #undef X
     if (!r) {
@@ -237,7 +238,7 @@ int cosim_rtl_update_window(cosim_rtl_t *r) { return r->update_window(); }
 int cosim_rtl_radiance_depth(cosim_rtl_t *r) { return r->radiance_depth(); }
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->cycle(); }
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->trace_window(from, to); }
-int cosim_rtl_b_skid(cosim_rtl_t *r) { return r->b_skid(); }
+int cosim_rtl_reg_flow(cosim_rtl_t *r) { return r->reg_flow(); }
 int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)

@@ -51,7 +51,7 @@ cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_f
     const size_t nhp = (size_t)1 << COSIM_HPAW, w = (size_t)s->opt.window;
     if (s->opt.ppc < 1) s->opt.ppc = 1;
     if (s->opt.ppc > COSIM_MAX_PPC) s->opt.ppc = COSIM_MAX_PPC;
-    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w, opt->win, s->opt.ppc, opt->skid);
+    s->sh = cosim_shadow_new(opt->preu, opt->hp_bank_w, opt->win, s->opt.ppc, opt->reg_flow);
     s->slot = calloc(w, sizeof *s->slot);
     s->order = malloc(w * sizeof *s->order);
     s->free_slot = malloc(w * sizeof *s->free_slot);

@@ -7,7 +7,7 @@
 
 #define IDX_MASK ((1u << COSIM_IDXAW) - 1u)
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int skid)
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int reg_flow)
 {
     if (win < 1 || win > SHADOW_WIN_MAX) return NULL;   /* the in-flight rows are a fixed array */
     cosim_shadow_t *s = calloc(1, sizeof *s);
@@ -17,7 +17,7 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int 
     s->preu = preu;
     s->hp_bank_w = hp_bank_w;
     s->win = win;
-    s->skid = skid != 0;
+    s->reg_flow = reg_flow != 0;
     aftso_rule_init(&s->buf, preu, 4 * ppc, ppc, 1);
     return s;
 }
@@ -44,10 +44,14 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     s->nvalid = s->off.nvalid;
     for (int l = 0; l < s->nvalid; l++) s->ref[l] = s->off.ref[l] & IDX_MASK;
     const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
-    /* Stage B (b_issue): a prefix of the live lanes (the skid slot's while it holds any, else
-     * those A read last), each free of hazard, dup and bank. */
-    const uint32_t bpend = s->s_full ? s->s_pend : s->b_pend;
-    const uint32_t *bhp = s->s_full ? s->s_hp : s->b_hp;
+    /* The offer stage A reads (u_offer): the register's (reg_flow), else the controller's. */
+    const uint32_t o_valid = s->reg_flow ? s->o_valid : ctl_valid;
+    const uint32_t *o_ref = s->reg_flow ? s->o_ref : s->ref;
+    /* Stage B (b_issue): a prefix of the live lanes (those A read last, or with reg_flow the
+     * queue's head slot), each free of hazard, dup and bank. */
+    const shadow_lanes_t *live = s->reg_flow ? &s->q[s->head] : &s->r;
+    const uint32_t bpend = live->pend;
+    const uint32_t *bhp = live->hp;
     uint32_t iss = 0;
     int pre = 1, cause = 0;
     for (int l = 0; l < np; l++) {
@@ -67,24 +71,25 @@ int cosim_shadow_eval(cosim_shadow_t *s)
         pre = pre && (!pend || ok);
     }
     s->iss = iss;
-    /* a_go: B empties in this cycle; with the skid, the slot is empty. */
-    s->a_go = s->skid ? !s->s_full : (s->b_pend & ~iss) == 0;
+    /* a_go: B empties in this cycle; with reg_flow, R is empty or a slot of the queue is. */
+    s->a_go = s->reg_flow ? !s->r.pend || !s->q[0].pend || !s->q[1].pend : (s->r.pend & ~iss) == 0;
     /* Stage A (a_lanes): read in lane order, one lane per index bank (ref mod NumPreu). */
-    uint32_t a_valid = ctl_valid & ~s->a_done, a_rd = 0;
+    uint32_t a_valid = o_valid & ~s->a_done, a_rd = 0;
     pre = 1;
     for (int l = 0; l < np; l++) {
         int v = (a_valid >> l) & 1, conf = 0;
         for (int m = 0; m < l; m++)
-            if (((a_valid >> m) & 1) && ((s->ref[m] ^ s->ref[l]) & (uint32_t)(np - 1)) == 0) conf = 1;
+            if (((a_valid >> m) & 1) && ((o_ref[m] ^ o_ref[l]) & (uint32_t)(np - 1)) == 0) conf = 1;
         int rd = s->a_go && v && !conf && pre;
         if (rd) a_rd |= 1u << l;
         pre = pre && (!v || rd);
     }
     s->a_valid = a_valid;
     s->a_rd = a_rd;
-    s->stall = (ctl_valid & ~s->a_done & ~a_rd) != 0;
+    /* The controller is stalled until every lane of the offer A holds is read (a_all). */
+    s->stall = (a_valid & ~a_rd) != 0;
     /* Counter cause (stall_cause): the first blocked lane in B, else A's conflict, else starved. */
-    if (iss != all && !cause) cause = (s->s_full ? s->s_short : s->b_short) ? CNT_ABANK : CNT_STARVE;
+    if (iss != all && !cause) cause = live->a_short ? CNT_ABANK : CNT_STARVE;
     s->cause = cause;
     /* AFTSO-HpUOC ready: PhotonsPerCycle entries free after this cycle's whole departures. */
     s->ready = aftso_rule_ready(&s->buf, &s->off, s->stall);
@@ -108,7 +113,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
     for (int k = 0; k < *row_n; k++) s->inf_cnt[row[k]]--;
     *row_n = 0;
     s->n_iss = 0;
-    const uint32_t *bhp = s->s_full ? s->s_hp : s->b_hp;
+    const uint32_t *bhp = s->reg_flow ? s->q[s->head].hp : s->r.hp;
     for (int l = 0; l < np; l++)
         if ((s->iss >> l) & 1) {
             row[(*row_n)++] = bhp[l];
@@ -117,28 +122,31 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
             s->cnt[CNT_OPS0 + l]++;
         }
     s->inf_pos = (s->inf_pos + 1) % s->win;
-    /* B skid (g_skid): what B leaves after this cycle's issue stays in, or is copied into, the
-     * slot. */
-    if (s->skid) {
-        const uint32_t left = (s->s_full ? s->s_pend : s->b_pend) & ~s->iss;
-        if (!s->s_full) {
-            memcpy(s->s_hp, s->b_hp, sizeof s->s_hp);
-            s->s_short = s->b_short;
-        }
-        s->s_pend = left;
-        s->s_full = left != 0;
+    /* B's queue (pree_top_queue, reg_flow): R moves into the head slot when it is empty, else
+     * into the other when that is; the head passes on once its lanes have all issued. */
+    if (s->reg_flow) {
+        shadow_lanes_t *h = &s->q[s->head], *o = &s->q[!s->head];
+        shadow_lanes_t *to = !s->r.pend ? NULL : !h->pend ? h : !o->pend ? o : NULL;
+        const int pass = h->pend && !(h->pend & ~s->iss);
+        h->pend &= ~s->iss;
+        if (to) *to = s->r;
+        s->head ^= pass;
     }
-    /* Stage B registers: the lanes A read (index-table data), or what is left pending (the
-     * slot's lanes issued instead: R stays as it is). */
+    /* Stage B registers (R): the lanes A read (index-table data), or what is left pending. */
     if (s->a_go) {
         for (int l = 0; l < np; l++)
-            if ((s->a_rd >> l) & 1) s->b_hp[l] = s->idx[s->ref[l]];
-        s->b_pend = s->a_rd;
-        s->b_short = (s->a_valid & ~s->a_rd) != 0;
-    } else if (!s->skid) {
-        s->b_pend &= ~s->iss;
+            if ((s->a_rd >> l) & 1) s->r.hp[l] = s->idx[(s->reg_flow ? s->o_ref : s->ref)[l]];
+        s->r.pend = s->a_rd;
+        s->r.a_short = (s->a_valid & ~s->a_rd) != 0;
+    } else if (!s->reg_flow) {
+        s->r.pend &= ~s->iss;
     }
     s->a_done = s->stall ? s->a_done | s->a_rd : 0;
+    /* Offer register (u_offer): takes the controller's offer once A has read all of its own. */
+    if (s->reg_flow && !s->stall) {
+        s->o_valid = (1u << s->nvalid) - 1u;
+        memcpy(s->o_ref, s->ref, sizeof s->o_ref);
+    }
     /* AFTSO-HpUOC edge: whole entries leave, the partial one is trimmed, the taken photons
      * are appended. */
     aftso_rule_edge(&s->buf, &s->off, s->stall, take, n, p);
@@ -147,7 +155,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
 
 int cosim_shadow_idle(const cosim_shadow_t *s)
 {
-    if (s->buf.count || s->b_pend || s->s_full) return 0;
+    if (s->buf.count || s->o_valid || s->r.pend || s->q[0].pend || s->q[1].pend) return 0;
     for (int r = 0; r < s->win; r++)
         if (s->inf_n[r]) return 0;
     return 1;

@@ -1,20 +1,21 @@
 /* cosim_shadow.h: a cycle model of pree_top's update-mode issue path (rtl/pree_top.v), for the
  * co-simulation host's photon scheduler (cosim_sched.h): AFTSO-HpUOC (4 x PhotonsPerCycle
- * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h), stage A (index-table reads in lane order, one
- * per bank), stage B (issue a prefix of the pending lanes: hazard in flight over the last win
- * cycles (11 or 13; 49 or 53 with PipeFast 1), same key, hit-point bank), with PipeFast 1 B's
- * skid slot (A reads while the slot is empty; B's leftover lanes move into it), and the RTL's
- * short-cycle counters. Given the same photon
+ * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h),
+ * stage A (index-table reads in lane order, one per bank), stage B (issue a prefix of the pending
+ * lanes: hazard in flight over the last win cycles (11 or 13; 49 or 53 with PipeFast 1), same
+ * key, hit-point bank), with PipeFast 1's registered flow (A reads the controller's offer from a
+ * register a cycle after taking it; B issues from a two-slot queue that R's lanes move into, and
+ * A reads while R is empty or moves), and the RTL's short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
  *
  * API (one cycle = cosim_shadow_eval, then cosim_shadow_edge)
- *   cosim_shadow_new(preu, hp_bank_w, win, ppc, skid)  a model in reset state (NULL when out of
- *                              memory or win > SHADOW_WIN_MAX); win: the update hazard window
- *                              (cosim_rtl_update_window, or cosim_update_window without a
- *                              model); ppc: pree_top's PhotonsPerCycle; skid: its B_SKID
- *                              (cosim_rtl_b_skid, or cosim_b_skid without a model)
+ *   cosim_shadow_new(preu, hp_bank_w, win, ppc, reg_flow)  a model in reset state (NULL when
+ *                              out of memory or win > SHADOW_WIN_MAX); win: the update hazard
+ *                              window (cosim_rtl_update_window, or cosim_update_window without a
+ *                              model); ppc: pree_top's PhotonsPerCycle; reg_flow: its REG_FLOW
+ *                              (cosim_rtl_reg_flow, or cosim_reg_flow without a model)
  *   cosim_shadow_free(s)
  *   cosim_shadow_eval(s)       the combinational part of the current cycle; returns ph_ready_o
  *   cosim_shadow_write_idx(s, p, hps, n)  the index entries of a photon placed at p (the k-th
@@ -37,6 +38,13 @@
 
 #define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 49 / 53 */
 
+/* Lanes of stage B: the pending ones, their hit points (index entries), and whether stage A left
+ * lanes of their offer for a bank conflict (the counters' abank). */
+typedef struct {
+    uint32_t pend, hp[COSIM_MAX_PREU];
+    int a_short;
+} shadow_lanes_t;
+
 typedef struct {
     int preu, hp_bank_w;
     int win;                                   /* the update hazard window (WIN_UPD) */
@@ -44,13 +52,14 @@ typedef struct {
     /* AFTSO-HpUOC buffer (entries {first index entry, operations left}) and its offer. */
     aftso_rule_t buf;
     aftso_rule_offer_t off;
-    /* Stage A: lanes of the current offer already read; stage B: pending lanes. */
-    uint32_t a_done, b_pend;
-    int b_short;
-    uint32_t b_hp[COSIM_MAX_PREU];
-    /* B skid (skid = 1): the slot's lanes and their index entries; it issues first. */
-    int skid, s_full, s_short;
-    uint32_t s_pend, s_hp[COSIM_MAX_PREU];
+    /* reg_flow (PipeFast 1): the offer register's lanes and index addresses. */
+    int reg_flow;
+    uint32_t o_valid, o_ref[COSIM_MAX_PREU];
+    /* Stage A: lanes of the offer it reads already read; stage B: R, the lanes A read, and with
+     * reg_flow the queue's two slots, of which B issues from the head. */
+    uint32_t a_done;
+    shadow_lanes_t r, q[2];
+    int head;
     /* In flight: the keys issued in each of the last win cycles, and a count per key. */
     uint32_t inf_hp[SHADOW_WIN_MAX][COSIM_MAX_PREU];
     int inf_n[SHADOW_WIN_MAX], inf_pos;
@@ -66,7 +75,7 @@ typedef struct {
     uint64_t cnt[COSIM_NCNT];
 } cosim_shadow_t;
 
-cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int skid);
+cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int reg_flow);
 /* The update hazard window of pree_top (its WIN_UPD) for a datapath (0 paper, 1 stable) and
  * PipeFast, for runs without a Verilated model (--model-only); a run with one takes the model's
  * (cosim_rtl_update_window) and checks it against this. */
@@ -81,8 +90,9 @@ static inline int cosim_radiance_depth(int pipe_fast)
 {
     return pipe_fast ? 64 : 12;
 }
-/* Whether pree_top has B's skid slot (its B_SKID): with PipeFast 1. */
-static inline int cosim_b_skid(int pipe_fast)
+/* Whether pree_top has the registered flow, A's offer register and B's skid slot (its REG_FLOW):
+ * with PipeFast 1. */
+static inline int cosim_reg_flow(int pipe_fast)
 {
     return pipe_fast != 0;
 }

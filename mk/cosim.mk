@@ -60,7 +60,6 @@ COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PR
 cosim_n = $(word 1,$(subst :, ,$(1)))
 cosim_d = $(word 2,$(subst :, ,$(1)))
 cosim_mtag = $(call cosim_tag,$(call cosim_n,$(1)),$(call cosim_d,$(1)))
-COSIM_LIBS   := $(foreach m,$(COSIM_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)
 COSIM_VLIB   := $(COSIM_DIR)/vlrt/libverilated.a
 COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
@@ -105,7 +104,8 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 	rm -f $@ && ar rcs $@ $^
 
 # The C interface to the models: one object per model for its program, one with every model of
-# the regression for the top bench.
+# the regression for the top bench (COSIM_BENCH_MODELS: those and the PipeFast 1 model with 4 PREUs,
+# built for tests/checks/cosim_deep.sh anyway, for the bench's deep-pipeline traces).
 COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
@@ -118,9 +118,11 @@ endef
 $(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
 $(foreach p,4 8 16,$(foreach d,p s pf sf,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
 
-$(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_LIBS)
+COSIM_BENCH_MODELS := $(COSIM_MODELS) $(if $(filter 4:pf,$(COSIM_MODELS)),,4:pf)
+COSIM_BENCH_LIBS   := $(foreach m,$(COSIM_BENCH_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)
+$(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_BENCH_LIBS)
 	@mkdir -p $(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(COSIM_MODELS)) -c $< -o $@
+	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(COSIM_BENCH_MODELS)) -c $< -o $@
 $(HOST_DIR)/%.o: host/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
@@ -129,7 +131,7 @@ $(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
 $(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/top_bench_abank.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
-	$(CXX) $(LDFLAGS) $^ $(COSIM_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
+	$(CXX) $(LDFLAGS) $^ $(COSIM_BENCH_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 
 # Simulation: the bench's traces, then the reduced co-simulation.

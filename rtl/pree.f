@@ -34,10 +34,12 @@ rtl/pree_preu.v
 rtl/pree_aftso_hpuoc.v
 rtl/pree_adiso_rec.v
 rtl/pree_counters.v
+rtl/pree_top_offer.v
 rtl/pree_top_read.v
 rtl/pree_top_issue.v
-rtl/pree_top_skid.v
+rtl/pree_top_queue.v
 rtl/pree_top_hpmem.v
+rtl/pree_top_pxmem.v
 rtl/pree_top.v
 rtl/pree_axil_slave.v
 rtl/pree_axi.v

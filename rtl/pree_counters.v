@@ -3,12 +3,14 @@
 // in which fewer than NumPreu operations issued, by cause: 2 haz, 3 dup, 4 bank (the first
 // pending lane of stage B that did not issue, by its reason), else 5 abank (stage A left lanes
 // for a bank conflict, short_i) or 6 starve (the controller offered fewer); then 7 + l: the
-// operations into PREU l. Reset: asynchronous, active low, clears every counter.
+// operations into PREU l. Reset: asynchronous, active low, clears every counter. InReg = 1
+// (PipeFast 1): the inputs are registered first, so a cycle counts one clock later.
 `default_nettype none
 
 module pree_counters #(
   parameter NumPreu = 4,
-  parameter CtrW    = 48
+  parameter CtrW    = 48,
+  parameter InReg   = 0    // 1: register the inputs (a cycle counts one clock later)
 ) (
   input  wire                         clk_i,
   input  wire                         rst_ni,
@@ -24,6 +26,24 @@ module pree_counters #(
 );
 
   localparam [CtrW-1:0] ONE = 1;
+  localparam IN_W = 3 + 5 * NumPreu;   // the inputs but the clock and reset
+
+  // The inputs as counted: as they come (InReg = 0) or a clock later.
+  wire                en, mode, short;
+  wire [NumPreu-1:0]  pend, iss, haz, dup, op;
+  generate
+    if (InReg != 0) begin : g_in_reg
+      reg [IN_W-1:0] in_q;
+      always @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) in_q <= {IN_W{1'b0}};
+        else         in_q <= {en_i, mode_i, short_i, pend_i, iss_i, haz_i, dup_i, op_i};
+      end
+      assign {en, mode, short, pend, iss, haz, dup, op} = in_q;
+    end else begin : g_in
+      assign {en, mode, short, pend, iss, haz, dup, op} =
+             {en_i, mode_i, short_i, pend_i, iss_i, haz_i, dup_i, op_i};
+    end
+  endgenerate
 
   reg [(7+NumPreu)*CtrW-1:0] cnt_q;
   reg [2:0]                  cause;    // 0 none, 2 haz, 3 dup, 4 bank, 5 abank, 6 starve
@@ -33,24 +53,24 @@ module pree_counters #(
     cause = 3'd0;
     found = 1'b0;
     for (l = 0; l < NumPreu; l = l + 1)
-      if (!found && pend_i[l] && !iss_i[l]) begin
+      if (!found && pend[l] && !iss[l]) begin
         found = 1'b1;
-        cause = haz_i[l] ? 3'd2 : dup_i[l] ? 3'd3 : 3'd4;
+        cause = haz[l] ? 3'd2 : dup[l] ? 3'd3 : 3'd4;
       end
-    if (iss_i != {NumPreu{1'b1}} && !found) cause = short_i ? 3'd5 : 3'd6;
+    if (iss != {NumPreu{1'b1}} && !found) cause = short ? 3'd5 : 3'd6;
   end
 
   always @(posedge clk_i or negedge rst_ni) begin : counters
     integer l;
     if (!rst_ni) begin
       cnt_q <= {(7+NumPreu)*CtrW{1'b0}};
-    end else if (en_i) begin
-      if (mode_i) cnt_q[1*CtrW +: CtrW] <= cnt_q[1*CtrW +: CtrW] + ONE;
+    end else if (en) begin
+      if (mode) cnt_q[1*CtrW +: CtrW] <= cnt_q[1*CtrW +: CtrW] + ONE;
       else        cnt_q[0 +: CtrW]       <= cnt_q[0 +: CtrW] + ONE;
       for (l = 2; l < 7; l = l + 1)
         if (cause == l[2:0]) cnt_q[l*CtrW +: CtrW] <= cnt_q[l*CtrW +: CtrW] + ONE;
       for (l = 0; l < NumPreu; l = l + 1)
-        if (op_i[l]) cnt_q[(7+l)*CtrW +: CtrW] <= cnt_q[(7+l)*CtrW +: CtrW] + ONE;
+        if (op[l]) cnt_q[(7+l)*CtrW +: CtrW] <= cnt_q[(7+l)*CtrW +: CtrW] + ONE;
     end
   end
   assign cnt_o = cnt_q;

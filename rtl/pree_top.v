@@ -13,13 +13,16 @@
 //
 // Pipeline (a lane l of a stage feeds PREU l):
 //   A  the controller's offer, read in lane order, one lane per bank a cycle (pree_top_read):
-//      update, the index table; radiance, the hit-point memory. A reads when B empties in this
-//      cycle (PipeFast 0) or when B's skid slot is empty (PipeFast 1, a register).
-//   B  the read results issue in lane order, a prefix of the pending lanes, each free of a
+//      update, the index table; radiance, the hit-point memory. PipeFast 0: A reads the
+//      controller's outputs when B empties in this cycle. PipeFast 1: A reads the offer from a
+//      register (pree_top_offer) when R is empty or moves on (a register decision).
+//   B  the read results (R) issue in lane order, a prefix of the pending lanes, each free of a
 //      hazard (its key, the hit point or the pixel, in flight), a same-key earlier lane and a
 //      same-bank one (pree_top_issue). Update: issue = the hit-point read; radiance: the PREU.
-//      PipeFast 1: B's leftover lanes with their RAM outputs move into a skid slot that issues
-//      first, in the same order (pree_top_skid; host/cosim_shadow.c models both).
+//      PipeFast 1: R moves into a two-slot queue and B issues from its older slot, whose hazard
+//      and lane pairs are precomputed a cycle ahead (pree_top_queue); the hit-point memory is read
+//      for each lane first of its bank (the issue's one candidate there) and the counters count a
+//      clock later. host/cosim_shadow.c models both flows cycle for cycle.
 //   C  update: the hit-point data and the photon into the PREU. Results are written back:
 //      update, the state when accepted; radiance, the pixel sum.
 // Hazard windows follow the PREU's latencies (rtl/pree_preu_plan.vh): update 1 + its update
@@ -95,13 +98,10 @@ module pree_top #(
 `include "pree_hp_bank.vh"
 
   localparam LANE_W    = $clog2(NumPreu);
-  localparam PX_BANKS  = 1 << PxBankW;
-  localparam PX_ROW_W  = PxAW - PxBankW;
   localparam IDX_ROW_W = IdxAW - LANE_W;
   localparam KEY_W     = HpAW > PxAW ? HpAW : PxAW;          // hazard key: hit point or pixel
   localparam ABANK_W   = LANE_W > HpBankW ? LANE_W : HpBankW; // stage-A bank number
   localparam BBANK_W   = HpBankW > PxBankW ? HpBankW : PxBankW; // stage-B bank number
-  localparam AADDR_W   = IdxAW > HpAW ? IdxAW : HpAW;         // stage-A address
   localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
   localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
   // The PREU's latencies (rtl/pree_preu_plan.vh) and the hazard windows they set (public to the
@@ -119,8 +119,14 @@ module pree_top #(
   localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
-  localparam B_SKID  /*verilator public*/ = (PipeFast != 0) ? 1 : 0; // B's skid slot (B skid)
+  // PipeFast 1's registered flow control (public to the co-simulation host): A's offer register
+  // (pree_top_offer) and B's skid slot (pree_top_skid).
+  localparam REG_FLOW /*verilator public*/ = (PipeFast != 0) ? 1 : 0;
+  localparam A_REG   = REG_FLOW;
   localparam PH_W      = 192;
+  // A lane's record in B: update {index entry, photon} or radiance {f, pos, state} (the pixel is
+  // the key), the wider.
+  localparam REC_W   = (HpAW + PH_W > 192 + STATE_W) ? HpAW + PH_W : 192 + STATE_W;
 
   // Parameter checks (elaboration fails on a module that does not exist): StateW follows
   // Datapath; NumPreu is a power of two (index-table banks and ADISO groups are cut by bits).
@@ -167,33 +173,34 @@ module pree_top #(
     .stall_i(~mode_i | ~a_all), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
 
   // ===============================================================================================
-  // Stage A: read the offer's lanes in lane order, one lane per bank a cycle (pree_top_read).
-  wire [NumPreu-1:0]         ctl_valid = mode_i ? ad_valid : af_valid;
-  reg  [NumPreu*ABANK_W-1:0] a_bank;
-  reg  [NumPreu*AADDR_W-1:0] a_addr;
+  // Stage A: the controller's offer (PipeFast 1: registered, pree_top_offer), read in lane order,
+  // one lane per bank a cycle (pree_top_read).
+  wire [NumPreu-1:0]         a_valid, a_last;
+  wire [NumPreu*ABANK_W-1:0] a_bank;
+  wire [NumPreu*IdxAW-1:0]   a_idx;       // update: index-entry addresses
+  wire [NumPreu*HpAW-1:0]    a_hp;        // radiance: hit-point addresses
+  wire [NumPreu*PH_W-1:0]    a_data;
   wire [NumPreu-1:0]         a_rd;
   wire                       a_short;
   wire                       a_go;        // stage B empties in this cycle
 
-  always @* begin : a_lanes
-    integer l;
-    for (l = 0; l < NumPreu; l = l + 1) begin
-      a_addr[l*AADDR_W +: AADDR_W] = {AADDR_W{1'b0}};
-      a_bank[l*ABANK_W +: ABANK_W] = {ABANK_W{1'b0}};
-      if (mode_i) begin
-        a_addr[l*AADDR_W +: HpAW]    = ad_addr[l*HpAW +: HpAW];
-        a_bank[l*ABANK_W +: HpBankW] = hp_bank(ad_addr[l*HpAW +: 2*HpBankW]);
-      end else begin
-        a_addr[l*AADDR_W +: IdxAW]   = af_ref[l*IdxAW +: IdxAW];
-        a_bank[l*ABANK_W +: LANE_W]  = af_ref[l*IdxAW +: LANE_W];
-      end
-    end
-  end
+  pree_top_offer #(.Reg(A_REG), .NumPreu(NumPreu), .IdxAW(IdxAW), .HpAW(HpAW), .HpBankW(HpBankW),
+                   .BankW(ABANK_W), .DataW(PH_W)) u_offer (
+    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .take_i(a_all), .af_valid_i(af_valid),
+    .af_ref_i(af_ref), .af_last_i(af_last), .af_data_i(af_data), .ad_valid_i(ad_valid),
+    .ad_addr_i(ad_addr), .valid_o(a_valid), .idx_o(a_idx), .hp_o(a_hp), .bank_o(a_bank),
+    .last_o(a_last), .data_o(a_data));
 
   pree_top_read #(.NumPreu(NumPreu), .BankW(ABANK_W)) u_read (
-    .clk_i(clk_i), .rst_ni(rst_ni), .go_i(a_go), .valid_i(ctl_valid), .bank_i(a_bank),
-    .last_i(af_last), .count_last_i(~mode_i), .rd_o(a_rd), .all_o(a_all), .short_o(a_short),
+    .clk_i(clk_i), .rst_ni(rst_ni), .go_i(a_go), .valid_i(a_valid), .bank_i(a_bank),
+    .last_i(a_last), .count_last_i(~mode_i), .rd_o(a_rd), .all_o(a_all), .short_o(a_short),
     .photons_done_o(photons_done_o));
+
+  reg [NumPreu*LANE_W-1:0] a_ibank;   // update: each lane's index bank (its address mod NumPreu)
+  always @* begin : a_ibanks
+    integer l;
+    for (l = 0; l < NumPreu; l = l + 1) a_ibank[l*LANE_W +: LANE_W] = a_idx[l*IdxAW +: LANE_W];
+  end
 
   // ===============================================================================================
   // Index table: NumPreu banks; bank = address mod NumPreu (its low LANE_W bits). A's lanes read
@@ -203,7 +210,7 @@ module pree_top #(
   wire [NumPreu*HpAW-1:0] idx_rdata;
 
   pree_ram_banks #(.BankW(LANE_W), .RowW(IDX_ROW_W), .Width(HpAW), .Lanes(NumPreu)) u_idx (
-    .clk_i(clk_i), .rd_i(a_rd & {NumPreu{~mode_i}}), .rd_addr_i(af_ref), .wr_i(idx_we_i),
+    .clk_i(clk_i), .rd_i(a_rd & {NumPreu{~mode_i}}), .rd_addr_i(a_idx), .wr_i(idx_we_i),
     .wr_addr_i(idx_addr_i), .wr_data_i(idx_data_i), .rdata_o(idx_rdata));
   generate
     for (gb = 0; gb < NumPreu; gb = gb + 1) begin : g_idx
@@ -212,105 +219,116 @@ module pree_top #(
   endgenerate
 
   // ===============================================================================================
-  // Stage B registers: the lanes read by A.
+  // Stage B, R: the lanes read by A (at the RAM outputs). PipeFast 0: B issues from R and A reads
+  // when R empties; PipeFast 1: R moves into B's queue (pree_top_queue), which B issues from.
   reg  [NumPreu-1:0]         b_pend_q;
-  reg  [NumPreu*AADDR_W-1:0] b_addr_q;
+  reg  [NumPreu*LANE_W-1:0]  b_ibank_q;  // update: the index bank each lane read
   reg  [NumPreu*PH_W-1:0]    b_data_q;
   reg                        b_short_q;
   wire [NumPreu-1:0]         b_iss;
-  wire                       s_full;    // B skid: the slot holds lanes (they issue first)
 
   always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni)      b_pend_q <= {NumPreu{1'b0}};
-    else if (a_go)    b_pend_q <= a_rd;
-    else if (!s_full) b_pend_q <= b_pend_q & ~b_iss;
+    if (!rst_ni)            b_pend_q <= {NumPreu{1'b0}};
+    else if (a_go)          b_pend_q <= a_rd;
+    else if (REG_FLOW == 0) b_pend_q <= b_pend_q & ~b_iss;
   end
 
   always @(posedge clk_i) begin
     if (a_go) begin
-      b_addr_q  <= a_addr;
-      b_data_q  <= af_data;
+      b_ibank_q <= a_ibank;
+      b_data_q  <= a_data;
       b_short_q <= a_short;
     end
   end
 
-  // Each lane's hit-point read (pree_top_hpmem): update, the issue in B (address from the index
-  // table); radiance, the read in A (ADISO's address). The lane's data (radiance: in B; update: in
-  // C) comes from the bank it read last.
+  // Each lane's hit-point read (pree_top_hpmem): update, in B (address from the index table;
+  // PipeFast 0 the issue, PipeFast 1 the first pending lane of each bank, the only one that can
+  // issue to it); radiance, the read in A (ADISO's address). The lane's data (radiance: in R;
+  // update: in C) comes from the bank it read last.
   reg  [NumPreu*HpAW-1:0]    b_hp;     // update: the B lanes' hit-point addresses (index table)
   reg  [NumPreu-1:0]         hr_re;
   reg  [NumPreu*HpAW-1:0]    hr_addr;
   wire [NumPreu*CONST_W-1:0] hm_c;     // each lane's hit-point data
   wire [NumPreu*STATE_W-1:0] hm_s;
-  wire [NumPreu*PxAW-1:0]    l_pix;    // the pixel of each lane's selected hit point
+  wire [NumPreu-1:0]         bl_pend;  // B's live lanes (below)
+  wire [NumPreu*NumPreu-1:0] bl_beq;
+  reg  [NumPreu-1:0]         b_first;  // PipeFast 1: no earlier pending lane has the lane's bank
 
   always @* begin : hp_lane_rd
-    integer l;
+    integer l, m;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      hr_re[l]                = mode_i ? a_rd[l] : b_iss[l];
-      hr_addr[l*HpAW +: HpAW] = mode_i ? ad_addr[l*HpAW +: HpAW] : b_hp[l*HpAW +: HpAW];
+      b_first[l] = bl_pend[l];
+      for (m = 0; m < l; m = m + 1)
+        if (bl_pend[m] && bl_beq[m*NumPreu + l]) b_first[l] = 1'b0;
+      hr_re[l]                = mode_i ? a_rd[l] : (REG_FLOW != 0) ? b_first[l] : b_iss[l];
+      hr_addr[l*HpAW +: HpAW] = mode_i ? a_hp[l*HpAW +: HpAW] : b_hp[l*HpAW +: HpAW];
     end
   end
 
-  // R, the lanes at the RAM outputs: update, the index entry (from the bank the lane's index
-  // address names) and the photon; radiance, the hit-point data.
-  reg  [NumPreu*HpAW-1:0] r_hp;
+  // R's lanes: update, the index entry (from the bank the lane's index address names) and the
+  // photon; radiance, the hit-point data. Their keys: update, the hit point; radiance, its pixel.
+  reg  [NumPreu*HpAW-1:0]    r_hp;
+  reg  [NumPreu*KEY_W-1:0]   r_key;
+  reg  [NumPreu*BBANK_W-1:0] r_bank;
+  reg  [NumPreu*REC_W-1:0]   r_rec;
   always @* begin : r_lanes
     integer l;
-    for (l = 0; l < NumPreu; l = l + 1)
-      r_hp[l*HpAW +: HpAW] = idx_rd[b_addr_q[l*AADDR_W +: LANE_W]];
+    for (l = 0; l < NumPreu; l = l + 1) begin
+      r_hp[l*HpAW +: HpAW]          = idx_rd[b_ibank_q[l*LANE_W +: LANE_W]];
+      r_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
+      r_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
+      r_rec[l*REC_W +: REC_W]       = {REC_W{1'b0}};
+      if (mode_i) begin
+        r_key[l*KEY_W +: PxAW]       = hm_c[l*CONST_W + 192 +: PxAW];
+        r_bank[l*BBANK_W +: PxBankW] = hm_c[l*CONST_W + 192 +: PxBankW];
+        r_rec[l*REC_W +: 192 + STATE_W] = {hm_c[l*CONST_W +: 192], hm_s[l*STATE_W +: STATE_W]};
+      end else begin
+        r_key[l*KEY_W +: HpAW]       = r_hp[l*HpAW +: HpAW];
+        r_bank[l*BBANK_W +: HpBankW] = hp_bank(r_hp[l*HpAW +: 2*HpBankW]);
+        r_rec[l*REC_W +: HpAW + PH_W] = {r_hp[l*HpAW +: HpAW], b_data_q[l*PH_W +: PH_W]};
+      end
+    end
   end
 
-  // B skid (PipeFast 1, pree_top_skid): what B leaves moves into a slot that issues first.
-  wire [NumPreu-1:0]         s_pend;
-  wire                       s_short;
-  wire [NumPreu*HpAW-1:0]    s_hp;
-  wire [NumPreu*PH_W-1:0]    s_ph;
-  wire [NumPreu*CONST_W-1:0] s_hc;
-  wire [NumPreu*STATE_W-1:0] s_hs;
-  pree_top_skid #(.Skid(B_SKID), .NumPreu(NumPreu), .HpAW(HpAW), .PhW(PH_W), .ConstW(CONST_W),
-                  .StateW(STATE_W)) u_skid (
+  // B's live lanes: R's (PipeFast 0), or the head slot of B's queue (PipeFast 1), whose hazard
+  // and lane pairs come precomputed.
+  wire                       bl_short, q_go;
+  wire [NumPreu*KEY_W-1:0]   b_key;
+  wire [NumPreu*BBANK_W-1:0] b_bank;
+  wire [NumPreu*REC_W-1:0]   bl_rec;
+  wire [NumPreu-1:0]         q_haz;
+  wire [NumPreu*NumPreu-1:0] q_keq;
+  wire [WIN_UPD*NumPreu-1:0]       inf_v;
+  wire [WIN_UPD*NumPreu*KEY_W-1:0] inf_k;
+  pree_top_queue #(.Slots(REG_FLOW), .NumPreu(NumPreu), .KeyW(KEY_W), .BankW(BBANK_W),
+                   .RecW(REC_W), .WinUpd(WIN_UPD), .WinRad(WIN_RAD)) u_queue (
     .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .r_pend_i(b_pend_q), .r_short_i(b_short_q),
-    .r_hp_i(r_hp), .r_ph_i(b_data_q), .r_hc_i(hm_c), .r_hs_i(hm_s), .iss_i(b_iss),
-    .full_o(s_full), .pend_o(s_pend), .short_o(s_short),
-    .hp_o(s_hp), .ph_o(s_ph), .hc_o(s_hc), .hs_o(s_hs));
+    .r_key_i(r_key), .r_bank_i(r_bank), .r_rec_i(r_rec), .iss_i(b_iss), .inf_v_i(inf_v),
+    .inf_k_i(inf_k), .go_o(q_go), .pend_o(bl_pend), .short_o(bl_short), .key_o(b_key),
+    .bank_o(b_bank), .rec_o(bl_rec), .haz_o(q_haz), .keq_o(q_keq), .beq_o(bl_beq));
 
-  // B's live lanes: the slot's while it holds any, else R's.
-  wire [NumPreu-1:0]         bl_pend  = s_full ? s_pend : b_pend_q;
-  wire                       bl_short = s_full ? s_short : b_short_q;
-  wire [NumPreu*PH_W-1:0]    b_ph     = s_full ? s_ph : b_data_q;   // update: the photons
-  wire [NumPreu*CONST_W-1:0] b_hc     = s_full ? s_hc : hm_c;       // radiance: hit-point data
-  wire [NumPreu*STATE_W-1:0] b_hs     = s_full ? s_hs : hm_s;
-  always @* b_hp = s_full ? s_hp : r_hp;
-
-  // The B lanes' keys: update, the hit-point address read from the index table; radiance, the
-  // pixel of the hit point read in A.
-  reg  [NumPreu*KEY_W-1:0]    b_key;
-  reg  [NumPreu*BBANK_W-1:0]  b_bank;
-
-  always @* begin : b_keys
+  reg [NumPreu*PH_W-1:0]    b_ph;      // update: the photons
+  reg [NumPreu*192-1:0]     b_hc;      // radiance: the hit-point data {f, pos} and state
+  reg [NumPreu*STATE_W-1:0] b_hs;
+  always @* begin : b_unpack
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      b_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
-      b_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
-      if (mode_i) begin
-        b_key[l*KEY_W +: PxAW]       = l_pix[l*PxAW +: PxAW];
-        b_bank[l*BBANK_W +: PxBankW] = l_pix[l*PxAW +: PxBankW];
-      end else begin
-        b_key[l*KEY_W +: HpAW]       = b_hp[l*HpAW +: HpAW];
-        b_bank[l*BBANK_W +: HpBankW] = hp_bank(b_hp[l*HpAW +: 2*HpBankW]);
-      end
+      {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}          = bl_rec[l*REC_W +: HpAW + PH_W];
+      {b_hc[l*192 +: 192], b_hs[l*STATE_W +: STATE_W]}     = bl_rec[l*REC_W +: 192 + STATE_W];
     end
   end
 
   // Issue: a prefix of the pending lanes, each free of hazards and conflicts (pree_top_issue).
   wire [NumPreu-1:0] b_haz, b_dup;
-  pree_top_issue #(.NumPreu(NumPreu), .KeyW(KEY_W), .BankW(BBANK_W), .WinUpd(WIN_UPD), .WinRad(WIN_RAD)) u_issue (
-    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .pend_i(bl_pend), .key_i(b_key), .bank_i(b_bank),
-    .iss_o(b_iss), .haz_o(b_haz), .dup_o(b_dup));
+  pree_top_issue #(.NumPreu(NumPreu), .KeyW(KEY_W), .BankW(BBANK_W), .WinUpd(WIN_UPD),
+                   .WinRad(WIN_RAD), .Pre(REG_FLOW)) u_issue (
+    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .pend_i(bl_pend), .key_i(b_key),
+    .bank_i(b_bank), .haz_i(q_haz), .keq_i(q_keq), .beq_i(bl_beq), .inf_v_o(inf_v),
+    .inf_k_o(inf_k), .iss_o(b_iss), .haz_o(b_haz), .dup_o(b_dup));
 
-  // A reads when B empties in this cycle; with the skid, when the slot is empty (a register).
-  assign a_go = (B_SKID != 0) ? !s_full : &(~b_pend_q | b_iss);
+  // A reads when B empties in this cycle; PipeFast 1, when R is empty or moves into the queue
+  // (from registers).
+  assign a_go = (REG_FLOW != 0) ? q_go : &(~b_pend_q | b_iss);
 
   // ===============================================================================================
   // Stage C (update): the hit-point data arrives; the PREU takes it with the photon.
@@ -330,11 +348,13 @@ module pree_top #(
   // ===============================================================================================
   // PREUs.
   wire [NumPreu-1:0]       p_valid, p_vout, p_acc, p_lreq, p_busy;
-  wire [NumPreu*KEY_W-1:0] p_tag, p_ltag;
+  wire [NumPreu*KEY_W-1:0] p_tag;
+  /* verilator lint_off UNUSEDSIGNAL */
+  wire [NumPreu*KEY_W-1:0] p_ltag;   // the pixel-sum read's tag: the pixel is its low PxAW bits
+  /* verilator lint_on UNUSEDSIGNAL */
   wire [NumPreu*96-1:0]      p_l;
   wire [NumPreu*STATE_W-1:0] p_state;
-  reg  [NumPreu*PxBankW-1:0] px_rbank_q;
-  wire [95:0]                px_rd [0:PX_BANKS-1];   // the pixel banks' reads (pixel memory)
+  wire [NumPreu*96-1:0]      px_l;      // each lane's pixel-sum read (pixel memory)
   // Write-back requests per lane (update: the accepted state at its hit point; radiance: the pixel
   // sum at its pixel), then the host's port as one more lane of the memories below.
   wire [NumPreu-1:0]      wb_hp_en, wb_px_en;
@@ -342,13 +362,11 @@ module pree_top #(
   wire [NumPreu*PxAW-1:0] p_lpix, p_wpix; // the pixel read (lreq) and written back
   generate
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_preu
-      // The lane's hit-point data: radiance, B's (read in A); update, from the bank the lane
-      // read last (in B).
-      wire [CONST_W-1:0] hc   = mode_i ? b_hc[gl*CONST_W +: CONST_W] : hm_c[gl*CONST_W +: CONST_W];
+      // The lane's hit-point data {f, pos}: radiance, B's (read in A); update, from the bank the
+      // lane read last (in B).
+      wire [191:0]       hc   = mode_i ? b_hc[gl*192 +: 192] : hm_c[gl*CONST_W +: 192];
       wire [STATE_W-1:0] hs   = mode_i ? b_hs[gl*STATE_W +: STATE_W] : hm_s[gl*STATE_W +: STATE_W];
-      wire [95:0]        li   = px_rd[px_rbank_q[gl*PxBankW +: PxBankW]];
       wire [KEY_W-1:0]   tag;
-      assign l_pix[gl*PxAW +: PxAW] = hc[192 +: PxAW];
       if (KEY_W > HpAW) begin : g_tag_pad
         assign tag = mode_i ? b_key[gl*KEY_W +: KEY_W] : {{(KEY_W-HpAW){1'b0}}, c_hp_q[gl*HpAW +: HpAW]};
       end else begin : g_tag
@@ -364,7 +382,7 @@ module pree_top #(
         .ph_pos_i(c_data_q[gl*PH_W +: 96]), .ph_phi_i(c_data_q[gl*PH_W + 96 +: 96]),
         .alpha_i(alpha_i), .kappa_i(kappa_i),
         .ne_i(ne_i), .lreq_o(p_lreq[gl]), .lreq_tag_o(p_ltag[gl*KEY_W +: KEY_W]),
-        .l_i(li), .valid_o(p_vout[gl]), .tag_o(p_tag[gl*KEY_W +: KEY_W]),
+        .l_i(px_l[gl*96 +: 96]), .valid_o(p_vout[gl]), .tag_o(p_tag[gl*KEY_W +: KEY_W]),
         .accept_o(p_acc[gl]), .state_o(p_state[gl*STATE_W +: STATE_W]),
         .l_o(p_l[gl*96 +: 96]), .busy_o(p_busy[gl]));
 
@@ -377,12 +395,6 @@ module pree_top #(
     end
   endgenerate
 
-  always @(posedge clk_i) begin : px_rbank
-    integer l;
-    for (l = 0; l < NumPreu; l = l + 1)
-      if (p_lreq[l]) px_rbank_q[l*PxBankW +: PxBankW] <= p_ltag[l*KEY_W +: PxBankW];
-  end
-
   // ===============================================================================================
   // Hit-point memory (pree_top_hpmem): the PREU lanes' reads (update: B's issue; radiance: A's
   // read) and state writes (update write-back), and the host's port.
@@ -393,32 +405,19 @@ module pree_top #(
     .hp_re_i(hp_re_i), .hp_addr_i(hp_addr_i), .hp_wdata_i(hp_wdata_i), .hp_rdata_o(hp_rdata_o));
 
   // ===============================================================================================
-  // Pixel memory: PX_BANKS banks of {b, g, r}; bank = the pixel's low bits. Lanes: the PREU lanes
-  // (radiance: the pixel-sum read, lreq, and the write-back), then the host.
-  reg [PxBankW-1:0] px_hbank_q;
-
-  wire [PX_BANKS*96-1:0] px_rdata;
-
-  pree_ram_banks #(.BankW(PxBankW), .RowW(PX_ROW_W), .Width(96), .Lanes(NumPreu + 1)) u_px (
-    .clk_i(clk_i), .rd_i({px_re_i, p_lreq}), .rd_addr_i({px_addr_i, p_lpix}),
-    .wr_i({px_we_i, wb_px_en}), .wr_addr_i({px_addr_i, p_wpix}), .wr_data_i({px_wdata_i, p_l}),
-    .rdata_o(px_rdata));
-  generate
-    for (gb = 0; gb < PX_BANKS; gb = gb + 1) begin : g_px
-      assign px_rd[gb] = px_rdata[gb*96 +: 96];
-    end
-  endgenerate
-
-  always @(posedge clk_i) begin
-    if (px_re_i) px_hbank_q <= px_addr_i[PxBankW-1:0];
-  end
-  assign px_rdata_o = px_rd[px_hbank_q];
+  // Pixel memory (pree_top_pxmem): the PREU lanes' pixel-sum reads (lreq) and write-backs
+  // (radiance), and the host's port.
+  pree_top_pxmem #(.NumPreu(NumPreu), .PxAW(PxAW), .PxBankW(PxBankW)) u_pxmem (
+    .clk_i(clk_i), .rd_i(p_lreq), .rd_addr_i(p_lpix), .wr_i(wb_px_en), .wr_addr_i(p_wpix),
+    .wr_data_i(p_l), .rd_data_o(px_l), .px_we_i(px_we_i), .px_re_i(px_re_i), .px_addr_i(px_addr_i),
+    .px_wdata_i(px_wdata_i), .px_rdata_o(px_rdata_o));
 
   // ===============================================================================================
   // Idle and counters (pree_counters).
-  assign idle_o = af_empty && !ad_busy && !(|b_pend_q) && !s_full && !(|c_v_q) && !(|p_busy);
+  assign idle_o = af_empty && !ad_busy && !(|a_valid) && !(|b_pend_q) && !(|bl_pend) && !(|c_v_q) &&
+                  !(|p_busy);
 
-  pree_counters #(.NumPreu(NumPreu), .CtrW(CtrW)) u_counters (
+  pree_counters #(.NumPreu(NumPreu), .CtrW(CtrW), .InReg(REG_FLOW)) u_counters (
     .clk_i(clk_i), .rst_ni(rst_ni), .en_i(cnt_en_i), .mode_i(mode_i), .pend_i(bl_pend),
     .iss_i(b_iss), .haz_i(b_haz), .dup_i(b_dup), .short_i(bl_short), .op_i(p_valid), .cnt_o(cnt_o));
 

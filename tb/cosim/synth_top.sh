@@ -5,9 +5,10 @@
 # design, pree_top's own logic, the controllers, the rest: 4 PREUs with their fp32 units and the
 # block RAMs), the mapped netlist to OUTDIR/netlist.json and the logic depth of pree_top's own
 # paths (tb/cosim/synth_top_depth.py) to OUTDIR/depth.md.
-# pree_ram_banks (the banks' request logic), pree_counters and pree_top's parts (pree_top_read,
-# _issue, _skid and _hpmem) are flattened into pree_top, so that their logic counts as pree_top's
-# own and its paths are measured whole; the RAMs, PREUs and controllers stay modules.
+# pree_ram_banks (the banks' request logic), pree_counters and pree_top's parts (pree_top_offer,
+# _read, _queue, _issue, _hpmem and _pxmem) are flattened into pree_top, so that their logic
+# counts as pree_top's own and its paths are measured whole; the RAMs, PREUs and controllers stay
+# modules.
 # Memories are sized down for the run (HpAW=12 in 16 banks, IdxAW=8, PxAW=10 in 4 banks): their
 # block-RAM count scales with the sizes, the logic does not.
 # Usage: synth_top.sh OUTDIR [PIPEFAST]   (PIPEFAST 0, the default: the paper's PREUs; 1: the deep ones)
@@ -17,7 +18,7 @@ pipefast=${2:-0}
 mkdir -p "$out"
 srcs=$(grep -v '^//' rtl/pree.f | tr '\n' ' ')   # the RTL filelist
 params="chparam -set PipeFast $pipefast -set NumPreu 4 -set HpAW 12 -set HpBankW 4 -set IdxAW 8 -set PxAW 10 -set PxBankW 2 pree_top"
-cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; setattr -mod -set keep_hierarchy 1 *; setattr -mod -unset keep_hierarchy *pree_ram_banks *pree_counters *pree_top_read *pree_top_issue *pree_top_skid *pree_top_hpmem; flatten; setattr -mod -unset keep_hierarchy *; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top; write_json $out/netlist.json"
+cmd="read_verilog -Irtl $srcs; $params; hierarchy -check -top pree_top; setattr -mod -set keep_hierarchy 1 *; setattr -mod -unset keep_hierarchy *pree_ram_banks *pree_counters *pree_top_offer *pree_top_read *pree_top_issue *pree_top_queue *pree_top_hpmem *pree_top_pxmem; flatten; setattr -mod -unset keep_hierarchy *; proc; select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr; check -assert; synth_xilinx -family xc7 -top pree_top; check -assert; tee -q -o $out/stat.txt stat -top pree_top; write_json $out/netlist.json"
 echo "yosys -p '$cmd'"
 if ! yosys -q -l "$out/yosys.log" -p "$cmd" >/dev/null 2>&1; then
   echo "synth_top: yosys failed (log: $out/yosys.log); rerun: yosys -p '$cmd'" >&2

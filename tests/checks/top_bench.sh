@@ -6,7 +6,8 @@
 # bank conflicts in update mode; the bench also requires its abank counter to be non-zero);
 # 4 PREUs here, and the misplaced entries with 8 and 16 too; the other scenarios with 8 and 16
 # in `make sim`. The stable PREU datapath (13-cycle update hazard window) with 4 PREUs: random,
-# one hit point, dense, gaps and misplaced entries, at alpha 0.7 and 0.3. Faults: stalls on every
+# one hit point, dense, gaps and misplaced entries, at alpha 0.7 and 0.3. The deep configuration
+# (PipeFast 1, paper datapath) with 4 PREUs: every scenario, gaps and stalls. Faults: stalls on every
 # input stream, a reset in mid-pass then a clean rerun, rst_ni held low (a bounded wait fails).
 set -u
 cd "$(dirname "$0")/../.."
@@ -38,6 +39,16 @@ run --preu 4 --datapath 1 --scenario abank --photons 300 --seed 2
 # port takes, idle cycles in the hit-point load.
 run --preu 4 --scenario mixed --photons 300 --gap 0.3 --stall 0.3 --seed 4
 run --preu 4 --datapath 1 --scenario dense --hp 100 --photons 60 --gap 0.2 --stall 0.5 --seed 5
+# The deep configuration (PipeFast 1: 49-cycle update window, A's offer register, B's two-slot
+# queue with the hazard precomputed a cycle ahead): every scenario, radiance hazards on a small
+# hit-point set, misplaced entries, stalls on every input stream.
+run --preu 4 --pipe-fast --scenario random --photons 400
+run --preu 4 --pipe-fast --scenario one --photons 200
+run --preu 4 --pipe-fast --scenario dense --hp 100 --photons 60
+run --preu 4 --pipe-fast --scenario mixed --photons 300 --gap 0.3
+run --preu 4 --pipe-fast --scenario mixed --photons 300 --no-reorder
+run --preu 4 --pipe-fast --scenario abank --photons 300 --gap 0.3 --seed 2
+run --preu 4 --pipe-fast --scenario mixed --photons 300 --gap 0.3 --stall 0.3 --seed 4
 # A reset in mid-pass, then the hit points reloaded and every photon again: the bits and every
 # counter of a run without the reset (the whole summary line equal).
 for args in "--preu 4 --scenario random --photons 400" "--preu 4 --datapath 1 --scenario mixed --photons 300 --stall 0.3"; do
