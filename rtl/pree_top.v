@@ -182,7 +182,7 @@ module pree_top #(
   wire [NumPreu*PH_W-1:0]    a_data;
   wire [NumPreu-1:0]         a_rd;
   wire                       a_short;
-  wire                       a_go;        // stage B empties in this cycle
+  wire                       a_go;        // A may read (PipeFast 0: B empties in this cycle)
 
   pree_top_offer #(.Reg(A_REG), .NumPreu(NumPreu), .IdxAW(IdxAW), .HpAW(HpAW), .HpBankW(HpBankW),
                    .BankW(ABANK_W), .DataW(PH_W)) u_offer (
@@ -195,12 +195,6 @@ module pree_top #(
     .clk_i(clk_i), .rst_ni(rst_ni), .go_i(a_go), .valid_i(a_valid), .bank_i(a_bank),
     .last_i(a_last), .count_last_i(~mode_i), .rd_o(a_rd), .all_o(a_all), .short_o(a_short),
     .photons_done_o(photons_done_o));
-
-  reg [NumPreu*LANE_W-1:0] a_ibank;   // update: each lane's index bank (its address mod NumPreu)
-  always @* begin : a_ibanks
-    integer l;
-    for (l = 0; l < NumPreu; l = l + 1) a_ibank[l*LANE_W +: LANE_W] = a_idx[l*IdxAW +: LANE_W];
-  end
 
   // ===============================================================================================
   // Index table: NumPreu banks; bank = address mod NumPreu (its low LANE_W bits). A's lanes read
@@ -222,7 +216,7 @@ module pree_top #(
   // Stage B, R: the lanes read by A (at the RAM outputs). PipeFast 0: B issues from R and A reads
   // when R empties; PipeFast 1: R moves into B's queue (pree_top_queue), which B issues from.
   reg  [NumPreu-1:0]         b_pend_q;
-  reg  [NumPreu*LANE_W-1:0]  b_ibank_q;  // update: the index bank each lane read
+  reg  [NumPreu*ABANK_W-1:0] b_abank_q;  // the bank each lane read (update: the index table's)
   reg  [NumPreu*PH_W-1:0]    b_data_q;
   reg                        b_short_q;
   wire [NumPreu-1:0]         b_iss;
@@ -235,7 +229,7 @@ module pree_top #(
 
   always @(posedge clk_i) begin
     if (a_go) begin
-      b_ibank_q <= a_ibank;
+      b_abank_q <= a_bank;
       b_data_q  <= a_data;
       b_short_q <= a_short;
     end
@@ -274,7 +268,7 @@ module pree_top #(
   always @* begin : r_lanes
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      r_hp[l*HpAW +: HpAW]          = idx_rd[b_ibank_q[l*LANE_W +: LANE_W]];
+      r_hp[l*HpAW +: HpAW]          = idx_rd[b_abank_q[l*ABANK_W +: LANE_W]];
       r_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       r_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       r_rec[l*REC_W +: REC_W]       = {REC_W{1'b0}};
@@ -313,8 +307,15 @@ module pree_top #(
   always @* begin : b_unpack
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}          = bl_rec[l*REC_W +: HpAW + PH_W];
-      {b_hc[l*192 +: 192], b_hs[l*STATE_W +: STATE_W]}     = bl_rec[l*REC_W +: 192 + STATE_W];
+      if (REG_FLOW != 0) begin   // the head slot's records
+        {b_hp[l*HpAW +: HpAW], b_ph[l*PH_W +: PH_W]}      = bl_rec[l*REC_W +: HpAW + PH_W];
+        {b_hc[l*192 +: 192], b_hs[l*STATE_W +: STATE_W]} = bl_rec[l*REC_W +: 192 + STATE_W];
+      end else begin             // R's, straight from the RAMs and registers (no mode select)
+        b_hp[l*HpAW +: HpAW]       = r_hp[l*HpAW +: HpAW];
+        b_ph[l*PH_W +: PH_W]       = b_data_q[l*PH_W +: PH_W];
+        b_hc[l*192 +: 192]         = hm_c[l*CONST_W +: 192];
+        b_hs[l*STATE_W +: STATE_W] = hm_s[l*STATE_W +: STATE_W];
+      end
     end
   end
 
