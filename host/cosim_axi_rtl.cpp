@@ -132,7 +132,7 @@ cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
 // pree_axi's pree_top runs with PipeFast 0: 1 + the PREU's update latency (10 paper, 12 stable).
 int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
-// ... and without PipeFast 1's registered flow (A's offer register, B's skid slot).
+// ... and without PipeFast 1's registered flow (A's offer register, B's queue).
 int cosim_rtl_reg_flow(cosim_rtl_t *) { return 0; }
 // The wrapper drives pree_top's photon port one photon a cycle (PhotonsPerCycle 1); --model-only
 // is for the pree_top programs.

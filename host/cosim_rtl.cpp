@@ -4,7 +4,7 @@
 // (-include) and lists the build's models in COSIM_MODELS, X(class, PREU count, datapath,
 // PipeFast) each: the one list of configurations. Each model's update hazard window is its
 // pree_top's public WIN_UPD, and whether it has PipeFast 1's registered flow (A's offer register,
-// B's skid slot) its public REG_FLOW.
+// B's queue) its public REG_FLOW.
 #include "cosim_rtl.h"
 
 #include <cstdio>

@@ -20,7 +20,7 @@
  *   cosim_rtl_cycle                cycles run since reset (the trace's time: cycle n at 8n ns)
  *   cosim_rtl_trace_window(r, a, b)  dump only cycles a..b into the trace
  *   cosim_rtl_reg_flow             whether it has PipeFast 1's registered flow: A's offer register
- *                                  and B's skid slot (pree_top's REG_FLOW)
+ *                                  and B's queue (pree_top's REG_FLOW)
  *   cosim_rtl_ppc                  the model's PhotonsPerCycle parameter (photon slots of ph_*)
  *   cosim_rtl_config(preu, &hpb, &ppc)  HpBankW and PhotonsPerCycle of the build's pree_top with
  *                                  preu PREUs, whether or not that model is linked (-1: no such
@@ -84,7 +84,7 @@ int cosim_rtl_update_window(cosim_rtl_t *r);   /* the update hazard window in cy
 int cosim_rtl_radiance_depth(cosim_rtl_t *r);
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r);
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to);
-int cosim_rtl_reg_flow(cosim_rtl_t *r);    /* 1: A's offer register, B's skid slot (PipeFast 1) */
+int cosim_rtl_reg_flow(cosim_rtl_t *r);    /* 1: A's offer register, B's queue (PipeFast 1) */
 int cosim_rtl_ppc(cosim_rtl_t *r);         /* photons the model takes per cycle */
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc);
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on);

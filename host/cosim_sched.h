@@ -45,7 +45,7 @@
 typedef struct {
     int preu, hp_bank_w;
     int win;           /* the top's update hazard window (cosim_rtl_update_window) */
-    int reg_flow;      /* the top's registered flow: A's offer register, B's skid slot (PipeFast 1) */
+    int reg_flow;      /* the top's registered flow: A's offer register, B's queue (PipeFast 1) */
     int reorder;       /* 1: order each photon's candidates too */
     int window;        /* pending photons held (>= 1) */
     int ppc;           /* the top's PhotonsPerCycle (1 .. COSIM_MAX_PPC) */

@@ -90,7 +90,7 @@ static inline int cosim_radiance_depth(int pipe_fast)
 {
     return pipe_fast ? 64 : 12;
 }
-/* Whether pree_top has the registered flow, A's offer register and B's skid slot (its REG_FLOW):
+/* Whether pree_top has the registered flow, A's offer register and B's queue (its REG_FLOW):
  * with PipeFast 1. */
 static inline int cosim_reg_flow(int pipe_fast)
 {

@@ -120,7 +120,7 @@ module pree_top #(
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
   // PipeFast 1's registered flow control (public to the co-simulation host): A's offer register
-  // (pree_top_offer) and B's skid slot (pree_top_skid).
+  // (pree_top_offer) and B's two-slot queue (pree_top_queue).
   localparam REG_FLOW /*verilator public*/ = (PipeFast != 0) ? 1 : 0;
   localparam A_REG   = REG_FLOW;
   localparam PH_W      = 192;
