@@ -29,6 +29,18 @@ void cosim_shadow_free(cosim_shadow_t *s)
     free(s);
 }
 
+/* The lanes B issues from: R's, or with reg_flow the queue's head slot's (u_queue). */
+static const shadow_lanes_t *live_lanes(const cosim_shadow_t *s)
+{
+    return s->reg_flow ? &s->q[s->head] : &s->r;
+}
+
+/* The index addresses of the offer stage A reads (u_offer): the register's, or the controller's. */
+static const uint32_t *read_refs(const cosim_shadow_t *s)
+{
+    return s->reg_flow ? s->o_ref : s->ref;
+}
+
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n)
 {
     for (uint32_t k = 0; k < n; k++) s->idx[(p + n - 1u - k) & IDX_MASK] = hps[k];
@@ -46,10 +58,10 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
     /* The offer stage A reads (u_offer): the register's (reg_flow), else the controller's. */
     const uint32_t o_valid = s->reg_flow ? s->o_valid : ctl_valid;
-    const uint32_t *o_ref = s->reg_flow ? s->o_ref : s->ref;
+    const uint32_t *o_ref = read_refs(s);
     /* Stage B (b_issue): a prefix of the live lanes (those A read last, or with reg_flow the
      * queue's head slot), each free of hazard, dup and bank. */
-    const shadow_lanes_t *live = s->reg_flow ? &s->q[s->head] : &s->r;
+    const shadow_lanes_t *live = live_lanes(s);
     const uint32_t bpend = live->pend;
     const uint32_t *bhp = live->hp;
     uint32_t iss = 0;
@@ -113,7 +125,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
     for (int k = 0; k < *row_n; k++) s->inf_cnt[row[k]]--;
     *row_n = 0;
     s->n_iss = 0;
-    const uint32_t *bhp = s->reg_flow ? s->q[s->head].hp : s->r.hp;
+    const uint32_t *bhp = live_lanes(s)->hp;
     for (int l = 0; l < np; l++)
         if ((s->iss >> l) & 1) {
             row[(*row_n)++] = bhp[l];
@@ -135,7 +147,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
     /* Stage B registers (R): the lanes A read (index-table data), or what is left pending. */
     if (s->a_go) {
         for (int l = 0; l < np; l++)
-            if ((s->a_rd >> l) & 1) s->r.hp[l] = s->idx[(s->reg_flow ? s->o_ref : s->ref)[l]];
+            if ((s->a_rd >> l) & 1) s->r.hp[l] = s->idx[read_refs(s)[l]];
         s->r.pend = s->a_rd;
         s->r.a_short = (s->a_valid & ~s->a_rd) != 0;
     } else if (!s->reg_flow) {
