@@ -9,7 +9,10 @@
 //
 // Buffer: BufDepth entries (4 in the paper, for any NumPreu) holding photon data, id, p_addr
 // and rem (hit points not yet dispatched, >= 1). Valid entries are always 0 .. count-1, in
-// arrival (photon) order. The rule is model/pree/aftso_rule.c's (the same in C).
+// arrival (photon) order. The rule is model/pree/aftso_rule.c's (the same in C). The registers
+// hold each entry's accuHP (below) and its comparisons with 0 .. NumPreu rather than rem, so
+// that no cycle sums the buffer: every path has at most 6 LUT levels in synth_xilinx
+// (docs/controllers.md, "Registered accuHP"); the lanes and the cycles are the rule's.
 //
 // Dispatch rule, once per cycle in which stall_i is low:
 //   accuHP_i   = rem_0 + ... + rem_i                      (valid entries only)
@@ -90,10 +93,11 @@ module pree_aftso_hpuoc #(
   output wire                     empty_o
 );
 
-  // Width of accuHP: a sum of BufDepth counts below 2^CntW, and at least wide enough for NumPreu.
+  // Width of accuHP: a sum of BufDepth counts below 2^CntW, and at least wide enough for 2 NumPreu.
   localparam ACC_W0 = CntW + $clog2(BufDepth) + 1;
   localparam ACC_W  = ACC_W0 > $clog2(NumPreu) + 2 ? ACC_W0 : $clog2(NumPreu) + 2;
   localparam PPC    = PhotonsPerCycle;
+  localparam NF     = NumPreu + 1;   // flags per entry: accuHP_i > l for l = 0 .. NumPreu
 
   generate
     if (PPC < 1 || PPC > BufDepth) begin : g_bad_ppc
@@ -101,29 +105,10 @@ module pree_aftso_hpuoc #(
     end
   endgenerate
 
-  // ---------------------------------------------------------------------------------------------
-  // Buffer registers: valid is a thermometer code (entries 0 .. count-1); the payload loads on
-  // shift or append and has no reset.
-  reg  [BufDepth-1:0]       valid_q,  valid_d;
-  reg  [BufDepth*DataW-1:0] data_q,   data_d;
-  reg  [BufDepth*IdW-1:0]   id_q,     id_d;
-  reg  [BufDepth*AddrW-1:0] paddr_q,  paddr_d;
-  reg  [BufDepth*CntW-1:0]  rem_q,    rem_d;
-
-  // ---------------------------------------------------------------------------------------------
-  // accuHP and the whole-dispatch flags.
-  //   accu[i]  accuHP_i (invalid entries add zero)
-  //   whole[i] entry i leaves whole this cycle if not stalled: valid and accuHP_i <= NumPreu
-  //            (a prefix of the valid entries, since accuHP grows along the buffer)
-  reg  [BufDepth*ACC_W-1:0] accu;
-  reg  [BufDepth-1:0]       whole;
-  localparam [31:0]         NUM_PREU_32 = NumPreu;
-  wire [ACC_W-1:0]          preu_acc = acc_of_32(NUM_PREU_32);
-
   // Zero-extend or truncate between the widths in use (all truncations are modulo 2^W on
-  // purpose: ref_addr wraps, and a trimmed rem always fits in CntW bits). One definition makes
-  // the four casts: PREE_WIDTH_CAST(name, out width, in width) declares the function `name`,
-  // whose temporary is named *_unused, Verilator's default pattern for bits dropped on purpose.
+  // purpose: ref_addr wraps). One definition makes the casts: PREE_WIDTH_CAST(name, out width,
+  // in width) declares the function `name`, whose temporary is named *_unused, Verilator's
+  // default pattern for bits dropped on purpose.
 `define PREE_WIDTH_CAST(NAME, OW, IW) \
   function [OW-1:0] NAME; \
     input [IW-1:0] v; \
@@ -134,47 +119,90 @@ module pree_aftso_hpuoc #(
     end \
   endfunction
   `PREE_WIDTH_CAST(acc_of_32,   ACC_W, 32)
+  `PREE_WIDTH_CAST(acc_of_cnt,  ACC_W, CntW)
   `PREE_WIDTH_CAST(addr_of_acc, AddrW, ACC_W)
-  `PREE_WIDTH_CAST(addr_of_cnt, AddrW, CntW)
-  `PREE_WIDTH_CAST(cnt_of_acc,  CntW,  ACC_W)
+  `PREE_WIDTH_CAST(addr_of_32,  AddrW, 32)
 `undef PREE_WIDTH_CAST
 
-  integer i;
-  reg [ACC_W-1:0] sum;
-  always @* begin
-    sum = {ACC_W{1'b0}};
-    for (i = 0; i < BufDepth; i = i + 1) begin
-      if (valid_q[i]) sum = sum + {{(ACC_W-CntW){1'b0}}, rem_q[i*CntW +: CntW]};
-      accu[i*ACC_W +: ACC_W] = sum;
-      whole[i] = valid_q[i] && (sum <= preu_acc);
+  // above(x, c) = x > c for a constant c < 2^LOW_W, as logic (upper bits not all zero, or the
+  // low bits above c) rather than a subtraction: it maps to two LUT levels, not a carry chain.
+  localparam LOW_W = $clog2(2 * NumPreu + 2);
+  function above;
+    input [ACC_W-1:0] x;
+    input [31:0]      c;
+    integer v;
+    reg [ACC_W-1:0] hi;
+    reg [LOW_W-1:0] lo;
+    begin
+      hi    = x >> LOW_W;
+      lo    = x[LOW_W-1:0];
+      above = hi != {ACC_W{1'b0}};
+      for (v = 0; v < (1 << LOW_W); v = v + 1)
+        if (v > c && {{(32-LOW_W){1'b0}}, lo} == v) above = 1'b1;
     end
-  end
+  endfunction
+  // thermo(x): the flags of accuHP x, x > l for l = 0 .. NumPreu.
+  function [NF-1:0] thermo;
+    input [ACC_W-1:0] x;
+    integer l;
+    begin
+      for (l = 0; l < NF; l = l + 1) thermo[l] = above(x, l);
+    end
+  endfunction
 
-  genvar gi, gl, gs;
+  localparam [31:0] NUM_PREU_32 = NumPreu;
+  wire [ACC_W-1:0]  preu_acc  = acc_of_32(NUM_PREU_32);
+  wire [AddrW-1:0]  preu_addr = addr_of_32(NUM_PREU_32);
+
+  // ---------------------------------------------------------------------------------------------
+  // Buffer registers. The rule needs accuHP_i, not rem_i, so accuHP is what is held: every
+  // decision of a cycle is then a comparison of a register with a constant, and the next
+  // cycle's accuHP is this cycle's minus NumPreu, shifted, or a new total (docs/controllers.md,
+  // "Registered accuHP"). rem_i is accuHP_i - accuHP_{i-1}.
+  //   valid_q  a thermometer code (entries 0 .. count-1)
+  //   acc_q    accuHP_i; an invalid entry holds the total (it adds zero), so acc_q[BufDepth-1]
+  //            is the number of hit points in the buffer
+  //   gt_q     gt_q[i*NF + l] = accuHP_i > l, l = 0 .. NumPreu
+  //   ref_q    p_addr_i + accuHP_i - 1: the address that lane 0 would take from entry i
+  //            (lane l takes ref_q[i] - l)
+  // valid, acc and gt are reset (the empty buffer: all totals 0); the payload loads on shift or
+  // append and has no reset.
+  reg  [BufDepth-1:0]       valid_q;
+  reg  [BufDepth*ACC_W-1:0] acc_q;
+  reg  [BufDepth*NF-1:0]    gt_q;
+  reg  [BufDepth*AddrW-1:0] ref_q;
+  reg  [ACC_W-1:0]          tq_q;     // max(total - NumPreu, 0): the total left after a taken offer
+  reg  [BufDepth*DataW-1:0] data_q;
+  reg  [BufDepth*IdW-1:0]   id_q;
+
+  // whole[i]: entry i leaves whole this cycle if not stalled (valid and accuHP_i <= NumPreu; a
+  // prefix of the valid entries, since accuHP grows along the buffer).
+  wire [BufDepth-1:0] whole;
+  // An entry that stays after a taken offer: accuHP and ref_q drop by NumPreu, and its flags
+  // are accuHP_i > l + NumPreu.
+  wire [BufDepth*ACC_W-1:0] dn_acc;
+  wire [BufDepth*AddrW-1:0] dn_ref;
+  wire [BufDepth*NF-1:0]    dn_gt;
+
+  genvar gi, gl, gf, gv;
+  generate
+    for (gi = 0; gi < BufDepth; gi = gi + 1) begin : g_entry
+      assign whole[gi] = valid_q[gi] & ~gt_q[gi*NF + NumPreu];
+      assign dn_acc[gi*ACC_W +: ACC_W] = acc_q[gi*ACC_W +: ACC_W] - preu_acc;
+      assign dn_ref[gi*AddrW +: AddrW] = ref_q[gi*AddrW +: AddrW] - preu_addr;
+      for (gf = 0; gf < NF; gf = gf + 1) begin : g_flag
+        assign dn_gt[gi*NF + gf] = above(acc_q[gi*ACC_W +: ACC_W], gf + NumPreu);
+      end
+    end
+  endgenerate
 
   // ---------------------------------------------------------------------------------------------
   // Lanes. Lane l takes entry e when accuHP_{e-1} <= l < accuHP_e (one-hot over e; none when
-  // l >= total). ref_addr = p_addr_e + rem_e - 1 - (l - accuHP_{e-1}) = refbase_e - l.
-  wire [BufDepth*AddrW-1:0] refbase;
-
+  // l >= total, and never an invalid entry, whose accuHP equals the one before it).
+  // ref_addr = p_addr_e + rem_e - 1 - (l - accuHP_{e-1}) = ref_q[e] - l.
   generate
-    for (gi = 0; gi < BufDepth; gi = gi + 1) begin : g_refbase
-      wire [ACC_W-1:0] prev_acc;
-      if (gi == 0) begin : g_first
-        assign prev_acc = {ACC_W{1'b0}};
-      end else begin : g_next
-        assign prev_acc = accu[(gi-1)*ACC_W +: ACC_W];
-      end
-      assign refbase[gi*AddrW +: AddrW] = paddr_q[gi*AddrW +: AddrW]
-                                          + addr_of_cnt(rem_q[gi*CntW +: CntW])
-                                          + addr_of_acc(prev_acc) - {{(AddrW-1){1'b0}}, 1'b1};
-    end
-
     for (gl = 0; gl < NumPreu; gl = gl + 1) begin : g_lane
-      localparam [31:0] LANE_32  = gl;
-      localparam [31:0] LANE1_32 = gl + 1;
-      wire [ACC_W-1:0] lane_idx  = acc_of_32(LANE_32);
-      wire [ACC_W-1:0] lane_idx1 = acc_of_32(LANE1_32);
+      localparam [31:0] LANE_32 = gl;
       reg  [BufDepth-1:0] sel;
       reg  [AddrW-1:0]    base;
       reg  [DataW-1:0]    data;
@@ -182,139 +210,177 @@ module pree_aftso_hpuoc #(
       reg                 last;
       integer e;
       always @* begin
-        sel  = {BufDepth{1'b0}};
         base = {AddrW{1'b0}};
         data = {DataW{1'b0}};
         id   = {IdW{1'b0}};
         last = 1'b0;
         for (e = 0; e < BufDepth; e = e + 1) begin
-          // accuHP_{e-1} <= l is the same as "not below the previous prefix"; invalid entries
-          // never match because their accuHP equals the previous one.
-          sel[e] = (lane_idx < accu[e*ACC_W +: ACC_W]) &&
-                   (e == 0 || accu[((e == 0) ? 0 : e-1)*ACC_W +: ACC_W] <= lane_idx);
-          base = base | ({AddrW{sel[e]}} & refbase[e*AddrW +: AddrW]);
+          sel[e] = gt_q[e*NF + gl] && (e == 0 || !gt_q[((e == 0) ? 0 : e-1)*NF + gl]);
+          base = base | ({AddrW{sel[e]}} & ref_q[e*AddrW +: AddrW]);
           data = data | ({DataW{sel[e]}} & data_q[e*DataW +: DataW]);
           id   = id   | ({IdW{sel[e]}}   & id_q[e*IdW +: IdW]);
-          last = last | (sel[e] && accu[e*ACC_W +: ACC_W] == lane_idx1);
+          last = last | (sel[e] && !gt_q[e*NF + gl + 1]);    // accuHP_e == l + 1
         end
       end
-      assign lane_valid_o[gl]                 = |sel;
-      assign lane_ref_addr_o[gl*AddrW +: AddrW] = |sel ? base - addr_of_acc(lane_idx) : {AddrW{1'b0}};
-      assign lane_data_o[gl*DataW +: DataW]   = data;
-      assign lane_id_o[gl*IdW +: IdW]         = id;
-      assign lane_last_o[gl]                  = last;
+      // Valid: the total exceeds l (the last entry holds the total).
+      wire valid = gt_q[(BufDepth-1)*NF + gl];
+      assign lane_valid_o[gl]                   = valid;
+      assign lane_ref_addr_o[gl*AddrW +: AddrW] = valid ? base - addr_of_32(LANE_32) : {AddrW{1'b0}};
+      assign lane_data_o[gl*DataW +: DataW]     = data;
+      assign lane_id_o[gl*IdW +: IdW]           = id;
+      assign lane_last_o[gl]                    = last;
     end
   endgenerate
 
   // ---------------------------------------------------------------------------------------------
-  // Back-pressure and input acceptance: PPC entries free once the w entries that leave whole
-  // in this cycle (EarlyReady, not stalled) are gone, for some w in 0 .. PPC; with a thermometer
-  // valid_q, "BufDepth - PPC + w entries free" is "entry BufDepth - PPC + w invalid".
-  wire [BufDepth-1:0] early_leave = (EarlyReady != 0 && !stall_i) ? whole : {BufDepth{1'b0}};
-  reg  ready;
-  integer w;
-  always @* begin
-    ready = 1'b0;
-    for (w = 0; w <= PPC; w = w + 1)
-      if ((w == 0 || early_leave[(w == 0) ? 0 : w-1]) &&
-          (BufDepth - PPC + w >= BufDepth || !valid_q[(BufDepth - PPC + w < BufDepth) ? BufDepth - PPC + w : 0]))
-        ready = 1'b1;
-  end
-  wire accept   = in_valid_i && ready;
+  // Next state, once for each value of stall_i (g_nx[1]: stalled, g_nx[0]: the offer is taken),
+  // so that stall_i, which arrives late (the top's read of the offer), only selects at the end.
+  //   in_ready: PPC entries free once the w entries that leave whole in this cycle (EarlyReady,
+  //     not stalled) are gone, for some w in 0 .. PPC; with a thermometer valid_q, "BufDepth -
+  //     PPC + w entries free" is "entry BufDepth - PPC + w invalid".
+  //   taken: shift by the number of whole entries s (one-hot shift_oh[s], s = 0 .. BufDepth);
+  //     the entries that stay drop NumPreu (the partial one, if any, becomes entry 0 with
+  //     accuHP = its accuHP - NumPreu); the total left is total - NumPreu, or 0 when every
+  //     entry left.
+  //   then append the accepted slots with N^P > 0, in slot order, each behind the last valid
+  //   entry, with accuHP = the total so far; the entries above hold the new total.
+  generate
+    for (gv = 0; gv < 2; gv = gv + 1) begin : g_nx
+      reg  [BufDepth-1:0]       kept, valid_d;
+      reg  [BufDepth*ACC_W-1:0] acc_d;
+      reg  [BufDepth*NF-1:0]    gt_d;
+      reg  [BufDepth*AddrW-1:0] ref_d;
+      reg  [BufDepth*DataW-1:0] data_d;
+      reg  [BufDepth*IdW-1:0]   id_d;
+      reg  [ACC_W-1:0]          tq_d;
+      reg                       ready;
+      wire [BufDepth-1:0] leave = (gv != 0) ? {BufDepth{1'b0}} : whole;
+      wire [BufDepth:0]   shift_oh;
+      for (gi = 0; gi <= BufDepth; gi = gi + 1) begin : g_shift
+        if (gi == 0) begin : g_none
+          assign shift_oh[gi] = ~leave[0];
+        end else if (gi == BufDepth) begin : g_all
+          assign shift_oh[gi] = leave[BufDepth-1];
+        end else begin : g_some
+          assign shift_oh[gi] = leave[gi-1] & ~leave[gi];
+        end
+      end
 
-  assign in_ready_o = ready;
-  assign busy_o     = ~ready;
+      always @* begin : next
+        integer w, k, s, j;
+        reg [ACC_W-1:0] t, t_dn, cum;
+        reg [NF-1:0]    t_gt;
+        reg placed, accept;
+        placed = 1'b0;
+        ready  = 1'b0;
+        for (w = 0; w <= PPC; w = w + 1)
+          if ((w == 0 || (EarlyReady != 0 && leave[(w == 0) ? 0 : w-1])) &&
+              (BufDepth - PPC + w >= BufDepth || !valid_q[(BufDepth - PPC + w < BufDepth) ? BufDepth - PPC + w : 0]))
+            ready = 1'b1;
+        accept = in_valid_i && ready;
+
+        data_d = data_q;
+        id_d   = id_q;
+        acc_d  = acc_q;
+        gt_d   = gt_q;
+        ref_d  = ref_q;
+        // t: the total left before the append; t_gt its flags; t_dn = max(t - NumPreu, 0).
+        if (gv != 0) begin
+          kept = valid_q;
+          t    = acc_q[(BufDepth-1)*ACC_W +: ACC_W];
+          t_gt = gt_q[(BufDepth-1)*NF +: NF];
+          t_dn = tq_q;
+        end else begin
+          kept = {BufDepth{1'b0}};
+          for (k = 0; k < BufDepth; k = k + 1)
+            for (s = 0; s <= BufDepth; s = s + 1)
+              if (shift_oh[s] && k + s < BufDepth) begin
+                kept[k]                  = valid_q[(k + s < BufDepth) ? k + s : 0];
+                data_d[k*DataW +: DataW] = data_q[((k + s < BufDepth) ? k + s : 0)*DataW +: DataW];
+                id_d[k*IdW +: IdW]       = id_q[((k + s < BufDepth) ? k + s : 0)*IdW +: IdW];
+                acc_d[k*ACC_W +: ACC_W]  = dn_acc[((k + s < BufDepth) ? k + s : 0)*ACC_W +: ACC_W];
+                gt_d[k*NF +: NF]         = dn_gt[((k + s < BufDepth) ? k + s : 0)*NF +: NF];
+                ref_d[k*AddrW +: AddrW]  = dn_ref[((k + s < BufDepth) ? k + s : 0)*AddrW +: AddrW];
+              end
+          t    = tq_q;
+          t_gt = dn_gt[(BufDepth-1)*NF +: NF];
+          t_dn = above(tq_q, NumPreu) ? tq_q - preu_acc : {ACC_W{1'b0}};
+        end
+
+        // The append: slot j's entry has accuHP t + cum_j (cum_j: N^P of the slots up to j, from
+        // the inputs alone) and ref_q = (p_addr_j - 1 + cum_j) + t, one adder after t each.
+        valid_d = kept;
+        cum     = {ACC_W{1'b0}};
+        for (j = 0; j < PPC; j = j + 1) begin
+          if (in_n_i[j*CntW +: CntW] != {CntW{1'b0}}) begin
+            cum    = cum + acc_of_cnt(in_n_i[j*CntW +: CntW]);
+            placed = 1'b0;
+            for (k = 0; k < BufDepth; k = k + 1) begin
+              if (accept && !placed && !valid_d[k] && (k == 0 || valid_d[(k == 0) ? 0 : k-1])) begin
+                placed                   = 1'b1;
+                valid_d[k]               = 1'b1;
+                data_d[k*DataW +: DataW] = in_data_i[j*DataW +: DataW];
+                id_d[k*IdW +: IdW]       = in_id_i[j*IdW +: IdW];
+                acc_d[k*ACC_W +: ACC_W]  = t + cum;
+                gt_d[k*NF +: NF]         = thermo(t + cum);
+                ref_d[k*AddrW +: AddrW]  = in_p_addr_i[j*AddrW +: AddrW] - {{(AddrW-1){1'b0}}, 1'b1}
+                                           + addr_of_acc(cum) + addr_of_acc(t);
+              end
+            end
+          end
+        end
+        // The entries above the valid ones hold the new total; the total left next time.
+        for (k = 0; k < BufDepth; k = k + 1)
+          if (!valid_d[k]) begin
+            acc_d[k*ACC_W +: ACC_W] = accept ? t + cum : t;
+            gt_d[k*NF +: NF]        = accept ? thermo(t + cum) : t_gt;
+          end
+        tq_d = !accept ? t_dn : above(t + cum, NumPreu) ? t + cum - preu_acc : {ACC_W{1'b0}};
+      end
+    end
+  endgenerate
+
+  assign in_ready_o = stall_i ? g_nx[1].ready : g_nx[0].ready;
+  assign busy_o     = ~in_ready_o;
   assign empty_o    = ~valid_q[0];
 
-  // ---------------------------------------------------------------------------------------------
-  // Next state: shift by the number of whole entries (one-hot shift_oh[s], s = 0 .. BufDepth),
-  // trim the partial entry (it lands in entry 0), append the new photon behind the rest.
-  wire [BufDepth-1:0] leave = stall_i ? {BufDepth{1'b0}} : whole;
-  wire [BufDepth:0]   shift_oh;
-
-  generate
-    for (gs = 0; gs <= BufDepth; gs = gs + 1) begin : g_shift
-      if (gs == 0) begin : g_none
-        assign shift_oh[gs] = ~leave[0];
-      end else if (gs == BufDepth) begin : g_all
-        assign shift_oh[gs] = leave[BufDepth-1];
-      end else begin : g_some
-        assign shift_oh[gs] = leave[gs-1] & ~leave[gs];
-      end
-    end
-  endgenerate
-
-  // rem of the entry that becomes entry 0 when it was dispatched in part: accuHP - NumPreu.
-  reg [ACC_W-1:0] trimmed;
-  integer s, k, j;
-  reg     placed;
-  always @* begin
-    trimmed = {ACC_W{1'b0}};
-    for (s = 0; s < BufDepth; s = s + 1)
-      if (shift_oh[s]) trimmed = accu[s*ACC_W +: ACC_W] - preu_acc;
-  end
-
-  reg [BufDepth-1:0] valid_sh;
-  always @* begin
-    valid_sh = {BufDepth{1'b0}};
-    data_d   = data_q;
-    id_d     = id_q;
-    paddr_d  = paddr_q;
-    rem_d    = rem_q;
-    // Shift: entry k takes entry k + shift.
-    for (k = 0; k < BufDepth; k = k + 1) begin
-      for (s = 0; s <= BufDepth; s = s + 1) begin
-        if (shift_oh[s] && k + s < BufDepth) begin
-          valid_sh[k]                = valid_q[(k + s < BufDepth) ? k + s : 0];
-          data_d[k*DataW +: DataW]   = data_q[((k + s < BufDepth) ? k + s : 0)*DataW +: DataW];
-          id_d[k*IdW +: IdW]         = id_q[((k + s < BufDepth) ? k + s : 0)*IdW +: IdW];
-          paddr_d[k*AddrW +: AddrW]  = paddr_q[((k + s < BufDepth) ? k + s : 0)*AddrW +: AddrW];
-          rem_d[k*CntW +: CntW]      = rem_q[((k + s < BufDepth) ? k + s : 0)*CntW +: CntW];
-        end
-      end
-    end
-    // The partial entry (not stalled, entry 0 after the shift still valid) loses what left.
-    if (!stall_i && valid_sh[0]) rem_d[0 +: CntW] = cnt_of_acc(trimmed);
-    // Append the slots with N^P > 0, in slot order, each behind the last valid entry.
-    valid_d = valid_sh;
-    for (j = 0; j < PPC; j = j + 1) begin
-      placed = 1'b0;
-      for (k = 0; k < BufDepth; k = k + 1) begin
-        if (accept && in_n_i[j*CntW +: CntW] != {CntW{1'b0}} && !placed && !valid_d[k] &&
-            (k == 0 || valid_d[(k == 0) ? 0 : k-1])) begin
-          placed                    = 1'b1;
-          valid_d[k]                = 1'b1;
-          data_d[k*DataW +: DataW]  = in_data_i[j*DataW +: DataW];
-          id_d[k*IdW +: IdW]        = in_id_i[j*IdW +: IdW];
-          paddr_d[k*AddrW +: AddrW] = in_p_addr_i[j*AddrW +: AddrW];
-          rem_d[k*CntW +: CntW]     = in_n_i[j*CntW +: CntW];
-        end
-      end
-    end
-  end
-
   always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) valid_q <= {BufDepth{1'b0}};
-    else         valid_q <= valid_d;
+    if (!rst_ni) begin
+      valid_q <= {BufDepth{1'b0}};
+      acc_q   <= {(BufDepth*ACC_W){1'b0}};
+      gt_q    <= {(BufDepth*NF){1'b0}};
+      tq_q    <= {ACC_W{1'b0}};
+    end else begin
+      valid_q <= stall_i ? g_nx[1].valid_d : g_nx[0].valid_d;
+      acc_q   <= stall_i ? g_nx[1].acc_d   : g_nx[0].acc_d;
+      gt_q    <= stall_i ? g_nx[1].gt_d    : g_nx[0].gt_d;
+      tq_q    <= stall_i ? g_nx[1].tq_d    : g_nx[0].tq_d;
+    end
   end
 
   always @(posedge clk_i) begin
-    data_q  <= data_d;
-    id_q    <= id_d;
-    paddr_q <= paddr_d;
-    rem_q   <= rem_d;
+    ref_q  <= stall_i ? g_nx[1].ref_d  : g_nx[0].ref_d;
+    data_q <= stall_i ? g_nx[1].data_d : g_nx[0].data_d;
+    id_q   <= stall_i ? g_nx[1].id_d   : g_nx[0].id_d;
   end
 
 `ifdef PREE_ASSERT
-  // Simulation-only checks (the benches define PREE_ASSERT): valid_q stays a thermometer code
-  // and a valid entry never has rem = 0.
-  integer a;
+  // Simulation-only checks (the benches define PREE_ASSERT): valid_q stays a thermometer code,
+  // a valid entry is never empty (accuHP grows), an invalid one holds the total, and the flags
+  // are accuHP's.
+  integer a, f;
   always @(posedge clk_i or negedge rst_ni) begin
     if (rst_ni) begin
-      for (a = 1; a < BufDepth; a = a + 1)
+      for (a = 1; a < BufDepth; a = a + 1) begin
         if (valid_q[a] && !valid_q[a-1]) $fatal(1, "pree_aftso_hpuoc: valid_q not a thermometer");
+        if (valid_q[a] != (acc_q[a*ACC_W +: ACC_W] > acc_q[(a-1)*ACC_W +: ACC_W]))
+          $fatal(1, "pree_aftso_hpuoc: accuHP of entry %0d", a);
+      end
+      if (valid_q[0] != (acc_q[0 +: ACC_W] != {ACC_W{1'b0}})) $fatal(1, "pree_aftso_hpuoc: accuHP of entry 0");
       for (a = 0; a < BufDepth; a = a + 1)
-        if (valid_q[a] && rem_q[a*CntW +: CntW] == {CntW{1'b0}}) $fatal(1, "pree_aftso_hpuoc: empty entry");
+        for (f = 0; f < NF; f = f + 1)
+          if (gt_q[a*NF + f] != (acc_q[a*ACC_W +: ACC_W] > acc_of_32(f)))
+            $fatal(1, "pree_aftso_hpuoc: flag %0d of entry %0d", f, a);
     end
   end
 `endif
