@@ -35,10 +35,11 @@ static const shadow_lanes_t *live_lanes(const cosim_shadow_t *s)
     return s->reg_flow ? &s->q[s->head] : &s->r;
 }
 
-/* The index addresses of the offer stage A reads (u_offer): the register's, or the controller's. */
+/* The index addresses of the offer stage A reads (u_offer): the buffer's slot 0, or the
+ * controller's. */
 static const uint32_t *read_refs(const cosim_shadow_t *s)
 {
-    return s->reg_flow ? s->o_ref : s->ref;
+    return s->reg_flow ? s->o_ref[0] : s->ref;
 }
 
 void cosim_shadow_write_idx(cosim_shadow_t *s, uint32_t p, const uint32_t *hps, uint32_t n)
@@ -56,8 +57,8 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     s->nvalid = s->off.nvalid;
     for (int l = 0; l < s->nvalid; l++) s->ref[l] = s->off.ref[l] & IDX_MASK;
     const uint32_t ctl_valid = (1u << s->nvalid) - 1u;
-    /* The offer stage A reads (u_offer): the register's (reg_flow), else the controller's. */
-    const uint32_t o_valid = s->reg_flow ? s->o_valid : ctl_valid;
+    /* The offer stage A reads (u_offer): the buffer's slot 0 (reg_flow), else the controller's. */
+    const uint32_t o_valid = s->reg_flow ? s->o_valid[0] : ctl_valid;
     const uint32_t *o_ref = read_refs(s);
     /* Stage B (b_issue): a prefix of the live lanes (those A read last, or with reg_flow the
      * queue's head slot), each free of hazard, dup and bank. */
@@ -98,8 +99,10 @@ int cosim_shadow_eval(cosim_shadow_t *s)
     }
     s->a_valid = a_valid;
     s->a_rd = a_rd;
-    /* The controller is stalled until every lane of the offer A holds is read (a_all). */
-    s->stall = (a_valid & ~a_rd) != 0;
+    /* a_all: every lane of the offer A holds is read. The controller is stalled until then, or
+     * with reg_flow while the offer buffer is full. */
+    s->a_all = (a_valid & ~a_rd) == 0;
+    s->stall = s->reg_flow ? s->o_n == 2 : !s->a_all;
     /* Counter cause (stall_cause): the first blocked lane in B, else A's conflict, else starved. */
     if (iss != all && !cause) cause = live->a_short ? CNT_ABANK : CNT_STARVE;
     s->cause = cause;
@@ -153,11 +156,21 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
     } else if (!s->reg_flow) {
         s->r.pend &= ~s->iss;
     }
-    s->a_done = s->stall ? s->a_done | s->a_rd : 0;
-    /* Offer register (u_offer): takes the controller's offer once A has read all of its own. */
-    if (s->reg_flow && !s->stall) {
-        s->o_valid = (1u << s->nvalid) - 1u;
-        memcpy(s->o_ref, s->ref, sizeof s->o_ref);
+    s->a_done = s->a_all ? 0 : s->a_done | s->a_rd;
+    /* Offer buffer (u_offer): slot 0 is left once A has read all of it and slot 1 moves up; the
+     * controller's offer, taken while slot 1 is free, is stored when it has a lane. */
+    if (s->reg_flow) {
+        if (s->a_all && s->o_n > 0) {
+            s->o_valid[0] = s->o_valid[1];
+            memcpy(s->o_ref[0], s->o_ref[1], sizeof s->o_ref[0]);
+            s->o_valid[1] = 0;
+            s->o_n--;
+        }
+        if (!s->stall && s->nvalid > 0) {
+            s->o_valid[s->o_n] = (1u << s->nvalid) - 1u;
+            memcpy(s->o_ref[s->o_n], s->ref, sizeof s->o_ref[0]);
+            s->o_n++;
+        }
     }
     /* AFTSO-HpUOC edge: whole entries leave, the partial one is trimmed, the taken photons
      * are appended. */
@@ -167,7 +180,7 @@ void cosim_shadow_edge(cosim_shadow_t *s, int take, const uint32_t *n, const uin
 
 int cosim_shadow_idle(const cosim_shadow_t *s)
 {
-    if (s->buf.count || s->o_valid || s->r.pend || s->q[0].pend || s->q[1].pend) return 0;
+    if (s->buf.count || s->o_n || s->r.pend || s->q[0].pend || s->q[1].pend) return 0;
     for (int r = 0; r < s->win; r++)
         if (s->inf_n[r]) return 0;
     return 1;

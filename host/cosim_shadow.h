@@ -3,9 +3,10 @@
  * entries, EarlyReady, PhotonsPerCycle photons a cycle: the rule of model/pree/aftso_rule.h),
  * stage A (index-table reads in lane order, one per bank), stage B (issue a prefix of the pending
  * lanes: hazard in flight over the last win cycles (11 or 13; 49 or 53 with PipeFast 1), same
- * key, hit-point bank), with PipeFast 1's registered flow (A reads the controller's offer from a
- * register a cycle after taking it; B issues from a two-slot queue that R's lanes move into, and
- * A reads while R is empty or moves), and the RTL's short-cycle counters. Given the same photon
+ * key, hit-point bank), with PipeFast 1's registered flow (A reads the controllers' offers from
+ * a two-offer buffer, which takes one whenever its second slot is free; B issues from a two-slot
+ * queue that R's lanes move into, and A reads while R is empty or moves), and the RTL's
+ * short-cycle counters. Given the same photon
  * stream offered whenever ph_ready_o is high, it issues the same lanes in the same cycles as the
  * RTL, so its counters are the RTL's (up to the cycles before the first photon and after the
  * last issue), which `pree cosim --stats` reports beside the RTL's.
@@ -26,7 +27,8 @@
  *   cosim_shadow_leftover(s)   after eval: operations left in AFTSO-HpUOC after this cycle's
  *                              dispatch (what a photon taken now queues behind)
  *   cosim_shadow_idle(s)       nothing buffered, pending or in flight
- * Fields read by the scheduler: t (cycle), stall (after eval), iss_hp[0..n_iss) (the hit points
+ * Fields read by the scheduler: t (cycle), stall (after eval: the controller's offer is not
+ * taken in this cycle), iss_hp[0..n_iss) (the hit points
  * issued by the last edge), cnt[] (counters, numbered as cosim_rtl.h's CNT_*). */
 #ifndef PREE_COSIM_SHADOW_H
 #define PREE_COSIM_SHADOW_H
@@ -52,9 +54,10 @@ typedef struct {
     /* AFTSO-HpUOC buffer (entries {first index entry, operations left}) and its offer. */
     aftso_rule_t buf;
     aftso_rule_offer_t off;
-    /* reg_flow (PipeFast 1): the offer register's lanes and index addresses. */
-    int reg_flow;
-    uint32_t o_valid, o_ref[COSIM_MAX_PREU];
+    /* reg_flow (PipeFast 1): the offer buffer's o_n offers (slot 0 the one A reads), their
+     * lanes and index addresses. */
+    int reg_flow, o_n;
+    uint32_t o_valid[2], o_ref[2][COSIM_MAX_PREU];
     /* Stage A: lanes of the offer it reads already read; stage B: R, the lanes A read, and with
      * reg_flow the queue's two slots, of which B issues from the head. */
     uint32_t a_done;
@@ -67,7 +70,7 @@ typedef struct {
     uint32_t idx[1u << COSIM_IDXAW];           /* the index table as the host wrote it */
     /* Combinational values of the current cycle (eval). */
     uint32_t ref[COSIM_MAX_PREU], iss, a_rd, a_valid;
-    int nvalid, a_go, stall, ready, cause;
+    int nvalid, a_go, a_all, stall, ready, cause;
     uint64_t total;
     /* Results of the last edge and counters. */
     uint32_t iss_hp[COSIM_MAX_PREU];

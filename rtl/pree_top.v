@@ -14,8 +14,8 @@
 // Pipeline (a lane l of a stage feeds PREU l):
 //   A  the controller's offer, read in lane order, one lane per bank a cycle (pree_top_read):
 //      update, the index table; radiance, the hit-point memory. PipeFast 0: A reads the
-//      controller's outputs when B empties in this cycle. PipeFast 1: A reads the offer from a
-//      register (pree_top_offer) when R is empty or moves on (a register decision).
+//      controller's outputs when B empties in this cycle. PipeFast 1: A reads a two-offer buffer
+//      (pree_top_offer) when R is empty or moves on; the controllers' stall is its full flag.
 //   B  the read results (R) issue in lane order, a prefix of the pending lanes, each free of a
 //      hazard (its key, the hit point or the pixel, in flight), a same-key earlier lane and a
 //      same-bank one (pree_top_issue). Update: issue = the hit-point read; radiance: the PREU.
@@ -119,7 +119,7 @@ module pree_top #(
   localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
   localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
-  // PipeFast 1's registered flow control (public to the co-simulation host): A's offer register
+  // PipeFast 1's registered flow control (public to the co-simulation host): A's two-offer buffer
   // (pree_top_offer) and B's two-slot queue (pree_top_queue).
   localparam REG_FLOW /*verilator public*/ = (PipeFast != 0) ? 1 : 0;
   localparam A_REG   = REG_FLOW;
@@ -144,6 +144,7 @@ module pree_top #(
   // ===============================================================================================
   // Controllers.
   wire                      a_all;      // every lane of the current offer is read by now
+  wire                      a_full;     // the controllers' offer is not taken (their stall)
   wire [NumPreu-1:0]        af_valid, af_last;
   wire [NumPreu*IdxAW-1:0]  af_ref;
   wire [NumPreu*PH_W-1:0]   af_data;
@@ -158,7 +159,7 @@ module pree_top #(
     .clk_i(clk_i), .rst_ni(rst_ni),
     .in_valid_i(ph_valid_i & ~mode_i), .in_ready_o(af_ready), .in_data_i(ph_data_i),
     .in_id_i({PhotonsPerCycle{1'b0}}), .in_p_addr_i(ph_paddr_i), .in_n_i(ph_n_i),
-    .stall_i(mode_i | ~a_all), .lane_valid_o(af_valid), .lane_ref_addr_o(af_ref),
+    .stall_i(mode_i | a_full), .lane_valid_o(af_valid), .lane_ref_addr_o(af_ref),
     .lane_data_o(af_data), .lane_id_o(af_id_unused), .lane_last_o(af_last),
     .busy_o(af_busy_unused), .empty_o(af_empty));
 
@@ -170,7 +171,7 @@ module pree_top #(
 
   pree_adiso_rec #(.NumPreu(NumPreu), .PipeDepth(RAD_LAT), .AddrW(HpAW)) u_adiso (
     .clk_i(clk_i), .rst_ni(rst_ni), .start_i(rad_start_i), .n_hit_i(n_hit_i),
-    .stall_i(~mode_i | ~a_all), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
+    .stall_i(~mode_i | a_full), .addr_valid_o(ad_valid), .addr_o(ad_addr), .busy_o(ad_busy));
 
   // ===============================================================================================
   // Stage A: the controller's offer (PipeFast 1: registered, pree_top_offer), read in lane order,
@@ -186,7 +187,7 @@ module pree_top #(
 
   pree_top_offer #(.Reg(A_REG), .NumPreu(NumPreu), .IdxAW(IdxAW), .HpAW(HpAW), .HpBankW(HpBankW),
                    .BankW(ABANK_W), .DataW(PH_W)) u_offer (
-    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .take_i(a_all), .af_valid_i(af_valid),
+    .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .pop_i(a_all), .full_o(a_full), .af_valid_i(af_valid),
     .af_ref_i(af_ref), .af_last_i(af_last), .af_data_i(af_data), .ad_valid_i(ad_valid),
     .ad_addr_i(ad_addr), .valid_o(a_valid), .idx_o(a_idx), .hp_o(a_hp), .bank_o(a_bank),
     .last_o(a_last), .data_o(a_data));

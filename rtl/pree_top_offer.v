@@ -2,11 +2,13 @@
 // the controller's lanes (update: AFTSO-HpUOC's index-entry addresses and photons; radiance:
 // ADISO-REC's hit-point addresses) with each lane's bank (update: the index table's, the address
 // mod NumPreu; radiance: the hit-point memory's, hp_bank of the address).
-// Reg = 1 (PipeFast 1): the offer is taken into a register when stage A has read every lane of
-// the one it holds (take_i, pree_top_read's all_o), and A reads from the register a cycle
-// later. So a controller's offer is taken in the same cycle as without the register (its
-// stall_i is ~take_i either way), and A's read plan starts from flip-flops instead of the
-// controllers' outputs. Reg = 0: the controller's lanes as they come.
+// Reg = 1 (PipeFast 1): a two-offer buffer. Slot 0 is the offer A reads (from flip-flops); slot 1
+// holds one more. The controller's offer is taken whenever slot 1 is free (full_o low, a
+// register), and stored when it has a valid lane; A leaves slot 0 once it has read every lane of
+// it (pop_i, pree_top_read's all_o), and slot 1 or the offer taken in that cycle moves up. So
+// neither controller waits on A's read plan in the same cycle: their stall is a flip-flop.
+// Reg = 0: the controller's lanes as they come, taken once A has read all of them
+// (full_o = ~pop_i).
 `default_nettype none
 
 module pree_top_offer #(
@@ -21,7 +23,8 @@ module pree_top_offer #(
   input  wire                       clk_i,
   input  wire                       rst_ni,
   input  wire                       mode_i,   // 0 update, 1 radiance
-  input  wire                       take_i,   // A has read every lane of the offer it holds
+  input  wire                       pop_i,    // A has read every lane of the offer it holds
+  output wire                       full_o,   // the controllers' offer is not taken (their stall)
   // AFTSO-HpUOC's offer (update) and ADISO-REC's (radiance).
   input  wire [NumPreu-1:0]         af_valid_i,
   input  wire [NumPreu*IdxAW-1:0]   af_ref_i,
@@ -65,32 +68,55 @@ module pree_top_offer #(
   wire [NumPreu*ADDR_W-1:0] addr_a;   // the addresses A reads, split by kind below
   generate
     if (Reg != 0) begin : g_reg
-      reg [NumPreu-1:0]        valid_q;
-      reg [NumPreu*ADDR_W-1:0] addr_q;
-      reg [NumPreu*BankW-1:0]  bank_q;
-      reg [NumPreu-1:0]        last_q;
-      reg [NumPreu*DataW-1:0]  data_q;
+      // Slot k: occupied (occ_q[k]), lanes, addresses, banks, last flags, photons (slot 0 *0_q,
+      // slot 1 *1_q). Slot 1 is occupied only with slot 0.
+      reg [1:0]                occ_q;
+      reg [NumPreu-1:0]        valid0_q, valid1_q, last0_q, last1_q;
+      reg [NumPreu*ADDR_W-1:0] addr0_q, addr1_q;
+      reg [NumPreu*BankW-1:0]  bank0_q, bank1_q;
+      reg [NumPreu*DataW-1:0]  data0_q, data1_q;
+      wire push   = ~occ_q[1] & (|valid);         // an offer with a lane, taken
+      wire pop    = pop_i & occ_q[0];
+      wire load0  = ~occ_q[0] | pop;              // slot 0 takes slot 1's offer, or the new one
+      wire load1  = occ_q[0] & ~pop & push;       // the new offer waits behind slot 0's
       always @(posedge clk_i or negedge rst_ni) begin
-        if (!rst_ni)     valid_q <= {NumPreu{1'b0}};
-        else if (take_i) valid_q <= valid;
-      end
-      always @(posedge clk_i) begin
-        if (take_i) begin
-          addr_q <= addr;
-          bank_q <= bank;
-          last_q <= af_last_i;
-          data_q <= af_data_i;
+        if (!rst_ni) begin
+          occ_q    <= 2'b00;
+          valid0_q <= {NumPreu{1'b0}};
+        end else begin
+          if (load0) begin
+            occ_q[0] <= occ_q[1] | push;
+            valid0_q <= occ_q[1] ? valid1_q : valid;
+          end
+          occ_q[1] <= load1 | (occ_q[1] & ~pop);
         end
       end
-      assign valid_o = valid_q;
-      assign addr_a  = addr_q;
-      assign bank_o  = bank_q;
-      assign last_o  = last_q;
-      assign data_o  = data_q;
+      always @(posedge clk_i) begin
+        if (load0) begin
+          addr0_q <= occ_q[1] ? addr1_q : addr;
+          bank0_q <= occ_q[1] ? bank1_q : bank;
+          last0_q <= occ_q[1] ? last1_q : af_last_i;
+          data0_q <= occ_q[1] ? data1_q : af_data_i;
+        end
+        if (load1) begin
+          valid1_q <= valid;
+          addr1_q  <= addr;
+          bank1_q  <= bank;
+          last1_q  <= af_last_i;
+          data1_q  <= af_data_i;
+        end
+      end
+      assign full_o  = occ_q[1];
+      assign valid_o = valid0_q;
+      assign addr_a  = addr0_q;
+      assign bank_o  = bank0_q;
+      assign last_o  = last0_q;
+      assign data_o  = data0_q;
     end else begin : g_pass
       /* verilator lint_off UNUSEDSIGNAL */
-      wire unused = &{1'b0, clk_i, rst_ni, take_i};
+      wire unused = &{1'b0, clk_i, rst_ni};
       /* verilator lint_on UNUSEDSIGNAL */
+      assign full_o  = ~pop_i;
       assign valid_o = valid;
       assign addr_a  = addr;
       assign bank_o  = bank;

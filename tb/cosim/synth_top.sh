@@ -4,7 +4,8 @@
 # latch or a combinational loop; writes the resource table to OUTDIR/resources.md (the whole
 # design, pree_top's own logic, the controllers, the rest: 4 PREUs with their fp32 units and the
 # block RAMs), the mapped netlist to OUTDIR/netlist.json and the logic depth of pree_top's own
-# paths (tb/cosim/synth_top_depth.py) to OUTDIR/depth.md.
+# paths (tb/cosim/synth_top_depth.py) to OUTDIR/depth.md, the controllers' paths included (their
+# netlists joined to the top's at their ports, --inline).
 # pree_ram_banks (the banks' request logic), pree_counters and pree_top's parts (pree_top_offer,
 # _read, _queue, _issue, _hpmem and _pxmem) are flattened into pree_top, so that their logic
 # counts as pree_top's own and its paths are measured whole; the RAMs, PREUs and controllers stay
@@ -53,6 +54,6 @@ row() {
 } > "$out/resources.md"
 cat "$out/resources.md"
 if command -v python3 >/dev/null; then
-  python3 tb/cosim/synth_top_depth.py "$out/netlist.json" > "$out/depth.md"
+  python3 tb/cosim/synth_top_depth.py --inline pree_aftso_hpuoc,pree_adiso_rec "$out/netlist.json" > "$out/depth.md"
   cat "$out/depth.md"
 fi

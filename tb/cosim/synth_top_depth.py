@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """synth_top_depth.py: logic depth of pree_top's own paths in a Yosys synth_xilinx netlist.
 
-Usage: synth_top_depth.py NETLIST.json [MODULE]   (MODULE: default pree_top)
+Usage: synth_top_depth.py [--inline SUB,...] NETLIST.json [MODULE]   (MODULE: default pree_top)
 Prints a Markdown table: for each group of path endpoints in MODULE (a register, or an input
 of a sub-module such as a PREU, a controller or a RAM bank), the most LUT levels and the most
 cells (LUT + CARRY4 + MUXF7/8) on any path ending there, and where that path starts.
@@ -9,6 +9,9 @@ cells (LUT + CARRY4 + MUXF7/8) on any path ending there, and where that path sta
 Method: MODULE is read with its hierarchy kept, so its paths are its own logic. A path starts
 at a flip-flop output (FD*), an output of a sub-module instance (PREU, controller, RAM bank),
 or a module input, and ends at a flip-flop input, a sub-module input or a module output.
+--inline names sub-modules (by a part of the module name, e.g. pree_aftso_hpuoc) whose paths
+join MODULE's: a path then runs through the instance's ports, from the registers on one side
+to those on the other, as the two netlists were mapped (no logic optimised across the port).
 Every combinational cell is traversed from each input bit to each output bit (conservative for
 CARRY4: one level per CARRY4 of a chain). Endpoints are grouped by name with bit and generate
 indices removed (g_hp[3].u_state.raddr_i[5] -> g_hp[*].u_state.raddr_i). These are logic
@@ -39,65 +42,82 @@ def group(name):
     return re.sub(r"\[\d+\]", "[*]", name).replace("\\", "")
 
 
-def main():
-    if len(sys.argv) not in (2, 3):
-        raise SystemExit(__doc__)
-    top = sys.argv[2] if len(sys.argv) == 3 else "pree_top"
-    with open(sys.argv[1]) as f:
-        mod = json.load(f)["modules"][top]
-
-    # A readable name per bit (prefer public names, then the shortest).
-    bitname = {}
+def build(mods, name, pfx, inline, g):
+    """Adds module `name`'s cells to graph g, its bits keyed (pfx, bit). Instances of modules
+    whose name contains a string of `inline` are entered (their paths join the caller's);
+    others are boundaries. Returns the module's port bits: {port: [key, ...]}."""
+    mod = mods[name]
+    key = lambda b: (pfx, b)
     for n, info in mod["netnames"].items():
         hidden = info.get("hide_name", 0) or n.startswith("$")
         for i, b in enumerate(info["bits"]):
             if isinstance(b, str):
                 continue
-            label = n if len(info["bits"]) == 1 else "%s[%d]" % (n, i)
-            key = (hidden, len(label))
-            if b not in bitname or key < bitname[b][0]:
-                bitname[b] = (key, label)
-
-    def nm(b):
-        return bitname[b][1] if b in bitname else "net%s" % b
-
-    driver = {}        # bit -> (cell type, input bits) for combinational cells
-    start = set()      # bits at which paths start
-    ends = []          # (group name, bit)
-    for p, info in mod["ports"].items():
-        for b in info["bits"]:
-            if isinstance(b, str):
-                continue
-            if info["direction"] == "input":
-                start.add(b)
-            else:
-                ends.append((group(p), b))
+            label = pfx + (n if len(info["bits"]) == 1 else "%s[%d]" % (n, i))
+            rank = (hidden, label.count(".") - pfx.count("."), len(label))
+            if key(b) not in g["bitname"] or rank < g["bitname"][key(b)][0]:
+                g["bitname"][key(b)] = (rank, label)
     for cname, c in mod["cells"].items():
         t = c["type"]
         dirs = c.get("port_directions", {})
-        ins = [b for p, bs in c["connections"].items() if dirs.get(p) == "input" for b in bs
-               if not isinstance(b, str)]
-        outs = [b for p, bs in c["connections"].items() if dirs.get(p) == "output" for b in bs
-                if not isinstance(b, str)]
+        conn = {p: [key(b) for b in bs if not isinstance(b, str)] for p, bs in c["connections"].items()}
+        ins = [b for p, bs in conn.items() if dirs.get(p) == "input" for b in bs]
+        outs = [b for p, bs in conn.items() if dirs.get(p) == "output" for b in bs]
+        sub = t.lstrip("\\")
         if LUT.match(t) or t in COMB or t in WIRE:
             for b in outs:
-                driver[b] = (t, ins)
+                g["driver"][b] = (t, ins)
         elif FF.match(t):
             for b in outs:
-                start.add(b)
-            q = [b for b in c["connections"].get("Q", []) if not isinstance(b, str)]
-            reg = group(nm(q[0])) if q else group(cname)
+                g["start"].add(b)
+            q = conn.get("Q", [])
+            reg = group(g["bitname"][q[0]][1]) if q and q[0] in g["bitname"] else group(pfx + cname)
             for b in ins:
-                ends.append((reg, b))
+                g["ends"].append((reg, b))
+        elif t in mods and any(m in sub for m in inline):
+            inner = build(mods, t, pfx + group(cname).split(".")[-1] + ".", inline, g)
+            for p, bs in conn.items():
+                for outer, innerb in zip(bs, inner.get(p, [])):
+                    if dirs.get(p) == "input":
+                        g["driver"][innerb] = ("BUF", [outer])
+                    else:
+                        g["driver"][outer] = ("BUF", [innerb])
         else:   # a sub-module or a RAM primitive: a boundary
             for b in outs:
-                start.add(b)
-            inst = group(cname)
-            for p, bs in c["connections"].items():
+                g["start"].add(b)
+            inst = group(pfx + cname)
+            for p, bs in conn.items():
                 if dirs.get(p) == "input":
                     for b in bs:
-                        if not isinstance(b, str):
-                            ends.append(("%s.%s" % (inst, p), b))
+                        g["ends"].append(("%s.%s" % (inst, p), b))
+    return {p: [key(b) for b in info["bits"] if not isinstance(b, str)]
+            for p, info in mod["ports"].items()}
+
+
+def main():
+    args = sys.argv[1:]
+    inline = []
+    if len(args) >= 2 and args[0] == "--inline":
+        inline = args[1].split(",")
+        args = args[2:]
+    if len(args) not in (1, 2):
+        raise SystemExit(__doc__)
+    top = args[1] if len(args) == 2 else "pree_top"
+    with open(args[0]) as f:
+        mods = json.load(f)["modules"]
+
+    g = {"driver": {}, "start": set(), "ends": [], "bitname": {}}
+    ports = build(mods, top, "", inline, g)
+    for p, info in mods[top]["ports"].items():
+        for b in ports[p]:
+            if info["direction"] == "input":
+                g["start"].add(b)
+            else:
+                g["ends"].append((group(p), b))
+    driver, start, ends, bitname = g["driver"], g["start"], g["ends"], g["bitname"]
+
+    def nm(b):
+        return bitname[b][1] if b in bitname else "net%s" % (b,)
 
     memo = {}
 

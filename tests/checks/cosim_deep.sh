@@ -5,8 +5,8 @@
 # (the image only when the model adds in the order of ADISO-REC's depth 64), the scheduler's cycle
 # model must predict the RTL's hazard, same-key and bank-conflict counts exactly, and the update
 # hazard window must be PipeFast 1's (49). Measured (spatial layout, 64 x NumPreu lead; the top's
-# registered flow: A's offer register, B's two-slot queue): 69,320 update cycles, utilization
-# 0.99412, hazard stalls 211, bank 6 (PipeFast 0, cosim_schedule.sh: 68,999 cycles, 0.99874, 2).
+# registered flow: A's two-offer buffer, B's two-slot queue): 69,323 update cycles, utilization
+# 0.99407, hazard stalls 211, bank 6 (PipeFast 0, cosim_schedule.sh: 68,999 cycles, 0.99874, 2).
 set -u
 cd "$(dirname "$0")/../.."
 pree=${BUILD:-build}/pree
