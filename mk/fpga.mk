@@ -13,7 +13,8 @@
 #                         `make synth-fp32` ($(BUILD)/fp32/synth/resources.md) into docs/fpga.md
 #                         (between its generated-table markers)
 #   make fpga-timing FPGA_CONFIGS="add_fast div_s12"   some configurations only (then the
-#                         tables go to $(BUILD)/fpga only; docs/fpga.md is left as it is)
+#                         tables go to $(BUILD)/fpga only; docs/fpga.md is left as it is);
+#                         FPGA_CONFIGS=aftso: the dispatcher AFTSO-HpUOC (not in FPGA_ALL)
 #   FPGA_FREQ=125 FPGA_SEED=1   nextpnr's target frequency (MHz) and placer seed
 
 FPGA_DIR      := $(BUILD)/fpga

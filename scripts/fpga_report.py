@@ -23,9 +23,12 @@ def seam_of(cell):
     (data[0] is the seam's input, the previous seam's output), or the unit's s<k>_* wire
     (seam k's output); the wrapper's own registers are "input reg" and "output reg"."""
     name = re.sub(r"_TRELLIS_FF.*$", "", cell)
-    if name.startswith("u_preu."):                     # pree_fpga_preu_wrap: the PREU's path
-        return name[len("u_preu."):]
-    if re.match(r"(in_q|mode_q|valid_q)\b", name):
+    for inst in ("u_preu.", "u_aftso."):               # the PREU's or the dispatcher's path
+        if name.startswith(inst):
+            return name[len(inst):]
+    if cell.startswith("u_fold.g_fold[0].src_") and "_DI_" in cell:   # named after a chain of
+        return "register"                              # cells from the fold's input: not recoverable
+    if re.match(r"(in_q|mode_q|valid_q|stall_q)\b", name):
         return "input reg"
     if re.match(r"(out_q|g_fold)", name):
         return "output reg"
@@ -56,7 +59,7 @@ def main():
         raise SystemExit("usage: fpga_report.py <config> <synth.json> <report.json> <stat.txt>")
     cfg, synth, report, stat = sys.argv[1:]
     mods = json.load(open(synth))["modules"]
-    top = "pree_fpga_preu_wrap" if "pree_fpga_preu_wrap" in mods else "pree_fpga_wrap"
+    top = next(t for t in ("pree_fpga_preu_wrap", "pree_fpga_aftso_wrap", "pree_fpga_wrap") if t in mods)
     cells = mods[top]["cells"]
     types = {name: c["type"] for name, c in cells.items()}
     rep = json.load(open(report))

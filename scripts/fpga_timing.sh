@@ -4,7 +4,8 @@
 #   config: <unit> (the paper's configuration), <unit>_fast (PipeFast = 1), or <unit>_s<N>
 #   (Stages = N); unit = add mul sqr div wacc u2f; div8 = div_s8; preu, preu_fast: one PREU (paper
 #   datapath) between registers (tb/fpga/pree_fpga_preu_wrap.v: inputs from a scan register,
-#   outputs folded to one pin), in the paper's and the deep configuration.
+#   outputs folded to one pin), in the paper's and the deep configuration; aftso: the dispatcher
+#   AFTSO-HpUOC with pree_top's widths (NumPreu 4), the same way (tb/fpga/pree_fpga_aftso_wrap.v).
 # Flow: Yosys synth_ecp5 of tb/fpga/pree_fpga_wrap.v (the unit between input and output
 # registers; PREE_ECP5_DSP defined, so that the multipliers' products sit in MULT18X18D
 # primitives with their own input and output registers, rtl/pree_fp32_dsp_mul.v), then
@@ -25,13 +26,17 @@ case $cfg in
   *_s[0-9]*) unit=${cfg%_s*}; stages=${cfg##*_s} ;;
   *)        unit=$cfg ;;
 esac
-case $unit in add|mul|sqr|div|wacc|u2f|preu) ;; *) echo "fpga_timing: unknown unit in $cfg" >&2; exit 2 ;; esac
+case $unit in add|mul|sqr|div|wacc|u2f|preu|aftso) ;; *) echo "fpga_timing: unknown unit in $cfg" >&2; exit 2 ;; esac
 cd "$(dirname "$0")/.."
 mkdir -p "$out"
 rtl="$(ls rtl/pree_fp32_*.v | tr '\n' ' ')rtl/pree_wacc.v rtl/pree_u64_to_f32.v"
-if [ "$unit" = preu ]; then
+if [ "$unit" = aftso ]; then
+  top=pree_fpga_aftso_wrap
+  rtl="rtl/pree_aftso_hpuoc.v tb/fpga/pree_fpga_fold.v tb/fpga/pree_fpga_aftso_wrap.v"
+  params=""
+elif [ "$unit" = preu ]; then
   top=pree_fpga_preu_wrap
-  rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_preu_wrap.v"
+  rtl="$rtl rtl/pree_preu.v tb/fpga/pree_fpga_fold.v tb/fpga/pree_fpga_preu_wrap.v"
   params="chparam -set PipeFast $pipefast $top"
   pnr_opts=${FPGA_PNR_OPTS---placer-heap-timingweight 25}
   # Each unit keeps its own operand register (seam 0, InRegs): lanes whose operands are the same

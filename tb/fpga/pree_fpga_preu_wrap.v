@@ -59,28 +59,10 @@ module pree_fpga_preu_wrap #(
     .lreq_o(lreq), .lreq_tag_o(lreq_tag), .valid_o(vout), .tag_o(tag), .accept_o(acc),
     .state_o(state), .l_o(l), .busy_o(busy));
 
-  // Output registers, then the XOR tree: each level folds groups of four bits into one register.
+  // Output registers, then the XOR tree (pree_fpga_fold).
   reg [OUT_W-1:0] out_q;
   always @(posedge clk_i) out_q <= {lreq, lreq_tag, vout, tag, acc, state, l, busy};
 
-  localparam LEVELS = 6;   // 4^6 = 4096 >= OUT_W
-  genvar gv, gi;
-  generate
-    for (gv = 0; gv < LEVELS; gv = gv + 1) begin : g_fold
-      localparam IN_N  = (OUT_W + (1 << (2 * gv)) - 1) >> (2 * gv);   // bits into this level
-      localparam OUT_N = (IN_N + 3) / 4;
-      wire [4*OUT_N-1:0] src;
-      reg  [OUT_N-1:0]   q;
-      if (gv == 0) begin : g_src0
-        assign src = {{(4 * OUT_N - OUT_W){1'b0}}, out_q};
-      end else begin : g_srcn
-        assign src = {{(4 * OUT_N - IN_N){1'b0}}, g_fold[gv-1].q};
-      end
-      for (gi = 0; gi < OUT_N; gi = gi + 1) begin : g_xor
-        always @(posedge clk_i) q[gi] <= ^src[4*gi +: 4];
-      end
-    end
-  endgenerate
-  assign fold_o = g_fold[LEVELS-1].q[0];
+  pree_fpga_fold #(.W(OUT_W)) u_fold (.clk_i(clk_i), .d_i(out_q), .fold_o(fold_o));
 
 endmodule
