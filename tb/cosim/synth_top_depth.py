@@ -54,7 +54,7 @@ def build(mods, name, pfx, inline, g):
             if isinstance(b, str):
                 continue
             label = pfx + (n if len(info["bits"]) == 1 else "%s[%d]" % (n, i))
-            rank = (hidden, label.count(".") - pfx.count("."), len(label))
+            rank = (hidden, len(label))
             if key(b) not in g["bitname"] or rank < g["bitname"][key(b)][0]:
                 g["bitname"][key(b)] = (rank, label)
     for cname, c in mod["cells"].items():
@@ -63,7 +63,6 @@ def build(mods, name, pfx, inline, g):
         conn = {p: [key(b) for b in bs if not isinstance(b, str)] for p, bs in c["connections"].items()}
         ins = [b for p, bs in conn.items() if dirs.get(p) == "input" for b in bs]
         outs = [b for p, bs in conn.items() if dirs.get(p) == "output" for b in bs]
-        sub = t.lstrip("\\")
         if LUT.match(t) or t in COMB or t in WIRE:
             for b in outs:
                 g["driver"][b] = (t, ins)
@@ -74,7 +73,7 @@ def build(mods, name, pfx, inline, g):
             reg = group(g["bitname"][q[0]][1]) if q and q[0] in g["bitname"] else group(pfx + cname)
             for b in ins:
                 g["ends"].append((reg, b))
-        elif t in mods and any(m in sub for m in inline):
+        elif t in mods and any(m in t for m in inline):
             inner = build(mods, t, pfx + group(cname).split(".")[-1] + ".", inline, g)
             for p, bs in conn.items():
                 for outer, innerb in zip(bs, inner.get(p, [])):
