@@ -4,9 +4,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "cosim_reorder.h"
 #include "cosim_sched.h"
 #include "cosim_shadow.h"
-#include "hp_bank.h"
 
 #define IDX_DEPTH (1u << COSIM_IDXAW)
 #define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
@@ -47,8 +47,7 @@ struct cosim_drv {
     int closed;                        /* the scheduler has sent everything (drain) */
     uint64_t rng;
     uint64_t ops;
-    int recent[COSIM_MAX_PREU];        /* hit-point banks of the last NumPreu-1 operations */
-    int nrecent;
+    cosim_reorder_t ro;                /* the unscheduled stream's candidate order */
     uint32_t *cand;                    /* reorder scratch */
     cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
     int started;                       /* a photon has been offered */
@@ -79,6 +78,7 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->rtl = rtl;
     d->in = rtl ? cosim_rtl_in(rtl) : NULL;
     d->opt = *opt;
+    d->ro = (cosim_reorder_t){.np = opt->preu, .bank_w = opt->hp_bank_w, .on = opt->reorder};
     d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
     d->ready = rtl ? cosim_rtl_ph_ready(rtl) : 0;
     d->ppc = rtl ? cosim_rtl_ppc(rtl) : opt->ppc;
@@ -220,35 +220,6 @@ static void pump(cosim_drv_t *d)
     d->ready = cosim_rtl_ph_ready(d->rtl);
 }
 
-/* Order a photon's candidates: each next one, where possible, in a bank none of the last
- * NumPreu-1 operations used. */
-static int hp_bank(const cosim_drv_t *d, uint32_t a) { return (int)pree_hp_bank(a, d->opt.hp_bank_w); }
-
-static void reorder(cosim_drv_t *d, const uint32_t *hps, size_t n)
-{
-    const int np = d->opt.preu;
-    memcpy(d->cand, hps, n * sizeof *hps);
-    for (size_t k = 0; k < n; k++) {
-        size_t pick = k;
-        if (d->opt.reorder) {
-            for (size_t c = k; c < n; c++) {
-                int bank = hp_bank(d, d->cand[c]), clash = 0;
-                for (int r = 0; r < d->nrecent; r++) clash |= d->recent[r] == bank;
-                if (!clash) { pick = c; break; }
-            }
-            uint32_t t = d->cand[k]; d->cand[k] = d->cand[pick]; d->cand[pick] = t;
-        }
-        /* Remember the bank in the window of the last NumPreu-1 operations. */
-        if (np > 1) {
-            if (d->nrecent == np - 1) {
-                memmove(d->recent, d->recent + 1, (size_t)(np - 2) * sizeof *d->recent);
-                d->nrecent--;
-            }
-            d->recent[d->nrecent++] = hp_bank(d, d->cand[k]);
-        }
-    }
-}
-
 /* A wait (named by state) that has lasted the wait limit: the RTL is not making progress. Sets
  * the error, naming the wait and the stream's state (and d->hung, which every later call
  * reports), and returns 1. */
@@ -331,7 +302,7 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
     const int r = cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, d->err, sizeof d->err);
     if (r < 0) return -1;
     if (r == 1) {
-        reorder(d, hps, n);
+        cosim_reorder(&d->ro, d->cand, hps, n);
         send(d, ph, n, 1, 0);
     }
     return d->hung ? -1 : 0;

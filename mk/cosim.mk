@@ -65,7 +65,7 @@ COSIM_VLRT   := verilated verilated_fst_c verilated_threads
 COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isystem $(VERILATOR_ROOT_DIR)/include/vltstd \
                 -DVM_COVERAGE=0 -DVM_SC=0 -DVM_TRACE=1 -DVM_TRACE_FST=1 -DVM_TRACE_VCD=0 -faligned-new
 HOST_DIR     := $(BUILD)/host
-HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
+HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_reorder.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 # The programs' own (pree cosim's command line, comparisons, outputs and the board of PREEs).
 COSIM_MAIN_OBJS := $(foreach m,args compare dist layout outputs,$(HOST_DIR)/cosim_$(m).o)
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
