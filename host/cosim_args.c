@@ -27,6 +27,10 @@ static void cosim_usage(FILE *f)
         "  --stats FILE.json      comparison, SSIM/SNR, cycles, utilization, stalls, speed\n"
         "  --no-reference         skip the double render (no SSIM/SNR)\n"
         "  --no-reorder           stream each photon's candidates in the engine's order\n"
+        "  --refilter             at the engine's re-filter points (after photon blocks 1, 2, 4,\n"
+        "                         ...) read the radii back from the PREE and re-filter the grid\n"
+        "                         with them: fewer operations, a read-back cycle a hit point\n"
+        "                         (docs/engine.md, \"The co-simulation host's re-filter\")\n"
         "  --no-schedule          stream photons in photon order (default: the host's scheduler\n"
         "                         reorders photons that share no hit point, against stalls)\n"
         "  --window W             photons the scheduler holds pending (default 128; " WINDOW_16_STR " with\n"
@@ -46,7 +50,8 @@ static void cosim_usage(FILE *f)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST, OPT_LAYOUT };
+       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST, OPT_LAYOUT,
+       OPT_REFILTER };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -63,6 +68,7 @@ static const struct option cosim_longopts[] = {
     {"axi", no_argument, NULL, OPT_AXI},
     {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
     {"layout", required_argument, NULL, OPT_LAYOUT},
+    {"refilter", no_argument, NULL, OPT_REFILTER},
     {NULL, 0, NULL, 0}
 };
 
@@ -83,6 +89,7 @@ int cosim_parse_args(int argc, char **argv, int axi_program, render_options_t *o
         case OPT_NO_REFERENCE: c->reference = 0; break;
         case OPT_NO_REORDER: c->reorder = 0; break;
         case OPT_NO_SCHEDULE: c->schedule = 0; break;
+        case OPT_REFILTER: c->refilter = 1; break;
         case OPT_WINDOW: if (cli_int(&a, 1, 4096, &v)) return 2; c->window = (int)v; break;
         case OPT_TRACE: c->trace = a.val; break;
         case OPT_TRACE_WINDOW: {

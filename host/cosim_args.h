@@ -11,6 +11,7 @@ typedef struct {
     const char *scene, *stats, *out, *trace;
     int reference, reorder, schedule, window, model_only, axi, pipefast;
     int pixel_layout;                  /* --layout pixel */
+    int refilter;                      /* --refilter: radii read back at the engine's re-filter points */
     uint64_t win_from, win_to;         /* --trace-window */
     double gap;
 } cosim_args_t;

@@ -317,7 +317,7 @@ int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
 
 /* Everything queued, then a photon with N^P = 0 and TLAST (dropped by the wrapper) closes the
  * batch: its interrupt comes once every photon is applied. */
-int cosim_drv_drain(cosim_drv_t *d)
+int cosim_drv_barrier(cosim_drv_t *d)
 {
     if (d->hung) return -1;
     if (d->sched && cosim_sched_flush(d->sched)) return fail(d, "photon scheduler: out of memory");
@@ -325,7 +325,15 @@ int cosim_drv_drain(cosim_drv_t *d)
     send(d, &none, NULL, 0, 1);
     if (wait_irq(d, IRQ_BATCH)) return -1;
     lite_write(d, R_CTRL, 0);
+    d->started = 0;   /* the next photon starts the counters again */
+    d->blk_n = 0;     /* hit points read back before are stale */
     if (!(lite_read(d, R_STATUS) & 1)) return fail(d, "batch interrupt before STATUS.idle");
+    return 0;
+}
+
+int cosim_drv_drain(cosim_drv_t *d)
+{
+    if (cosim_drv_barrier(d)) return -1;
     if (lite_read(d, R_PH_IN) != (uint32_t)d->ph_sent || lite_read(d, R_CAND_IN) != (uint32_t)d->cand_sent)
         return fail(d, "PH_IN or CAND_IN differs from the photons and candidates sent");
     /* An unknown command is refused and flagged in ERR (bit 0, write 1 to clear). */

@@ -50,7 +50,8 @@ struct cosim_drv {
     cosim_reorder_t ro;                /* the unscheduled stream's candidate order */
     uint32_t *cand;                    /* reorder scratch */
     cosim_sched_t *sched;              /* photon scheduler, or NULL (photon order) */
-    int started;                       /* a photon has been offered */
+    int started;                       /* a photon has been offered (since the last barrier) */
+    uint64_t lead_from;                /* iq_head when the stream (re)started: the lead counts from it */
     uint64_t offset;                   /* scheduled: RTL cycle - model cycle of the first group */
     int have_offset;
     uint64_t groups_late, max_lag;     /* groups taken in another cycle than offset + the model's */
@@ -199,7 +200,8 @@ static void pump(cosim_drv_t *d)
          * queued one), so that the load port (NumPreu entries a cycle, the RTL's rate at full
          * utilization) starts with a lead and the RTL then takes each group in the cycle the
          * scheduler's model took it (a constant offset). */
-        int lead = !d->sched || d->started || d->iq_head == d->iq_tail || d->iq_head >= LEAD_ENTRIES(np);
+        int lead = !d->sched || d->started || d->iq_head == d->iq_tail ||
+                   d->iq_head - d->lead_from >= LEAD_ENTRIES(np);
         k = lead && !gap ? offer_count(d) : 0;
         for (int j = 0; j < d->ppc; j++) {
             const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)j) & (PQ_CAP - 1)];
@@ -344,6 +346,16 @@ int cosim_drv_drain(cosim_drv_t *d)
     d->in->cnt_en = 0;
     cosim_rtl_tick(d->rtl);
     return 0;
+}
+
+int cosim_drv_barrier(cosim_drv_t *d)
+{
+    const int rc = cosim_drv_drain(d);
+    d->closed = 0;        /* the scheduler's groups wait for their photons again */
+    d->started = 0;       /* the next photon waits for the load port's lead, as the first did */
+    d->lead_from = d->iq_head;
+    d->have_offset = 0;   /* and sets the model's lag anew (the read-back lies between) */
+    return rc;
 }
 
 void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n)

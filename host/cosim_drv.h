@@ -15,6 +15,8 @@
  *                                 With schedule set, the photon goes to the scheduler
  *                                 (cosim_sched.h), which picks the stream order.
  *   cosim_drv_drain(d)            send everything queued and wait until the PREE is idle
+ *   cosim_drv_barrier(d)          the same between two photon blocks: more photons may follow
+ *                                 (the host reads hit points back in between; pree_axi: a batch)
  *   cosim_drv_read_hp(d, i, hp, pixel)  read hit point i back (one model cycle)
  *   cosim_drv_radiance(d, n_hit, ne, npix, L)  clear npix pixels, run the radiance pass over
  *                                 [0, n_hit) with N_emitted = ne, read the pixels into L;
@@ -72,6 +74,7 @@ const char *cosim_drv_error(const cosim_drv_t *d);
 void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixel, size_t n);
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n);
 int cosim_drv_drain(cosim_drv_t *d);
+int cosim_drv_barrier(cosim_drv_t *d);
 void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pixel);
 int cosim_drv_radiance(cosim_drv_t *d, uint32_t n_hit, uint32_t ne, size_t npix, uint32_t *L);
 void cosim_drv_counters(cosim_drv_t *d, uint64_t cnt[COSIM_NCNT]);

@@ -19,6 +19,7 @@
 #include "cosim_drv.h"
 #include "cosim_layout.h"
 #include "cosim_outputs.h"
+#include "cosim_refilter.h"
 #include "cosim_report.h"
 #include "cosim_sched.h"
 #include "cosim_shadow.h"
@@ -241,8 +242,9 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
 }
 
 /* The engine's photon blocks and the RTL, driven from this loop: each block's operations (the
- * candidates that pass the host's tests) go to the RTL after the model applied them; then the
- * RTL drains. 0, or 1 on a failure (its message printed). */
+ * candidates that pass the host's tests) go to the RTL after the model applied them; at the
+ * engine's re-filter points the host reads the radii back (cosim_refilter.h); then the RTL
+ * drains. 0, or 1 on a failure (its message printed). */
 static int run_update(cosim_run_t *r)
 {
     char err[1024];
@@ -255,8 +257,12 @@ static int run_update(cosim_run_t *r)
     }
     if (rc == 0 && !r->c.model_only)
         rc = load_hit_points(&r->ctx, &r->res.hp, r->part.addr, r->part.n_local, err, sizeof err);
-    while (rc == 0 && render_step(rs, err, sizeof err) > 0)
+    while (rc == 0 && render_step(rs, err, sizeof err) > 0) {
         if (stream_block(&r->ctx, render_block_ops(rs), r->part.addr, &r->abuf, &r->acap)) { streamed = -1; break; }
+        if (r->c.refilter && cosim_refilter(r->ctx.drv, rs, &r->res.hp, &r->part, r->dp, r->c.model_only,
+                                            &r->rep.refilter, err, sizeof err))
+            rc = -1;
+    }
     if (rs) {
         int rc2 = render_close(rs, err, sizeof err);
         if (rc == 0) rc = rc2;

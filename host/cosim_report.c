@@ -60,7 +60,8 @@ static const json_field_t run_fields[] = {
 static const json_field_t out_fields[] = {
     R(photons_sent, JF_U64, "photon_hits_streamed"), R(photons_empty, JF_U64, "photon_hits_without_operations"),
     R(hp_diff, JF_U64, "hp_words_differing"), R(hp_diff_points, JF_U64, "hp_points_differing"),
-    R(img_diff, JF_U64, "image_words_differing"),
+    R(img_diff, JF_U64, "image_words_differing"), R(refilter.refilters, JF_U64, "host_refilters"),
+    R(refilter.hit_points_read, JF_U64, "refilter_hit_points_read"),
 };
 static const json_field_t metric_fields[] = {
     R(m.ssim, JF_REAL, "ssim_vs_double"), R(m.snr_db, JF_REAL, "snr_db_vs_double"),

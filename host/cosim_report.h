@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "compare.h"
+#include "cosim_refilter.h"
 #include "cosim_rtl.h"
 #include "cosim_sched.h"
 
@@ -36,6 +37,7 @@ typedef struct {
     unsigned long long photons_sent, photons_empty;
     unsigned long long hp_diff, hp_diff_points, img_diff;
     uint64_t ops_sent;              /* update operations the driver sent */
+    cosim_refilter_stats_t refilter; /* the host's re-filters with radii read back */
     int have_metrics;               /* 1: m holds the RTL image against the double render */
     pree_metrics_t m;
     uint64_t cnt_upd[COSIM_NCNT];   /* the RTL's counters after the update pass */

@@ -67,7 +67,7 @@ COSIM_VLRT_FLAGS := -std=c++17 -O2 -isystem $(VERILATOR_ROOT_DIR)/include -isyst
 HOST_DIR     := $(BUILD)/host
 HOST_OBJS    := $(HOST_DIR)/cosim_drv.o $(HOST_DIR)/cosim_reorder.o $(HOST_DIR)/cosim_report.o $(HOST_DIR)/cosim_sched.o $(HOST_DIR)/cosim_shadow.o
 # The programs' own (pree cosim's command line, comparisons, outputs and the board of PREEs).
-COSIM_MAIN_OBJS := $(foreach m,args compare dist layout outputs,$(HOST_DIR)/cosim_$(m).o)
+COSIM_MAIN_OBJS := $(foreach m,args compare dist layout outputs refilter,$(HOST_DIR)/cosim_$(m).o)
 COSIM_BENCH  := $(COSIM_DIR)/top_bench
 COSIM_CFLAGS := $(CFLAGS) -Ihost -Icli -Itb/lib
 COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mtag,$(m)))

@@ -4,7 +4,9 @@
  * (grid_safe_radius: every binary32 rounding of positions and of the distance arithmetic) on
  * the current radius bound instead of r0, so no candidate the datapath could accept is lost;
  * dropping the others changes no image or state bit, only the candidates scanned. Buckets keep
- * their numbers (the cell map is untouched) and their entries keep their order. */
+ * their numbers (the cell map is untouched) and their entries keep their order. The radii come
+ * from the hit points' state, or from a caller (the co-simulation host, which reads them back
+ * from the PREE). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -40,11 +42,13 @@ typedef struct {
     int64_t a[3], b[3];
 } reach_t;
 
-static void reach_of(const grid_t *g, const hitpoints_t *h, precision_t prec, uint32_t i, reach_t *m)
+static void reach_of(const grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits, uint32_t i,
+                     reach_t *m)
 {
     m->hp = i;
     m->all = 1;
-    const double r2 = prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
+    const double r2 = r2_bits ? (double)fp32_from_bits(r2_bits[i])
+                    : prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
     if (!(r2 >= 0)) return;   /* nothing to prove: keep */
     const double rs = grid_safe_radius(sqrt(r2), g->max_abs_coord);
     if (rs >= g->r_safe) return;
@@ -78,8 +82,9 @@ static int reaches(const reach_t *m, uint64_t k)
 /* Compact the buckets [b0, b1) of a part in place within their own entries, which start at lo
  * and end at hi (start[b0] and start[b1] before any change): start[b] becomes the bucket's new
  * first entry; memo: the calling thread's table (reach_t). Returns the entries kept. */
-static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t prec, grid_part_t *part,
-                             const uint64_t *key, reach_t *memo, size_t b0, size_t b1, size_t lo, size_t hi)
+static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits,
+                             grid_part_t *part, const uint64_t *key, reach_t *memo, size_t b0, size_t b1, size_t lo,
+                             size_t hi)
 {
     size_t w = lo, from = lo;
     for (size_t b = b0; b < b1; b++) {
@@ -89,11 +94,12 @@ static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t 
             if (k + REACH_AHEAD < hi) {   /* the entries ahead are not yet moved (w <= k) */
                 const uint32_t ahead = part->hp[k + REACH_AHEAD];
                 __builtin_prefetch(&h->hot[ahead]);
-                __builtin_prefetch(prec == PRECISION_DOUBLE ? (const void *)&h->r2[ahead] : (const void *)&h->r2_f32[ahead]);
+                __builtin_prefetch(r2_bits ? (const void *)&r2_bits[ahead]
+                                   : prec == PRECISION_DOUBLE ? (const void *)&h->r2[ahead] : (const void *)&h->r2_f32[ahead]);
             }
             const uint32_t i = part->hp[k];
             reach_t *m = &memo[i & (REACH_MEMO - 1)];
-            if (m->hp != i) reach_of(g, h, prec, i, m);
+            if (m->hp != i) reach_of(g, h, prec, r2_bits, i, m);
             if (reaches(m, key[b])) part->hp[w++] = i;
         }
         from = to;
@@ -103,8 +109,8 @@ static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t 
 
 /* Compact part p's buckets in place: ranges of buckets in parallel, then each range's entries
  * moved down to follow the previous range's. Returns the entries dropped, or -1 (memory). */
-static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, int p, const uint64_t *key,
-                               reach_t *memo, int nthreads)
+static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits, int p,
+                               const uint64_t *key, reach_t *memo, int nthreads)
 {
     grid_part_t *part = &g->parts[p];
     const size_t nb = g->num_buckets, nr = nb < REFILTER_RANGES ? nb : REFILTER_RANGES;
@@ -113,7 +119,7 @@ static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec
     for (size_t r = 0; r <= nr; r++) edge[r] = part->start[nb * r / nr];
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1)
     for (size_t r = 0; r < nr; r++)
-        kept[r] = refilter_range(g, h, prec, part, key, memo + (size_t)omp_get_thread_num() * REACH_MEMO,
+        kept[r] = refilter_range(g, h, prec, r2_bits, part, key, memo + (size_t)omp_get_thread_num() * REACH_MEMO,
                                  nb * r / nr, nb * (r + 1) / nr, edge[r], edge[r + 1]);
     size_t w = 0;
     for (size_t r = 0; r < nr; r++) {
@@ -136,7 +142,7 @@ static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec
     return dropped;
 }
 
-long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int nthreads)
+long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits, int nthreads)
 {
     if (g->kind != GRID_CELLS || !g->parts) return 0;
     uint64_t *key = bucket_cells(g);
@@ -147,7 +153,7 @@ long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, int n
     for (size_t m = 0; m < (size_t)nthreads * REACH_MEMO; m++) memo[m].hp = UINT32_MAX;
     long long dropped = 0;
     for (int p = 0; p < g->num_parts && dropped >= 0; p++) {
-        const long long d = refilter_part(g, h, prec, p, key, memo, nthreads);
+        const long long d = refilter_part(g, h, prec, r2_bits, p, key, memo, nthreads);
         dropped = d < 0 ? -1 : dropped + d;
     }
     free(key);

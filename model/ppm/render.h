@@ -120,6 +120,13 @@ void render_stats_scene(render_stats_t *st, const scene_t *scene);
  *   render_step       trace and apply the next photon block: 1 (a block done), 0 (no block
  *                     left, or interrupted), -1 with err
  *   render_block_ops  with opt->record_ops: the last block's operations, in photon order
+ *   render_refilter_due  with opt->record_ops: the engine does not re-filter its grid itself (it
+ *                     would read the radii from its own state); this says that a point of its
+ *                     schedule (after blocks 1, 2, 4, ...) has passed and a block is left
+ *   render_refilter_from  re-filter the grid against radii the caller supplies: r2_bits[i], the
+ *                     binary32 radius squared of hit point i in the photon pass's order (a
+ *                     NaN: not known, kept); with the stable datapath preu_stable_screen_r2 of
+ *                     its w. 0, or -1 with err
  *   render_close      radiance, hashes; releases the session; returns as render_run */
 typedef struct render_session render_session_t;
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
@@ -127,6 +134,8 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
 const uint32_t *render_hp_address(const render_session_t *s);
 int render_step(render_session_t *s, char *err, size_t errlen);
 const update_ops_t *render_block_ops(const render_session_t *s);
+int render_refilter_due(const render_session_t *s);
+int render_refilter_from(render_session_t *s, const uint32_t *r2_bits, char *err, size_t errlen);
 int render_close(render_session_t *s, char *err, size_t errlen);
 void render_result_free(render_result_t *res);
 

@@ -179,12 +179,13 @@ static int refilter_round(render_session_t *s, uint64_t nblocks)
     uint64_t top = 1;
     while (top * 2 <= s->blocks) top *= 2;
     if (top <= before || !render_refilter_enabled(s)) return 0;
+    if (s->opt.record_ops) return render_refilter_point(s);   /* the caller's radii */
     hitpoints_t *h = &s->res->hp;
     const double t = omp_get_wtime();   /* sharing the radii counts as the re-filter's */
     if (s->opt.precision == PRECISION_DOUBLE) render_dist_share_ranges(h->r2, sizeof *h->r2, s->own_lo);
     else render_dist_share_ranges(h->r2_f32, sizeof *h->r2_f32, s->own_lo);
     s->res->stats.sec_refilter += omp_get_wtime() - t;
-    return render_refilter_now(s);
+    return render_refilter_point(s);
 }
 
 /* The exchange in flight: wait for it, apply its blocks in photon order, re-filter when due.

@@ -50,6 +50,8 @@ struct render_session {
     update_ops_t ops;
     uint64_t emitted_target, done_photons, last_checkpoint;
     uint64_t blocks;         /* blocks updated: the grid is re-filtered after blocks 1, 2, 4, 8, ... */
+    int refilter_due;        /* recording the PREE's operations: such a point passed, the caller's
+                              * re-filter (render_refilter_from) not yet made */
     uint64_t fingerprint;    /* checkpoint_fingerprint, with a checkpoint or a resume */
     int failed;              /* a step failed: close only releases */
     /* More than one MPI rank (render_round.c, docs/scale_out.md): rank `rank` of `nranks` owns
@@ -79,7 +81,9 @@ struct render_session {
 int render_trace_block(render_session_t *s, uint64_t first, uint64_t count, unsigned slot);
 void render_progress(render_session_t *s);
 int render_refilter_enabled(const render_session_t *s);
-int render_refilter_now(render_session_t *s);
+/* A point of the re-filter schedule passed: the re-filter now (0 or -1, memory), or, when recording
+ * the PREE's operations, render_refilter_due's flag raised for the caller. */
+int render_refilter_point(render_session_t *s);
 /* Screen the first `blocks` traced blocks (bb) with the session's T threads into their scratch
  * lists (`lists` of them), each kept candidate in list owner[hit point] (list 0 when owner is
  * NULL). 0 or -1 (memory). */

@@ -89,19 +89,21 @@ int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, u
 }
 
 /* Radii only shrink: after blocks 1, 2, 4, 8, ... drop the grid entries that the current radii
- * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor when recording the
- * co-simulation's operations (the host does not read the PREE's radii), nor with the environment
- * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). */
+ * rule out (model/ppm/grid_refilter.c). Not with --no-skip (the oracle) nor with the environment
+ * variable PREE_NO_REFILTER set (make bench's before/after rows, like PREE_NO_AVX2). When recording
+ * the co-simulation's operations, the caller re-filters with the radii it reads back from the
+ * PREE (render_refilter_from). */
 int render_refilter_enabled(const render_session_t *s)
 {
-    return s->skip && !s->opt.record_ops && !getenv("PREE_NO_REFILTER");
+    return s->skip && !getenv("PREE_NO_REFILTER");
 }
 
-int render_refilter_now(render_session_t *s)
+/* The re-filter with the session's radii, or r2_bits (render_refilter_from). 0 or -1 (memory). */
+static int refilter_with(render_session_t *s, const uint32_t *r2_bits)
 {
     render_stats_t *st = &s->res->stats;
     const double t = omp_get_wtime();
-    const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, s->T);
+    const long long dropped = grid_refilter(&s->grid, &s->res->hp, s->opt.precision, r2_bits, s->T);
     if (dropped < 0) return -1;
     st->grid_refilters++;
     st->grid_entries_final -= (size_t)dropped;
@@ -109,12 +111,36 @@ int render_refilter_now(render_session_t *s)
     return 0;
 }
 
+int render_refilter_point(render_session_t *s)
+{
+    if (!render_refilter_enabled(s)) return 0;
+    if (!s->opt.record_ops) return refilter_with(s, NULL);
+    s->refilter_due = 1;
+    return 0;
+}
+
+int render_refilter_due(const render_session_t *s)
+{
+    return s->refilter_due && !s->interrupted && s->done_photons < s->emitted_target;
+}
+
+int render_refilter_from(render_session_t *s, const uint32_t *r2_bits, char *err, size_t errlen)
+{
+    s->refilter_due = 0;
+    if (s->opt.precision != PRECISION_FP32 || refilter_with(s, r2_bits)) {
+        snprintf(err, errlen, s->opt.precision != PRECISION_FP32 ? "binary32 radii for a double-precision render"
+                                                                   : "out of memory in the photon pass");
+        return -1;
+    }
+    return 0;
+}
+
 /* After each block: a re-filter when the block count is a power of two. 0 or -1 (memory). */
 static int refilter_block(render_session_t *s)
 {
     s->blocks++;
-    if ((s->blocks & (s->blocks - 1)) || !render_refilter_enabled(s)) return 0;
-    return render_refilter_now(s);
+    if (s->blocks & (s->blocks - 1)) return 0;
+    return render_refilter_point(s);
 }
 
 /* What the last batch of n blocks held, per block (its hits and kept candidates), and the most

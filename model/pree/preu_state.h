@@ -9,7 +9,8 @@
  * API
  *   preu_hpw_t                      position, weight and state words of one hit point
  *   preu_state_words(datapath)      5 or 10
- *   preu_hpw_from_paper / _to_paper, preu_hpw_from_stable / _to_stable   conversions */
+ *   preu_hpw_from_paper / _to_paper, preu_hpw_from_stable / _to_stable   conversions
+ *   preu_hpw_screen_r2(w, datapath)  the radius bound the engine screens with */
 #ifndef PREE_PREU_STATE_H
 #define PREE_PREU_STATE_H
 
@@ -73,6 +74,13 @@ static inline void preu_hpw_to_stable(const preu_hpw_t *w, preu_shp_t *hp)
     for (int c = 0; c < 3; c++) hp->T[c] = preu_hpw_word64(w->st, c);
     hp->w = preu_hpw_word64(w->st, 3);
     hp->k = preu_hpw_word64(w->st, 4);
+}
+
+/* The binary32 radius squared that the engine screens candidates with (hitpoints_t.r2_f32), from
+ * a hit point's words: the paper's r2 word, or the stable datapath's bound from its w. */
+static inline uint32_t preu_hpw_screen_r2(const preu_hpw_t *w, int datapath)
+{
+    return datapath ? preu_stable_screen_r2(preu_hpw_word64(w->st, 3)) : w->st[3];
 }
 
 #endif
