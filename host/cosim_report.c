@@ -60,8 +60,11 @@ static const json_field_t run_fields[] = {
 static const json_field_t out_fields[] = {
     R(photons_sent, JF_U64, "photon_hits_streamed"), R(photons_empty, JF_U64, "photon_hits_without_operations"),
     R(hp_diff, JF_U64, "hp_words_differing"), R(hp_diff_points, JF_U64, "hp_points_differing"),
-    R(img_diff, JF_U64, "image_words_differing"), R(refilter.refilters, JF_U64, "host_refilters"),
-    R(refilter.hit_points_read, JF_U64, "refilter_hit_points_read"),
+    R(img_diff, JF_U64, "image_words_differing"),
+};
+/* The host's re-filters (--refilter): with --model-only too, whose radii are the model's words. */
+static const json_field_t refilter_fields[] = {
+    R(refilter.refilters, JF_U64, "host_refilters"), R(refilter.hit_points_read, JF_U64, "refilter_hit_points_read"),
 };
 static const json_field_t metric_fields[] = {
     R(m.ssim, JF_REAL, "ssim_vs_double"), R(m.snr_db, JF_REAL, "snr_db_vs_double"),
@@ -151,6 +154,7 @@ int cosim_report_write(const char *path, const cosim_report_t *r, char *err, siz
     json_set_fields(o, r, run_fields, N(run_fields));
     json_object_set_new(o, "schedule", schedule(r));
     if (!r->model_only) json_set_fields(o, r, out_fields, N(out_fields));   /* nothing compared */
+    json_set_fields(o, r, refilter_fields, N(refilter_fields));
     if (r->have_metrics) json_set_fields(o, r, metric_fields, N(metric_fields));
     json_object_set_new(o, "update", update_pass(r));
     if (!r->model_only) json_object_set_new(o, "radiance", radiance_pass(r));

@@ -8,7 +8,8 @@
 #   - --refilter re-filters twice, reading every hit point back each time, and streams fewer
 #     operations in fewer update cycles; the default reads nothing back;
 #   - the two RTL images are the same bytes (dropping candidates that the read-back radii rule
-#     out changes no result).
+#     out changes no result);
+#   - --model-only --refilter re-filters as often and predicts the RTL run's operations and cycles.
 # The AXI program (build/pree-cosim-axi-p4) at 32x24 / 100k photons: the same, its barriers
 # being ends of AXI batches.
 source "$(dirname "$0")/../lib/check.sh"
@@ -48,5 +49,12 @@ PY
   echo "ok: $label: the same image with and without the re-filter"
 }
 check_pair pree_top --width 64 --height 48 --photons 128000 --preu 4
+# --model-only --refilter (the radii from the model's words): the same re-filters, operations and
+# predicted cycles as the RTL run's cycle model.
+run "$PREE" cosim scenes/cornell3 --width 64 --height 48 --photons 128000 --preu 4 --refilter --model-only \
+  --quiet --no-reference --stats "$TMP/model.json"
+expect_eq "model-only re-filters" "$(json "$TMP/model.json" host_refilters)" 2
+expect_eq "model-only operations" "$(json "$TMP/model.json" update.operations)" "$(json "$TMP/pree_top-refilter.json" update.operations)"
+expect_eq "model-only cycles" "$(json "$TMP/model.json" update.cycles)" "$(json "$TMP/pree_top-refilter.json" schedule.model_cycles)"
 [ -x build/pree-cosim-axi-p4 ] || fail "build/pree-cosim-axi-p4 missing (make build/pree-cosim-axi-p4)"
 check_pair pree_axi --width 32 --height 24 --photons 100000 --preu 4 --axi
