@@ -42,13 +42,17 @@ typedef struct {
     int64_t a[3], b[3];
 } reach_t;
 
-static void reach_of(const grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits, uint32_t i,
-                     reach_t *m)
+/* Where the radii squared come from: binary32 bits (fp32 mode's copy, or a caller's), else double. */
+typedef struct {
+    const uint32_t *f32;
+    const double *f64;
+} radii_t;
+
+static void reach_of(const grid_t *g, const hitpoints_t *h, const radii_t *r, uint32_t i, reach_t *m)
 {
     m->hp = i;
     m->all = 1;
-    const double r2 = r2_bits ? (double)fp32_from_bits(r2_bits[i])
-                    : prec == PRECISION_DOUBLE ? h->r2[i] : (double)fp32_from_bits(h->r2_f32[i]);
+    const double r2 = r->f32 ? (double)fp32_from_bits(r->f32[i]) : r->f64[i];
     if (!(r2 >= 0)) return;   /* nothing to prove: keep */
     const double rs = grid_safe_radius(sqrt(r2), g->max_abs_coord);
     if (rs >= g->r_safe) return;
@@ -82,9 +86,8 @@ static int reaches(const reach_t *m, uint64_t k)
 /* Compact the buckets [b0, b1) of a part in place within their own entries, which start at lo
  * and end at hi (start[b0] and start[b1] before any change): start[b] becomes the bucket's new
  * first entry; memo: the calling thread's table (reach_t). Returns the entries kept. */
-static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits,
-                             grid_part_t *part, const uint64_t *key, reach_t *memo, size_t b0, size_t b1, size_t lo,
-                             size_t hi)
+static size_t refilter_range(const grid_t *g, const hitpoints_t *h, const radii_t *r, grid_part_t *part,
+                             const uint64_t *key, reach_t *memo, size_t b0, size_t b1, size_t lo, size_t hi)
 {
     size_t w = lo, from = lo;
     for (size_t b = b0; b < b1; b++) {
@@ -94,12 +97,11 @@ static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t 
             if (k + REACH_AHEAD < hi) {   /* the entries ahead are not yet moved (w <= k) */
                 const uint32_t ahead = part->hp[k + REACH_AHEAD];
                 __builtin_prefetch(&h->hot[ahead]);
-                __builtin_prefetch(r2_bits ? (const void *)&r2_bits[ahead]
-                                   : prec == PRECISION_DOUBLE ? (const void *)&h->r2[ahead] : (const void *)&h->r2_f32[ahead]);
+                __builtin_prefetch(r->f32 ? (const void *)&r->f32[ahead] : (const void *)&r->f64[ahead]);
             }
             const uint32_t i = part->hp[k];
             reach_t *m = &memo[i & (REACH_MEMO - 1)];
-            if (m->hp != i) reach_of(g, h, prec, r2_bits, i, m);
+            if (m->hp != i) reach_of(g, h, r, i, m);
             if (reaches(m, key[b])) part->hp[w++] = i;
         }
         from = to;
@@ -109,8 +111,8 @@ static size_t refilter_range(const grid_t *g, const hitpoints_t *h, precision_t 
 
 /* Compact part p's buckets in place: ranges of buckets in parallel, then each range's entries
  * moved down to follow the previous range's. Returns the entries dropped, or -1 (memory). */
-static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec, const uint32_t *r2_bits, int p,
-                               const uint64_t *key, reach_t *memo, int nthreads)
+static long long refilter_part(grid_t *g, const hitpoints_t *h, const radii_t *rad, int p, const uint64_t *key,
+                               reach_t *memo, int nthreads)
 {
     grid_part_t *part = &g->parts[p];
     const size_t nb = g->num_buckets, nr = nb < REFILTER_RANGES ? nb : REFILTER_RANGES;
@@ -119,7 +121,7 @@ static long long refilter_part(grid_t *g, const hitpoints_t *h, precision_t prec
     for (size_t r = 0; r <= nr; r++) edge[r] = part->start[nb * r / nr];
 #pragma omp parallel for num_threads(nthreads) schedule(dynamic, 1)
     for (size_t r = 0; r < nr; r++)
-        kept[r] = refilter_range(g, h, prec, r2_bits, part, key, memo + (size_t)omp_get_thread_num() * REACH_MEMO,
+        kept[r] = refilter_range(g, h, rad, part, key, memo + (size_t)omp_get_thread_num() * REACH_MEMO,
                                  nb * r / nr, nb * (r + 1) / nr, edge[r], edge[r + 1]);
     size_t w = 0;
     for (size_t r = 0; r < nr; r++) {
@@ -151,9 +153,10 @@ long long grid_refilter(grid_t *g, const hitpoints_t *h, precision_t prec, const
     reach_t *memo = malloc((size_t)nthreads * REACH_MEMO * sizeof *memo);
     if (!memo) { free(key); return -1; }
     for (size_t m = 0; m < (size_t)nthreads * REACH_MEMO; m++) memo[m].hp = UINT32_MAX;
+    const radii_t rad = {r2_bits ? r2_bits : prec == PRECISION_DOUBLE ? NULL : h->r2_f32, h->r2};
     long long dropped = 0;
     for (int p = 0; p < g->num_parts && dropped >= 0; p++) {
-        const long long d = refilter_part(g, h, prec, r2_bits, p, key, memo, nthreads);
+        const long long d = refilter_part(g, h, &rad, p, key, memo, nthreads);
         dropped = d < 0 ? -1 : dropped + d;
     }
     free(key);

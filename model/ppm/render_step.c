@@ -127,9 +127,12 @@ int render_refilter_due(const render_session_t *s)
 int render_refilter_from(render_session_t *s, const uint32_t *r2_bits, char *err, size_t errlen)
 {
     s->refilter_due = 0;
-    if (s->opt.precision != PRECISION_FP32 || refilter_with(s, r2_bits)) {
-        snprintf(err, errlen, s->opt.precision != PRECISION_FP32 ? "binary32 radii for a double-precision render"
-                                                                   : "out of memory in the photon pass");
+    if (s->opt.precision != PRECISION_FP32) {
+        snprintf(err, errlen, "binary32 radii for a double-precision render");
+        return -1;
+    }
+    if (refilter_with(s, r2_bits)) {
+        snprintf(err, errlen, "out of memory in the photon pass");
         return -1;
     }
     return 0;
