@@ -25,26 +25,65 @@ void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n)
 /* Lane by lane the scalar expression: separate multiplies and adds in the same order, IEEE sqrt,
  * ordered comparisons (false for NaN, as in the scalar test). A pad lane has rr = -inf: det is
  * -inf, a miss. */
+typedef struct { __m256d ox, oy, oz, dx, dy, dz, e; } ray_lanes_t;
+
+__attribute__((target("avx2")))
+static inline ray_lanes_t ray_lanes(vec3 o, vec3 d, double eps)
+{
+    return (ray_lanes_t){_mm256_set1_pd(o.x), _mm256_set1_pd(o.y), _mm256_set1_pd(o.z),
+                         _mm256_set1_pd(d.x), _mm256_set1_pd(d.y), _mm256_set1_pd(d.z), _mm256_set1_pd(eps)};
+}
+
+/* t of spheres i .. i+3 (0 for a miss). */
+__attribute__((target("avx2")))
+static inline __m256d t_lanes(const sphere_group_t *g, int i, const ray_lanes_t *r)
+{
+    const __m256d zero = _mm256_setzero_pd();
+    __m256d px = _mm256_sub_pd(_mm256_loadu_pd(g->cx + i), r->ox);
+    __m256d py = _mm256_sub_pd(_mm256_loadu_pd(g->cy + i), r->oy);
+    __m256d pz = _mm256_sub_pd(_mm256_loadu_pd(g->cz + i), r->oz);
+    __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, r->dx), _mm256_mul_pd(py, r->dy)), _mm256_mul_pd(pz, r->dz));
+    __m256d pp = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, px), _mm256_mul_pd(py, py)), _mm256_mul_pd(pz, pz));
+    __m256d det = _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(b, b), pp), _mm256_loadu_pd(g->rr + i));
+    __m256d miss = _mm256_cmp_pd(det, zero, _CMP_LT_OQ);
+    __m256d sq = _mm256_sqrt_pd(det);
+    __m256d t1 = _mm256_sub_pd(b, sq), t2 = _mm256_add_pd(b, sq);
+    __m256d t2ok = _mm256_and_pd(t2, _mm256_cmp_pd(t2, r->e, _CMP_GT_OQ));          /* t2 or +0 */
+    __m256d t = _mm256_blendv_pd(t2ok, t1, _mm256_cmp_pd(t1, r->e, _CMP_GT_OQ));    /* t1 if t1 > eps */
+    return _mm256_andnot_pd(miss, t);
+}
+
 __attribute__((target("avx2")))
 static void t_all_avx2(const sphere_group_t *g, vec3 o, vec3 d, double eps, double t[SPHERE_GROUP_MAX])
 {
-    const __m256d ox = _mm256_set1_pd(o.x), oy = _mm256_set1_pd(o.y), oz = _mm256_set1_pd(o.z);
-    const __m256d dx = _mm256_set1_pd(d.x), dy = _mm256_set1_pd(d.y), dz = _mm256_set1_pd(d.z);
-    const __m256d e = _mm256_set1_pd(eps), zero = _mm256_setzero_pd();
-    for (int i = 0; i < g->n; i += 4) {
-        __m256d px = _mm256_sub_pd(_mm256_loadu_pd(g->cx + i), ox);
-        __m256d py = _mm256_sub_pd(_mm256_loadu_pd(g->cy + i), oy);
-        __m256d pz = _mm256_sub_pd(_mm256_loadu_pd(g->cz + i), oz);
-        __m256d b = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, dx), _mm256_mul_pd(py, dy)), _mm256_mul_pd(pz, dz));
-        __m256d pp = _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(px, px), _mm256_mul_pd(py, py)), _mm256_mul_pd(pz, pz));
-        __m256d det = _mm256_add_pd(_mm256_sub_pd(_mm256_mul_pd(b, b), pp), _mm256_loadu_pd(g->rr + i));
-        __m256d miss = _mm256_cmp_pd(det, zero, _CMP_LT_OQ);
-        __m256d sq = _mm256_sqrt_pd(det);
-        __m256d t1 = _mm256_sub_pd(b, sq), t2 = _mm256_add_pd(b, sq);
-        __m256d t2ok = _mm256_and_pd(t2, _mm256_cmp_pd(t2, e, _CMP_GT_OQ));          /* t2 or +0 */
-        __m256d r = _mm256_blendv_pd(t2ok, t1, _mm256_cmp_pd(t1, e, _CMP_GT_OQ));    /* t1 if t1 > eps */
-        _mm256_storeu_pd(t + i, _mm256_andnot_pd(miss, r));
+    const ray_lanes_t r = ray_lanes(o, d, eps);
+    for (int i = 0; i < g->n; i += 4) _mm256_storeu_pd(t + i, t_lanes(g, i, &r));
+}
+
+/* The nearest hit against the empty starting state, kept in registers: a miss (t = 0, NaN
+ * never arises) reads as +inf, then the first lane holding the minimum. */
+__attribute__((target("avx2")))
+static int nearest_avx2(const sphere_group_t *g, vec3 o, vec3 d, double eps, double *t_hit)
+{
+    const ray_lanes_t r = ray_lanes(o, d, eps);
+    const __m256d zero = _mm256_setzero_pd(), inf = _mm256_set1_pd(INFINITY);
+    __m256d v[SPHERE_GROUP_MAX / 4], m = inf;
+    const int nv = (g->n + 3) / 4;
+    for (int k = 0; k < nv; k++) {
+        const __m256d t = t_lanes(g, 4 * k, &r);
+        v[k] = _mm256_blendv_pd(t, inf, _mm256_cmp_pd(t, zero, _CMP_EQ_OQ));
+        m = _mm256_min_pd(m, v[k]);
     }
+    __m128d m2 = _mm_min_pd(_mm256_castpd256_pd128(m), _mm256_extractf128_pd(m, 1));
+    m2 = _mm_min_sd(m2, _mm_unpackhi_pd(m2, m2));
+    const double mt = _mm_cvtsd_f64(m2);
+    if (!(mt < INFINITY)) return -1;
+    const __m256d mb = _mm256_set1_pd(mt);
+    for (int k = 0; k < nv; k++) {
+        const int hit = _mm256_movemask_pd(_mm256_cmp_pd(v[k], mb, _CMP_EQ_OQ));
+        if (hit) { *t_hit = mt; return 4 * k + __builtin_ctz((unsigned)hit); }
+    }
+    return -1;
 }
 
 /* The same choice four lanes at a time: the nearest of the lanes that may replace the hit (the
@@ -106,4 +145,16 @@ void sphere_group_t_all(const sphere_group_t *g, vec3 o, vec3 d, double eps, dou
     if (g->avx2) { t_all_avx2(g, o, d, eps, t); return; }
 #endif
     for (int i = 0; i < g->n; i++) t[i] = sphere_group_t_scalar(g->cx[i], g->cy[i], g->cz[i], g->rr[i], o, d, eps);
+}
+
+int sphere_group_nearest(const sphere_group_t *g, vec3 o, vec3 d, double eps, double *t_hit)
+{
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (g->avx2) return nearest_avx2(g, o, d, eps, t_hit);
+#endif
+    double t[SPHERE_GROUP_MAX];
+    sphere_group_t_all(g, o, d, eps, t);
+    const int i = sphere_group_pick(g, t, 0, INFINITY, -1, 0, INFINITY);
+    if (i >= 0) *t_hit = t[i];
+    return i;
 }

@@ -35,6 +35,10 @@ static inline int sphere_may_replace(double t, int id, double best_t, int best_i
 int sphere_group_pick(const sphere_group_t *g, const double t[SPHERE_GROUP_MAX], int first, double best_t, int best_id,
                       int triangle_holds, double tfar);
 
+/* The group alone against a ray: sphere_group_pick of every sphere's t against the empty state
+ * (nothing hit yet, no triangle). Returns the sphere with its t in *t_hit, or -1. */
+int sphere_group_nearest(const sphere_group_t *g, vec3 o, vec3 d, double eps, double *t_hit);
+
 /* The scalar test for one sphere (centre c, squared radius rr). */
 static inline double sphere_group_t_scalar(double cx, double cy, double cz, double rr, vec3 o, vec3 d, double eps)
 {

@@ -13,7 +13,13 @@
 /* Scenes with at most this many spheres keep them all in one Embree primitive whose callback
  * tests each in index order: with so few, the BVH culls little and every extra primitive
  * costs a callback. Larger sets get one primitive per sphere. The result is the same either
- * way: the closest hit is chosen by exact (t, index). */
+ * way: the closest hit is chosen by exact (t, index).
+ *
+ * A scene of such a group and nothing else (the reference program's scenes) needs no Embree at
+ * all: the group is tested directly, without a device, a BVH of one leaf or a callback. The
+ * hit is the callback's: Embree calls it whenever the ray meets the group's padded box, which
+ * holds every sphere hit (sphere_bounds), and it then picks from the same t by the same rule
+ * against the empty starting state. */
 
 struct tracer {
     RTCDevice device;
@@ -21,6 +27,7 @@ struct tracer {
     const scene_t *src;
     unsigned sphere_geom;     /* Embree geometry id of the sphere set, or RTC_INVALID_GEOMETRY_ID */
     int spheres_per_prim;     /* num_spheres when grouped, else 1 */
+    int direct;               /* the group is the whole scene: no Embree device or scene */
     sphere_group_t group;     /* the grouped spheres, tested together */
     unsigned *mesh_of_geom;   /* geometry id -> mesh index */
     unsigned num_geoms;
@@ -178,6 +185,13 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
     tr->src = scene;
     tr->sphere_geom = RTC_INVALID_GEOMETRY_ID;
     double t0 = omp_get_wtime();
+    if (scene->num_meshes == 0 && scene->num_spheres > 1 && scene->num_spheres <= SPHERE_GROUP_MAX) {
+        tr->direct = 1;
+        tr->spheres_per_prim = scene->num_spheres;
+        sphere_group_init(&tr->group, scene->spheres, scene->num_spheres);
+        tr->build_seconds = omp_get_wtime() - t0;
+        return tr;
+    }
     /* Embree builds with as many threads as the render may use (--threads): with its own pool of one
      * per core, a one-thread render's allocations would depend on which thread stole which build
      * task, and so would the heap the later passes grow their arrays in. */
@@ -216,8 +230,25 @@ void tracer_destroy(tracer_t *tr)
 
 double tracer_build_seconds(const tracer_t *tr) { return tr->build_seconds; }
 
+/* The hit on sphere s at t, as both paths report it. */
+static int sphere_hit(const tracer_t *tr, int s, double t, vec3 o, vec3 d, hit_t *hit)
+{
+    const sphere_t *sp = &tr->src->spheres[s];
+    hit->t = t;
+    hit->x = v3_add(o, v3_scale(d, t));
+    hit->n = v3_norm(v3_sub(hit->x, sp->centre));
+    hit->material = sp->material;
+    hit->object = s;
+    return 1;
+}
+
 int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
 {
+    if (tr->direct) {
+        double t;
+        const int i = sphere_group_nearest(&tr->group, o, d, tr->src->epsilon, &t);
+        return i < 0 ? 0 : sphere_hit(tr, i, t, o, d, hit);
+    }
     dray_context_t ctx;
     rtcInitIntersectContext(&ctx.base);
     ctx.o = o;
@@ -240,15 +271,7 @@ int tracer_intersect(const tracer_t *tr, vec3 o, vec3 d, hit_t *hit)
     rh.hit.u = rh.hit.v = 0.0f;
     rtcIntersect1(tr->scene, &ctx.base, &rh);
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return 0;
-    if (rh.hit.geomID == tr->sphere_geom) {
-        const sphere_t *s = &tr->src->spheres[ctx.best_sphere];
-        hit->t = ctx.best_t;
-        hit->x = v3_add(o, v3_scale(d, ctx.best_t));
-        hit->n = v3_norm(v3_sub(hit->x, s->centre));
-        hit->material = s->material;
-        hit->object = ctx.best_sphere;
-        return 1;
-    }
+    if (rh.hit.geomID == tr->sphere_geom) return sphere_hit(tr, ctx.best_sphere, ctx.best_t, o, d, hit);
     const mesh_t *m = &tr->src->meshes[tr->mesh_of_geom[rh.hit.geomID]];
     hit->t = (double)rh.ray.tfar;
     hit->x = v3_add(o, v3_scale(d, hit->t));

@@ -1,4 +1,4 @@
-/* tracer.h: ray casting for the engine, every ray through Embree 3.
+/* tracer.h: ray casting for the engine through Embree 3 (a scene of a few spheres only: directly).
  * Spheres are Embree user geometry whose callbacks intersect the double-precision ray
  * (carried in an extended intersect context) exactly as the reference program does;
  * triangles are Embree's native triangle geometry.
