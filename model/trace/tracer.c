@@ -189,6 +189,11 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
         tr->direct = 1;
         tr->spheres_per_prim = scene->num_spheres;
         sphere_group_init(&tr->group, scene->spheres, scene->num_spheres);
+        if (stop_requested(stop)) {
+            snprintf(err, errlen, "%s", STOP_MESSAGE);
+            tracer_destroy(tr);
+            return NULL;
+        }
         tr->build_seconds = omp_get_wtime() - t0;
         return tr;
     }
