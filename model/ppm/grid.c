@@ -50,6 +50,27 @@ static size_t find_slot(const grid_slot_t *table, size_t mask, uint64_t key)
     return probe_from(table, mask, key, key_slot(key, mask));
 }
 
+/* The buckets of the cells looked up last, direct-mapped by key. The build walks the hit points
+ * in spatial order, and neighbours share most of their cells, so this answers most look-ups from
+ * L1 where the table (tens of MB at 1600x1200) answers from memory. It only remembers what the
+ * table says: the numbering and the buckets are the same with it or without. */
+#define CELL_CACHE 256
+
+typedef struct {
+    uint64_t key[CELL_CACHE];
+    uint32_t bucket[CELL_CACHE];
+} cell_cache_t;
+
+static void cell_cache_init(cell_cache_t *c)
+{
+    for (size_t i = 0; i < CELL_CACHE; i++) c->key[i] = EMPTY_KEY;
+}
+
+static inline size_t cell_cache_at(uint64_t key)
+{
+    return (size_t)((key * 0x9E3779B97F4A7C15ull) >> 56);   /* the top 8 bits: CELL_CACHE */
+}
+
 static int alloc_parts(grid_t *g, int num_parts, size_t buckets, char *err, size_t errlen)
 {
     g->num_parts = num_parts;
@@ -158,6 +179,7 @@ static int listed(const hitpoints_t *h, size_t i, int include_zero)
 
 /* Visit every cell of hit point p's safe-radius box. */
 typedef void (*cell_visit_t)(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz);
+typedef uint32_t (*bucket_of_t)(const grid_t *g, cell_cache_t *cache, int64_t ix, int64_t iy, int64_t iz);
 
 static void each_cell(const grid_t *g, const hp_hot_t *p, cell_visit_t visit, void *ctx)
 {
@@ -172,13 +194,14 @@ typedef struct {
     grid_part_t *part;
     int pass;
     uint32_t hp;
-    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t);
+    bucket_of_t bucket_of;
+    cell_cache_t cache;
 } fill_ctx_t;
 
 static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
     fill_ctx_t *f = ctx;
-    uint32_t s = f->bucket_of(g, ix, iy, iz);
+    uint32_t s = f->bucket_of(g, &f->cache, ix, iy, iz);
     if (f->pass == 0) f->part->start[s + 1]++;
     else f->part->hp[f->part->start[s]++] = f->hp;
 }
@@ -186,9 +209,10 @@ static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_
 /* Count (pass 0) or fill (pass 1) part p's entries: every listed hit point it owns, in index
  * order, in each bucket its safe-radius box touches. bucket_of maps a cell to its bucket. */
 static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, int pass,
-                       uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t))
+                       bucket_of_t bucket_of)
 {
-    fill_ctx_t f = {&g->parts[p], pass, 0, bucket_of};
+    fill_ctx_t f = {.part = &g->parts[p], .pass = pass, .bucket_of = bucket_of};
+    cell_cache_init(&f.cache);
     for (size_t i = 0; i < h->n; i++) {
         if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
         f.hp = (uint32_t)i;
@@ -196,14 +220,21 @@ static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_z
     }
 }
 
-static uint32_t dense_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+static uint32_t dense_bucket(const grid_t *g, cell_cache_t *cache, int64_t ix, int64_t iy, int64_t iz)
 {
+    (void)cache;   /* the dense map is its own cache */
     return g->dense[grid_dense_index(g, ix, iy, iz)];
 }
 
-static uint32_t hashed_bucket(const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+static uint32_t hashed_bucket(const grid_t *g, cell_cache_t *cache, int64_t ix, int64_t iy, int64_t iz)
 {
-    return g->table[find_slot(g->table, g->table_mask, grid_cell_key(ix, iy, iz))].bucket;
+    const uint64_t key = grid_cell_key(ix, iy, iz);
+    const size_t at = cell_cache_at(key);
+    if (cache->key[at] != key) {
+        cache->key[at] = key;
+        cache->bucket[at] = g->table[find_slot(g->table, g->table_mask, key)].bucket;
+    }
+    return cache->bucket[at];
 }
 
 /* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
@@ -216,7 +247,7 @@ static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int
 /* An open-addressing table of packed cell keys; it doubles before it is three quarters full, so
  * it stays within 8/3 of the distinct cells. A new cell's bucket is the count of cells before it.
  * (Doubling at half full, with 16-byte slots, took 33 MB more at 1600x1200.) */
-typedef struct { grid_slot_t *table; size_t mask, distinct; int failed; } hash_ctx_t;
+typedef struct { grid_slot_t *table; size_t mask, distinct; int failed; cell_cache_t cache; } hash_ctx_t;
 
 static int hash_alloc(hash_ctx_t *c, size_t size)
 {
@@ -244,6 +275,9 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
     hash_ctx_t *c = ctx;
     if (c->failed) return;
     uint64_t key = grid_cell_key(ix, iy, iz);
+    const size_t at = cell_cache_at(key);
+    if (c->cache.key[at] == key) return;   /* numbered already */
+    c->cache.key[at] = key;
     size_t sl = find_slot(c->table, c->mask, key);
     if (c->table[sl].key != EMPTY_KEY) return;
     if (4 * (c->distinct + 1) > 3 * (c->mask + 1)) {
@@ -275,7 +309,8 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char 
      * quarters full): it ends at the smallest power of two of at least 4/3 of the distinct cells,
      * compact enough for the look-ups. (A first table sized for every (hit point, cell) pair took 512 MB
      * at 1600x1200.) */
-    hash_ctx_t c = {NULL, 0, 0, 0};
+    hash_ctx_t c = {.table = NULL};
+    cell_cache_init(&c.cache);
     if (hash_alloc(&c, 1024)) goto oom;
     for (size_t i = 0; i < h->n && !c.failed; i++)
         if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
@@ -315,7 +350,7 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
     if (number_cells(g, h, include_zero, err, errlen)) return -1;
     if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
-    uint32_t (*bucket_of)(const grid_t *, int64_t, int64_t, int64_t) = g->dense ? dense_bucket : hashed_bucket;
+    bucket_of_t bucket_of = g->dense ? dense_bucket : hashed_bucket;
     /* Parts are counted and filled in parallel: each walks the hit points it owns. */
     int failed = 0;
 #pragma omp parallel for schedule(static, 1) num_threads(g->num_parts) reduction(| : failed)
