@@ -32,7 +32,7 @@ static sort_key_t *sorted_keys(const hitpoints_t *h)
             double span = hi[a] - lo[a], t = span > 0 ? (p[a] - lo[a]) / span : 0;
             m |= morton_spread3((uint64_t)(t * 2097151.0)) << a;
         }
-        k[i] = (sort_key_t){h->hot[i].object, m, (uint32_t)i};
+        k[i] = (sort_key_t){h->object[i], m, (uint32_t)i};
     }
     qsort(k, h->n, sizeof *k, key_cmp);
     return k;

@@ -21,6 +21,7 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     double t = omp_get_wtime();
     eye_stats_t es;
     phase(opt, "eye pass");
+    res->hp.with_object = 1;   /* the clusters group by object */
     if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;

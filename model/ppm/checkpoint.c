@@ -74,8 +74,8 @@ static int state_arrays(const hitpoints_t *h, precision_t prec, state_array_t a[
 {
     if (prec != PRECISION_FP32) {
         a[0] = (state_array_t){h->r2, sizeof *h->r2, sizeof *h->r2};
-        a[1] = (state_array_t){h->flux, sizeof *h->flux, sizeof *h->flux};
-        a[2] = (state_array_t){(char *)h->hot + offsetof(hp_hot_t, count), sizeof *h->hot, sizeof h->hot->count};
+        a[1] = (state_array_t){&h->acc->flux, sizeof *h->acc, sizeof h->acc->flux};
+        a[2] = (state_array_t){&h->acc->count, sizeof *h->acc, sizeof h->acc->count};
         return 3;
     }
     if (h->stable) a[0] = (state_array_t){h->stable, sizeof *h->stable, sizeof *h->stable};

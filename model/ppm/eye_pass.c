@@ -98,6 +98,7 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
             for (int y = y0; y < y1; y++) {
                 if (stopped || stop_requested(stop)) { stopped = 1; continue; }
                 c.out = &rows[y - y0];
+                c.out->with_object = out->with_object;
                 for (int x = 0; x < w; x++) {
                     vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
                     eye_trace(&c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(1, 1, 1), y * w + x);

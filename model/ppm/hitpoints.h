@@ -16,20 +16,29 @@
 #include "preu_stable.h"
 #include "vec3.h"
 
-/* Geometry of a hit point and its photon count (double mode). */
+/* Geometry of a hit point: what the screening reads. */
 typedef struct {
     double px, py, pz;   /* position */
     double nx, ny, nz;   /* outward surface normal */
-    uint32_t count;      /* accepted photons (double mode) */
-    uint32_t object;     /* the object it lies on (hit_t.object) */
 } hp_hot_t;
+
+/* The double mode's accumulated state besides the radius, in one aligned 32 bytes: what an
+ * accepted photon writes, so an accept touches this line, the radius and the weight. */
+typedef struct {
+    vec3 flux;           /* accumulated flux tau */
+    uint32_t count;      /* accepted photons */
+    uint32_t pad;
+} hp_acc_t;
 
 typedef struct {
     size_t n, cap;
     hp_hot_t *hot;
     vec3 *weight;      /* BRDF colour times eye-path throughput (NULL in fp32 mode after its set-up) */
     uint8_t *dark;     /* fp32 mode: 1 where the weight was zero in every channel (else NULL) */
-    vec3 *flux;        /* accumulated flux tau (double mode; else NULL) */
+    hp_acc_t *acc;     /* flux and count (double mode; else NULL) */
+    uint32_t *object;  /* the object each lies on (hit_t.object), kept only with_object */
+    int with_object;    /* set before the first push: keep object[] (the photon-map estimator
+                         * groups by it; the PPM passes never read it) */
     double *r2;        /* radius squared (double mode; else NULL), compact for the distance test */
     uint32_t *r2_f32;  /* fp32 mode: a compact copy of fp32[i].r2 for the distance test; stable
                         * datapath: a binary32 bound on the accepted d2 (preu_stable_screen_r2) */

@@ -108,7 +108,8 @@ static void permute_slice(unsigned char *a, size_t sz, size_t off, size_t len, s
 static int permute_all(hitpoints_t *h, const uint32_t *perm, int scatter)
 {
     struct { void *a; size_t sz; } arr[] = {
-        {h->hot, sizeof *h->hot}, {h->weight, sizeof *h->weight}, {h->flux, sizeof *h->flux},
+        {h->hot, sizeof *h->hot}, {h->weight, sizeof *h->weight}, {h->acc, sizeof *h->acc},
+        {h->object, sizeof *h->object},
         {h->r2, sizeof *h->r2}, {h->pixel, sizeof *h->pixel}, {h->dark, sizeof *h->dark},
         {h->fp32, sizeof *h->fp32}, {h->stable, sizeof *h->stable}, {h->r2_f32, sizeof *h->r2_f32},
     };

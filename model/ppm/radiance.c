@@ -36,9 +36,9 @@ int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emit
             if (skip_zero && hitpoints_zero_weight(h, i)) { sk++; continue; }
             double *px = rgb + 3 * (size_t)h->pixel[i];
             double k = 1.0 / (((PREE_PI * h->r2[i]) * batches) * 1000.0);
-            px[0] = px[0] + h->flux[i].x * k;
-            px[1] = px[1] + h->flux[i].y * k;
-            px[2] = px[2] + h->flux[i].z * k;
+            px[0] = px[0] + h->acc[i].flux.x * k;
+            px[1] = px[1] + h->acc[i].flux.y * k;
+            px[2] = px[2] + h->acc[i].flux.z * k;
         }
     } else {
         uint32_t *L = calloc(num_pixels * 3, sizeof *L);   /* +0.0f */

@@ -16,8 +16,9 @@ void render_hash_results(render_result_t *res, precision_t prec)
     else if (prec == PRECISION_FP32) s = fnv1a(s, h->fp32, h->n * sizeof *h->fp32);
     else {
         s = fnv1a(s, h->r2, h->n * sizeof *h->r2);
-        s = fnv1a(s, h->flux, h->n * sizeof *h->flux);
-        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->hot[i].count, sizeof h->hot[i].count);
+        /* The bytes of the flux array, then of the counts, as when each was an array of its own. */
+        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->acc[i].flux, sizeof h->acc[i].flux);
+        for (size_t i = 0; i < h->n; i++) s = fnv1a(s, &h->acc[i].count, sizeof h->acc[i].count);
     }
     res->stats.state_hash = s;
 }

@@ -303,7 +303,7 @@ void render_round_close(render_session_t *s)
     render_stats_t *st = &s->res->stats;
     const size_t *lo = s->own_lo;
     render_dist_gather_ranges(h->hot, sizeof *h->hot, lo);
-    if (h->flux) render_dist_gather_ranges(h->flux, sizeof *h->flux, lo);
+    if (h->acc) render_dist_gather_ranges(h->acc, sizeof *h->acc, lo);
     if (h->r2) render_dist_gather_ranges(h->r2, sizeof *h->r2, lo);
     if (h->r2_f32) render_dist_gather_ranges(h->r2_f32, sizeof *h->r2_f32, lo);
     if (h->fp32) render_dist_gather_ranges(h->fp32, sizeof *h->fp32, lo);

@@ -49,12 +49,12 @@ void update_part(hitpoints_t *h, grid_t *g, int p, precision_t prec, int skip_ra
 /* The reference program's double update of one hit point by flux F. */
 static inline void update_accept_double(hitpoints_t *h, size_t e, vec3 F)
 {
-    hp_hot_t *hp = &h->hot[e];
+    hp_acc_t *acc = &h->acc[e];
     const double a = h->alpha;
-    double g = (hp->count * a + a) / (hp->count * a + 1.0);
+    double g = (acc->count * a + a) / (acc->count * a + 1.0);
     h->r2[e] = h->r2[e] * g;
-    hp->count++;
-    h->flux[e] = v3_scale(v3_add(h->flux[e], v3_scale(v3_mul(h->weight[e], F), 1. / PREE_PI)), g);
+    acc->count++;
+    acc->flux = v3_scale(v3_add(acc->flux, v3_scale(v3_mul(h->weight[e], F), 1. / PREE_PI)), g);
 }
 
 /* The photon at the PREE boundary: rounded once to binary32. */

@@ -406,8 +406,7 @@ int update_batch_apply(hitpoints_t *h, precision_t prec, const update_batch_t *b
             const uint32_t f = k[i + APPLY_AHEAD].hp;
             if (prec == PRECISION_DOUBLE) {
                 __builtin_prefetch(&h->r2[f], 1);
-                __builtin_prefetch(&h->hot[f].count, 1);
-                __builtin_prefetch(&h->flux[f], 1);
+                __builtin_prefetch(&h->acc[f], 1);
                 __builtin_prefetch(&h->weight[f]);
             } else {
                 __builtin_prefetch(&h->r2_f32[f], 1);

@@ -23,13 +23,12 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
         h->r2_f32 = calloc(n + 1, sizeof *h->r2_f32);
         h->dark = calloc(n + 1, 1);
     } else {
-        h->flux = calloc(n + 1, sizeof *h->flux);
+        h->acc = calloc(n + 1, sizeof *h->acc);
         h->r2 = calloc(n + 1, sizeof *h->r2);
         h->weight = calloc(n + 1, sizeof *h->weight);
     }
     for (size_t i = 0; i < n; i++) {
         h->hot[i].px = (double)i;
-        h->hot[i].count = (uint32_t)(3 * i);
         h->pixel[i] = (int32_t)(7 * i + 1);
         if (fp32) {
             memset(&h->fp32[i], (int)(i * 13 + 5) & 0xff, sizeof h->fp32[i]);
@@ -37,7 +36,7 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
             h->r2_f32[i] = (uint32_t)(i ^ 0x5a5a5a5au);
             h->dark[i] = (uint8_t)(i & 1);
         } else {
-            h->flux[i] = v3((double)i, -(double)i, 0.5 * (double)i);
+            h->acc[i] = (hp_acc_t){v3((double)i, -(double)i, 0.5 * (double)i), (uint32_t)(3 * i), 0};
             h->r2[i] = 1.0 / (double)(i + 1);
             h->weight[i] = v3(2.0 * (double)i, 1, 0);
         }
@@ -47,7 +46,7 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
 static void release(hitpoints_t *h)
 {
     free(h->hot); free(h->pixel); free(h->fp32); free(h->r2_f32); free(h->dark);
-    free(h->flux); free(h->r2); free(h->weight);
+    free(h->acc); free(h->r2); free(h->weight);
 }
 
 /* Every array of a holds at k what b holds at perm[k] (perm NULL: at k). */
@@ -62,7 +61,7 @@ static void assert_moved(const hitpoints_t *a, const hitpoints_t *b, const uint3
             assert_int_equal(a->r2_f32[k], b->r2_f32[j]);
             assert_int_equal(a->dark[k], b->dark[j]);
         } else {
-            assert_memory_equal(&a->flux[k], &b->flux[j], sizeof a->flux[k]);
+            assert_memory_equal(&a->acc[k], &b->acc[j], sizeof a->acc[k]);
             assert_memory_equal(&a->r2[k], &b->r2[j], sizeof a->r2[k]);
             assert_memory_equal(&a->weight[k], &b->weight[j], sizeof a->weight[k]);
         }

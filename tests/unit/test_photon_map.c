@@ -118,7 +118,7 @@ static void test_kdtree_empty(void **state)
 /* One cluster of m shading points around a random centre, all facing up. */
 static hitpoints_t make_points(size_t n, double spread, uint32_t objects)
 {
-    hitpoints_t h = {0};
+    hitpoints_t h = {.with_object = 1};
     for (size_t i = 0; i < n; i++) {
         vec3 p = v3(0.5 + spread * (rnd() - 0.5), 0.5 + spread * (rnd() - 0.5), 0.5 + spread * (rnd() - 0.5));
         assert_int_equal(hitpoints_push(&h, p, v3(0, 1, 0), v3(1, 1, 1), (int32_t)i, (uint32_t)(i % objects)), 0);
@@ -233,7 +233,7 @@ static void test_clusters(void **state)
                 assert_true(p < h.n);
                 assert_false(seen[p]);
                 seen[p] = 1;
-                assert_int_equal(h.hot[p].object, h.hot[c.member[lo]].object);
+                assert_int_equal(h.object[p], h.object[c.member[lo]]);
             }
         }
         for (size_t i = 0; i < h.n; i++) assert_true(seen[i]);

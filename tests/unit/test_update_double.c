@@ -26,12 +26,12 @@ static void test_first_update(void **state)
     /* count 0: g = (0*0.7 + 0.7)/(0*0.7 + 1) = 0.7 */
     update_accept_double(&h, 0, v3(PREE_PI, 2 * PREE_PI, 0));
     assert_true(h.r2[0] == 0.7);
-    assert_int_equal(h.hot[0].count, 1);
+    assert_int_equal(h.acc[0].count, 1);
     /* flux = (0 + w*F*(1/pi)) * 0.7: w*F*(1/pi) = (0.5 pi, 0.5 pi, 0) / pi = (0.5, 0.5, 0) within rounding. */
-    assert_true(h.flux[0].x == ((0.5 * PREE_PI) * (1. / PREE_PI)) * 0.7);
-    assert_true(h.flux[0].y == ((0.25 * (2 * PREE_PI)) * (1. / PREE_PI)) * 0.7);
-    assert_true(h.flux[0].z == 0.0);
-    assert_true(fabs(h.flux[0].x - 0.35) < 1e-15);
+    assert_true(h.acc[0].flux.x == ((0.5 * PREE_PI) * (1. / PREE_PI)) * 0.7);
+    assert_true(h.acc[0].flux.y == ((0.25 * (2 * PREE_PI)) * (1. / PREE_PI)) * 0.7);
+    assert_true(h.acc[0].flux.z == 0.0);
+    assert_true(fabs(h.acc[0].flux.x - 0.35) < 1e-15);
     hitpoints_free(&h);
 }
 
@@ -46,7 +46,7 @@ static void test_second_update(void **state)
     assert_true(fabs(g1 - 14.0 / 17.0) < 1e-15);
     assert_true(h.r2[0] == 0.7 * g1);
     assert_true(fabs(h.r2[0] - 9.8 / 17.0) < 1e-15);
-    assert_int_equal(h.hot[0].count, 2);
+    assert_int_equal(h.acc[0].count, 2);
     hitpoints_free(&h);
 }
 
