@@ -44,6 +44,8 @@ struct render_session {
     tracer_t *tr;
     uint32_t *perm;
     uint16_t *owner;
+    uint32_t *owner_end;   /* owner[] as ranges: part p owns [owner_end[p-1], owner_end[p]) (NULL
+                            * where it is not monotone) */
     update_batch_t batch;
     update_scratch_t *scratch;
     update_stats_t *ust;

@@ -188,10 +188,22 @@ int update_batch_keep_in(update_scratch_t *s, int q, uint32_t hit, uint32_t hp, 
     return 0;
 }
 
+/* The part that owns hit point hp: from the ranges (comparisons, no branch on the owner, which
+ * alternates within a bucket), else from owner[]. */
+static inline int owner_of(const update_batch_t *b, uint32_t hp)
+{
+    if (b->owner_end) {
+        int q = 0;
+        for (int p = 0; p + 1 < b->parts; p++) q += hp >= b->owner_end[p];
+        return q;
+    }
+    return b->owner ? b->owner[hp] : 0;
+}
+
 /* Keep a candidate in the list of the part that owns its hit point. */
 static int keep(update_scratch_t *s, const update_batch_t *b, uint32_t hit, uint32_t hp, double v2)
 {
-    return update_batch_keep_in(s, b->owner ? b->owner[hp] : 0, hit, hp, v2);
+    return update_batch_keep_in(s, owner_of(b, hp), hit, hp, v2);
 }
 
 /* Phase 1 for one hit against its bucket's entries (double mode). */

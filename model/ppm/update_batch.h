@@ -20,6 +20,8 @@ typedef struct {
     uint32_t *hist;             /* the radix sort's per-thread digit counts */
     size_t n, n_keyed, n_groups, hit_cap, key_cap, tmp_cap, sorted_cap, group_cap, hist_cap;
     const uint16_t *owner;      /* set by the caller: owning part of each hit point (NULL: all 0) */
+    const uint32_t *owner_end;  /* or (not NULL) as ranges: part p owns [owner_end[p-1], owner_end[p]) */
+    int parts;                  /* with owner_end: the parts */
     int avx2;                   /* screen in AVX2 lanes */
 } update_batch_t;
 
