@@ -1,7 +1,8 @@
-/* tracer.h: ray casting for the engine through Embree 3 (a scene of a few spheres only: directly).
+/* tracer.h: ray casting for the engine through Embree 3.
  * Spheres are Embree user geometry whose callbacks intersect the double-precision ray
  * (carried in an extended intersect context) exactly as the reference program does;
- * triangles are Embree's native triangle geometry.
+ * triangles are Embree's native triangle geometry. A scene of at most SPHERE_GROUP_MAX spheres
+ * and no triangles needs no Embree: its rays test the sphere group directly, to the same hit.
  *
  * tracer_create() returns NULL with a one-line message in err on failure, STOP_MESSAGE when
  * stop was set during the build (Embree's progress monitor polls it). */
