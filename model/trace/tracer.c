@@ -19,7 +19,8 @@
  * all: the group is tested directly, without a device, a BVH of one leaf or a callback. The
  * hit is the callback's: Embree calls it whenever the ray meets the group's padded box, which
  * holds every sphere hit (sphere_bounds), and it then picks from the same t by the same rule
- * against the empty starting state. */
+ * against the empty starting state. The environment variable PREE_TRACER_EMBREE keeps Embree
+ * for such scenes too (the check that both paths give the same bits). */
 
 struct tracer {
     RTCDevice device;
@@ -185,7 +186,8 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
     tr->src = scene;
     tr->sphere_geom = RTC_INVALID_GEOMETRY_ID;
     double t0 = omp_get_wtime();
-    if (scene->num_meshes == 0 && scene->num_spheres > 1 && scene->num_spheres <= SPHERE_GROUP_MAX) {
+    if (scene->num_meshes == 0 && scene->num_spheres > 1 && scene->num_spheres <= SPHERE_GROUP_MAX &&
+        !getenv("PREE_TRACER_EMBREE")) {
         tr->direct = 1;
         tr->spheres_per_prim = scene->num_spheres;
         sphere_group_init(&tr->group, scene->spheres, scene->num_spheres);
