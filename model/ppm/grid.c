@@ -192,7 +192,6 @@ static void each_cell(const grid_t *g, const hp_hot_t *p, cell_visit_t visit, vo
 
 typedef struct {
     grid_part_t *part;
-    int pass;
     uint32_t hp;
     bucket_of_t bucket_of;
     cell_cache_t cache;
@@ -202,16 +201,15 @@ static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_
 {
     fill_ctx_t *f = ctx;
     uint32_t s = f->bucket_of(g, &f->cache, ix, iy, iz);
-    if (f->pass == 0) f->part->start[s + 1]++;
-    else f->part->hp[f->part->start[s]++] = f->hp;
+    f->part->hp[f->part->start[s]++] = f->hp;
 }
 
-/* Count (pass 0) or fill (pass 1) part p's entries: every listed hit point it owns, in index
- * order, in each bucket its safe-radius box touches. bucket_of maps a cell to its bucket. */
-static void cells_pass(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, int pass,
-                       bucket_of_t bucket_of)
+/* Fill part p's entries (counted by the numbering, start[] made offsets): every listed hit point
+ * it owns, in index order, in each bucket its safe-radius box touches. bucket_of maps a cell to
+ * its bucket. */
+static void cells_fill(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, bucket_of_t bucket_of)
 {
-    fill_ctx_t f = {.part = &g->parts[p], .pass = pass, .bucket_of = bucket_of};
+    fill_ctx_t f = {.part = &g->parts[p], .bucket_of = bucket_of};
     cell_cache_init(&f.cache);
     for (size_t i = 0; i < h->n; i++) {
         if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
@@ -237,19 +235,51 @@ static uint32_t hashed_bucket(const grid_t *g, cell_cache_t *cache, int64_t ix, 
     return cache->bucket[at];
 }
 
-/* Dense numbering: a cell's bucket is the order in which a listed hit point first touches it. */
-static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+/* The numbering pass: a cell's bucket is the order in which a listed hit point (in index order)
+ * first touches it. The same pass counts each part's entries per bucket, in arrays that grow with
+ * the buckets and become the parts' start[] (count of bucket b in [b + 1]): a second walk over
+ * every (hit point, cell) pair only to count them cost as much as the numbering itself. */
+typedef struct {
+    grid_t *g;
+    uint32_t **count;     /* count[p][b + 1]: part p's entries in bucket b */
+    size_t cap;           /* buckets the count arrays hold */
+    size_t distinct;      /* buckets numbered */
+    int part;             /* the owner of the hit point being visited */
+    int failed;
+    grid_slot_t *table;   /* hashed: open addressing on packed cell keys */
+    size_t mask;
+    cell_cache_t cache;
+} number_ctx_t;
+
+/* The next bucket's number in *b, the count arrays grown to hold it. 0 or -1 (memory). */
+static int new_bucket(number_ctx_t *c, uint32_t *b)
 {
-    uint32_t *next = ctx, *d = &g->dense[grid_dense_index(g, ix, iy, iz)];
-    if (*d == GRID_NO_BUCKET) *d = (*next)++;
+    if (c->distinct == c->cap) {
+        const size_t cap = c->cap ? 2 * c->cap : 1024;
+        for (int p = 0; p < c->g->num_parts; p++) {
+            uint32_t *a = realloc(c->count[p], (cap + 1) * sizeof *a);
+            if (!a) return -1;
+            memset(a + (c->cap ? c->cap + 1 : 0), 0, (cap - c->cap + (c->cap ? 0 : 1)) * sizeof *a);
+            c->count[p] = a;
+        }
+        c->cap = cap;
+    }
+    *b = (uint32_t)c->distinct++;
+    return 0;
 }
 
-/* An open-addressing table of packed cell keys; it doubles before it is three quarters full, so
- * it stays within 8/3 of the distinct cells. A new cell's bucket is the count of cells before it.
- * (Doubling at half full, with 16-byte slots, took 33 MB more at 1600x1200.) */
-typedef struct { grid_slot_t *table; size_t mask, distinct; int failed; cell_cache_t cache; } hash_ctx_t;
+static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
+{
+    number_ctx_t *c = ctx;
+    uint32_t *d = &g->dense[grid_dense_index(g, ix, iy, iz)];
+    if (c->failed) return;
+    if (*d == GRID_NO_BUCKET && new_bucket(c, d)) { c->failed = 1; return; }
+    c->count[c->part][*d + 1]++;
+}
 
-static int hash_alloc(hash_ctx_t *c, size_t size)
+/* The hashed table doubles before it is three quarters full, so it stays within 8/3 of the
+ * distinct cells. (Doubling at half full, with 16-byte slots, took 33 MB more at 1600x1200.) */
+static int hash_alloc(number_ctx_t *c, size_t size)
 {
     c->table = malloc(size * sizeof *c->table);
     if (!c->table) return -1;
@@ -258,71 +288,88 @@ static int hash_alloc(hash_ctx_t *c, size_t size)
     return 0;
 }
 
-static int hash_double(hash_ctx_t *c)
+static int hash_double(number_ctx_t *c)
 {
-    hash_ctx_t big = *c;
-    if (hash_alloc(&big, 2 * (c->mask + 1))) return -1;
-    for (size_t sl = 0; sl <= c->mask; sl++)
-        if (c->table[sl].key != EMPTY_KEY) big.table[find_slot(big.table, big.mask, c->table[sl].key)] = c->table[sl];
-    free(c->table);
-    *c = big;
+    grid_slot_t *old = c->table;
+    const size_t old_mask = c->mask;
+    if (hash_alloc(c, 2 * (old_mask + 1))) { c->table = old; c->mask = old_mask; return -1; }
+    for (size_t sl = 0; sl <= old_mask; sl++)
+        if (old[sl].key != EMPTY_KEY) c->table[find_slot(c->table, c->mask, old[sl].key)] = old[sl];
+    free(old);
     return 0;
 }
 
 static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_t iz)
 {
     (void)g;   /* the cell visitor's signature; the hashed numbering needs only the cell */
-    hash_ctx_t *c = ctx;
+    number_ctx_t *c = ctx;
     if (c->failed) return;
-    uint64_t key = grid_cell_key(ix, iy, iz);
+    const uint64_t key = grid_cell_key(ix, iy, iz);
     const size_t at = cell_cache_at(key);
-    if (c->cache.key[at] == key) return;   /* numbered already */
-    c->cache.key[at] = key;
-    size_t sl = find_slot(c->table, c->mask, key);
-    if (c->table[sl].key != EMPTY_KEY) return;
-    if (4 * (c->distinct + 1) > 3 * (c->mask + 1)) {
-        if (hash_double(c)) { c->failed = 1; return; }
-        sl = find_slot(c->table, c->mask, key);
+    if (c->cache.key[at] != key) {
+        size_t sl = find_slot(c->table, c->mask, key);
+        if (c->table[sl].key == EMPTY_KEY) {
+            if (4 * (c->distinct + 1) > 3 * (c->mask + 1)) {
+                if (hash_double(c)) { c->failed = 1; return; }
+                sl = find_slot(c->table, c->mask, key);
+            }
+            uint32_t b;
+            if (new_bucket(c, &b)) { c->failed = 1; return; }
+            c->table[sl] = (grid_slot_t){key, b};
+        }
+        c->cache.key[at] = key;
+        c->cache.bucket[at] = c->table[sl].bucket;
     }
-    c->table[sl] = (grid_slot_t){key, (uint32_t)c->distinct++};
+    c->count[c->part][c->cache.bucket[at] + 1]++;
 }
 
-/* Number the distinct cells that listed hit points touch, in the order the hit points (in index
- * order) first touch them: in a dense array of every cell when the grid is small enough, else in
- * an open-addressing table of packed keys (size a power of two, at least 4/3 of the distinct
- * cells). Sets g->num_buckets and g->dense or g->table. (The table's buckets were once its slots,
- * in hash order: at 1600x1200 the screening then walked the hit points in random order.) */
-static int number_cells(grid_t *g, const hitpoints_t *h, int include_zero, char *err, size_t errlen)
+/* Number the distinct cells that listed hit points touch (in a dense array of every cell when the
+ * grid is small enough, else in an open-addressing table of packed keys, its size a power of two
+ * of at least 4/3 of the distinct cells) and count each part's entries. Sets g->num_buckets,
+ * g->dense or g->table, and g->parts with their counts. (The table's buckets were once its slots,
+ * in hash order: at 1600x1200 the screening then walked the hit points in random order. A first
+ * table sized for every (hit point, cell) pair took 512 MB at 1600x1200.) */
+static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
 {
     const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
-    if (cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED")) {
-        g->dense = malloc(cells * sizeof *g->dense);
-        if (!g->dense) goto oom;
-        memset(g->dense, 0xFF, cells * sizeof *g->dense);
-        uint32_t next = 0;
-        for (size_t i = 0; i < h->n; i++)
-            if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_dense, &next);
-        g->num_buckets = next ? next : 1;
-        return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
-    }
-    /* Number the distinct cells in a table that grows with them (doubling before it is three
-     * quarters full): it ends at the smallest power of two of at least 4/3 of the distinct cells,
-     * compact enough for the look-ups. (A first table sized for every (hit point, cell) pair took 512 MB
-     * at 1600x1200.) */
-    hash_ctx_t c = {.table = NULL};
+    const int dense = cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED");
+    number_ctx_t c = {.g = g};
     cell_cache_init(&c.cache);
-    if (hash_alloc(&c, 1024)) goto oom;
-    for (size_t i = 0; i < h->n && !c.failed; i++)
-        if (listed(h, i, include_zero)) each_cell(g, &h->hot[i], number_hashed, &c);
+    c.count = calloc((size_t)g->num_parts, sizeof *c.count);
+    uint32_t first;
+    int rc = -1;
+    if (!c.count || new_bucket(&c, &first)) goto done;   /* the arrays made: bucket 0 taken back below */
+    c.distinct = 0;
+    if (dense) {
+        g->dense = malloc(cells * sizeof *g->dense);
+        if (!g->dense) goto done;
+        memset(g->dense, 0xFF, cells * sizeof *g->dense);
+    } else if (hash_alloc(&c, 1024)) {
+        goto done;
+    }
+    for (size_t i = 0; i < h->n && !c.failed; i++) {
+        if (!listed(h, i, include_zero)) continue;
+        c.part = grid_owner(h, i, width, g->num_parts);
+        each_cell(g, &h->hot[i], dense ? number_dense : number_hashed, &c);
+    }
     g->table = c.table;   /* grid_free frees it on every path from here */
     g->table_mask = c.mask;
-    if (c.failed) goto oom;
-    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
+    if (c.failed) goto done;
     g->num_buckets = c.distinct ? c.distinct : 1;
-    return alloc_parts(g, g->num_parts, g->num_buckets, err, errlen);
-oom:
-    snprintf(err, errlen, "out of memory for the hit-point grid");
-    return -1;
+    g->parts = calloc((size_t)g->num_parts, sizeof *g->parts);
+    if (!g->parts) goto done;
+    for (int p = 0; p < g->num_parts; p++) {
+        uint32_t *a = realloc(c.count[p], (g->num_buckets + 1) * sizeof *a);   /* give back the growth */
+        g->parts[p].start = a ? a : c.count[p];
+        c.count[p] = NULL;
+    }
+    rc = 0;
+done:
+    if (c.count)
+        for (int p = 0; p < g->num_parts; p++) free(c.count[p]);
+    free(c.count);
+    if (rc) snprintf(err, errlen, "out of memory for the hit-point grid");
+    return rc;
 }
 
 static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
@@ -348,17 +395,16 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     }
     g->zero_weight_skipped = 0;
     for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
-    if (number_cells(g, h, include_zero, err, errlen)) return -1;
+    if (number_cells(g, h, width, include_zero, err, errlen)) return -1;
     if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
     bucket_of_t bucket_of = g->dense ? dense_bucket : hashed_bucket;
-    /* Parts are counted and filled in parallel: each walks the hit points it owns. */
+    /* Parts are filled in parallel: each walks the hit points it owns. */
     int failed = 0;
 #pragma omp parallel for schedule(static, 1) num_threads(g->num_parts) reduction(| : failed)
     for (int p = 0; p < g->num_parts; p++) {
         grid_part_t *part = &g->parts[p];
-        cells_pass(g, h, width, include_zero, p, 0, bucket_of);
         if (finish_counts(part, g->num_buckets, err, errlen)) { failed = 1; continue; }
-        cells_pass(g, h, width, include_zero, p, 1, bucket_of);
+        cells_fill(g, h, width, include_zero, p, bucket_of);
         /* Filling advanced start[s] to the end of bucket s: shift back. */
         for (size_t sl = g->num_buckets; sl > 0; sl--) part->start[sl] = part->start[sl - 1];
         part->start[0] = 0;
