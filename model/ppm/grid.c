@@ -5,6 +5,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <omp.h>
 #include "grid.h"
 
 #define CELL_LIMIT ((int64_t)1 << CELL_BITS)
@@ -191,7 +192,8 @@ static void each_cell(const grid_t *g, const hp_hot_t *p, cell_visit_t visit, vo
 }
 
 typedef struct {
-    grid_part_t *part;
+    uint32_t *entries;    /* the part's entries */
+    uint32_t *next;       /* where the lane writes its next entry of each bucket */
     uint32_t hp;
     bucket_of_t bucket_of;
     cell_cache_t cache;
@@ -201,18 +203,31 @@ static void fill_cell(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int64_
 {
     fill_ctx_t *f = ctx;
     uint32_t s = f->bucket_of(g, &f->cache, ix, iy, iz);
-    f->part->hp[f->part->start[s]++] = f->hp;
+    f->entries[f->next[s]++] = f->hp;
 }
 
-/* Fill part p's entries (counted by the numbering, start[] made offsets): every listed hit point
- * it owns, in index order, in each bucket its safe-radius box touches. bucket_of maps a cell to
- * its bucket. */
-static void cells_fill(grid_t *g, const hitpoints_t *h, int width, int include_zero, int p, bucket_of_t bucket_of)
+/* The grid is counted and filled in lanes that threads take: with several parts, lane p walks the
+ * hit points part p owns; with one part, lane l the l-th of `lanes` index ranges (their entries
+ * follow one another in each bucket, so every bucket stays in index order). */
+static int lane_of(const grid_t *g, const hitpoints_t *h, int width, int lanes, size_t i)
 {
-    fill_ctx_t f = {.part = &g->parts[p], .bucket_of = bucket_of};
+    if (g->num_parts > 1) return grid_owner(h, i, width, g->num_parts);
+    return (int)(i * (size_t)lanes / h->n);
+}
+
+/* Fill lane l's entries: every listed hit point of the lane, in index order, in each bucket its
+ * safe-radius box touches, at next[bucket]. bucket_of maps a cell to its bucket. */
+static void cells_fill(grid_t *g, const hitpoints_t *h, int width, int include_zero, int lanes, int l,
+                       uint32_t *entries, uint32_t *next, bucket_of_t bucket_of)
+{
+    fill_ctx_t f = {.entries = entries, .next = next, .bucket_of = bucket_of};
     cell_cache_init(&f.cache);
-    for (size_t i = 0; i < h->n; i++) {
-        if (!listed(h, i, include_zero) || grid_owner(h, i, width, g->num_parts) != p) continue;
+    const size_t n = h->n;
+    /* One part: the lane's range of indices (lane_of's inverse); several: every index. */
+    const size_t lo = g->num_parts > 1 ? 0 : (n * (size_t)l + (size_t)lanes - 1) / (size_t)lanes;
+    const size_t hi = g->num_parts > 1 ? n : (n * (size_t)(l + 1) + (size_t)lanes - 1) / (size_t)lanes;
+    for (size_t i = lo; i < hi; i++) {
+        if (!listed(h, i, include_zero) || lane_of(g, h, width, lanes, i) != l) continue;
         f.hp = (uint32_t)i;
         each_cell(g, &h->hot[i], fill_cell, &f);
     }
@@ -241,10 +256,11 @@ static uint32_t hashed_bucket(const grid_t *g, cell_cache_t *cache, int64_t ix, 
  * every (hit point, cell) pair only to count them cost as much as the numbering itself. */
 typedef struct {
     grid_t *g;
-    uint32_t **count;     /* count[p][b + 1]: part p's entries in bucket b */
+    uint32_t **count;     /* count[l][b + 1]: lane l's entries in bucket b */
+    int lanes;
     size_t cap;           /* buckets the count arrays hold */
     size_t distinct;      /* buckets numbered */
-    int part;             /* the owner of the hit point being visited */
+    int part;             /* the lane of the hit point being visited */
     int failed;
     grid_slot_t *table;   /* hashed: open addressing on packed cell keys */
     size_t mask;
@@ -256,7 +272,7 @@ static int new_bucket(number_ctx_t *c, uint32_t *b)
 {
     if (c->distinct == c->cap) {
         const size_t cap = c->cap ? 2 * c->cap : 1024;
-        for (int p = 0; p < c->g->num_parts; p++) {
+        for (int p = 0; p < c->lanes; p++) {
             uint32_t *a = realloc(c->count[p], (cap + 1) * sizeof *a);
             if (!a) return -1;
             memset(a + (c->cap ? c->cap + 1 : 0), 0, (cap - c->cap + (c->cap ? 0 : 1)) * sizeof *a);
@@ -325,51 +341,89 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
 
 /* Number the distinct cells that listed hit points touch (in a dense array of every cell when the
  * grid is small enough, else in an open-addressing table of packed keys, its size a power of two
- * of at least 4/3 of the distinct cells) and count each part's entries. Sets g->num_buckets,
- * g->dense or g->table, and g->parts with their counts. (The table's buckets were once its slots,
- * in hash order: at 1600x1200 the screening then walked the hit points in random order. A first
- * table sized for every (hit point, cell) pair took 512 MB at 1600x1200.) */
-static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
+ * of at least 4/3 of the distinct cells) and count each lane's entries into count[0 .. lanes)
+ * (NULL on entry; the caller frees them). Sets g->num_buckets and g->dense or g->table. (The
+ * table's buckets were once its slots, in hash order: at 1600x1200 the screening then walked the
+ * hit points in random order. A first table sized for every (hit point, cell) pair took 512 MB at
+ * 1600x1200.) 0 or -1 (memory). */
+static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, int lanes, uint32_t **count)
 {
     const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
     const int dense = cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED");
-    number_ctx_t c = {.g = g};
+    number_ctx_t c = {.g = g, .count = count, .lanes = lanes};
     cell_cache_init(&c.cache);
-    c.count = calloc((size_t)g->num_parts, sizeof *c.count);
     uint32_t first;
-    int rc = -1;
-    if (!c.count || new_bucket(&c, &first)) goto done;   /* the arrays made: bucket 0 taken back below */
+    if (new_bucket(&c, &first)) return -1;   /* the arrays made: bucket 0 taken back */
     c.distinct = 0;
     if (dense) {
         g->dense = malloc(cells * sizeof *g->dense);
-        if (!g->dense) goto done;
+        if (!g->dense) return -1;
         memset(g->dense, 0xFF, cells * sizeof *g->dense);
     } else if (hash_alloc(&c, 1024)) {
-        goto done;
+        return -1;
     }
     for (size_t i = 0; i < h->n && !c.failed; i++) {
         if (!listed(h, i, include_zero)) continue;
-        c.part = grid_owner(h, i, width, g->num_parts);
+        c.part = lane_of(g, h, width, lanes, i);
         each_cell(g, &h->hot[i], dense ? number_dense : number_hashed, &c);
     }
     g->table = c.table;   /* grid_free frees it on every path from here */
     g->table_mask = c.mask;
-    if (c.failed) goto done;
+    if (c.failed) return -1;
     g->num_buckets = c.distinct ? c.distinct : 1;
+    return 0;
+}
+
+/* The parts' start[] and entries from the lanes' counts, and each lane's first entry of every
+ * bucket in its own count array: with several parts a lane is a part (its counts become its
+ * start[], which the fill advances); with one, lane l's entries of bucket b follow lanes 0 .. l-1's.
+ * 0 or -1 (memory). */
+static int lay_out_lanes(grid_t *g, int lanes, uint32_t **count, uint32_t **next, char *err, size_t errlen)
+{
+    const size_t nb = g->num_buckets;
     g->parts = calloc((size_t)g->num_parts, sizeof *g->parts);
-    if (!g->parts) goto done;
-    for (int p = 0; p < g->num_parts; p++) {
-        uint32_t *a = realloc(c.count[p], (g->num_buckets + 1) * sizeof *a);   /* give back the growth */
-        g->parts[p].start = a ? a : c.count[p];
-        c.count[p] = NULL;
+    if (!g->parts) goto oom;
+    if (g->num_parts > 1) {
+        for (int p = 0; p < g->num_parts; p++) {
+            uint32_t *a = realloc(count[p], (nb + 1) * sizeof *a);   /* give back the growth */
+            g->parts[p].start = a ? a : count[p];
+            count[p] = NULL;
+            if (finish_counts(&g->parts[p], nb, err, errlen)) return -1;
+            next[p] = g->parts[p].start;
+        }
+        return 0;
     }
-    rc = 0;
-done:
-    if (c.count)
-        for (int p = 0; p < g->num_parts; p++) free(c.count[p]);
-    free(c.count);
-    if (rc) snprintf(err, errlen, "out of memory for the hit-point grid");
-    return rc;
+    grid_part_t *part = &g->parts[0];
+    part->start = calloc(nb + 1, sizeof *part->start);
+    if (!part->start) goto oom;
+    for (size_t b = 0; b < nb; b++)
+        for (int l = 0; l < lanes; l++) part->start[b + 1] += count[l][b + 1];
+    if (finish_counts(part, nb, err, errlen)) return -1;
+    for (size_t b = 0; b < nb; b++) {
+        uint32_t at = part->start[b];
+        for (int l = 0; l < lanes; l++) {
+            const uint32_t n = count[l][b + 1];   /* read before bucket b + 1's offset overwrites it */
+            count[l][b] = at;
+            at += n;
+        }
+    }
+    for (int l = 0; l < lanes; l++) next[l] = count[l];
+    return 0;
+oom:
+    snprintf(err, errlen, "out of memory for the hit-point grid");
+    return -1;
+}
+
+/* Lanes of the one-part grid's counting and filling: one a thread, none below a few thousand hit
+ * points a lane. */
+#define FILL_LANES_MAX 64
+static int fill_lanes(const grid_t *g, size_t n)
+{
+    if (g->num_parts > 1) return g->num_parts;
+    int t = omp_get_max_threads();
+    if (t > FILL_LANES_MAX) t = FILL_LANES_MAX;
+    while (t > 1 && n / (size_t)t < 4096) t--;
+    return t;
 }
 
 static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, char *err, size_t errlen)
@@ -395,21 +449,32 @@ static int build_cells(grid_t *g, const hitpoints_t *h, int width, int include_z
     }
     g->zero_weight_skipped = 0;
     for (size_t i = 0; i < h->n; i++) g->zero_weight_skipped += !listed(h, i, include_zero);
-    if (number_cells(g, h, width, include_zero, err, errlen)) return -1;
-    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); return -1; }
+    const int lanes = fill_lanes(g, h->n);
+    uint32_t **count = calloc((size_t)lanes, sizeof *count), **next = calloc((size_t)lanes, sizeof *next);
+    int rc = -1;
+    if (!count || !next || number_cells(g, h, width, include_zero, lanes, count)) {
+        snprintf(err, errlen, "out of memory for the hit-point grid");
+        goto done;
+    }
+    if (stop_requested(g->stop)) { snprintf(err, errlen, STOP_MESSAGE); goto done; }
+    if (lay_out_lanes(g, lanes, count, next, err, errlen)) goto done;
     bucket_of_t bucket_of = g->dense ? dense_bucket : hashed_bucket;
-    /* Parts are filled in parallel: each walks the hit points it owns. */
-    int failed = 0;
-#pragma omp parallel for schedule(static, 1) num_threads(g->num_parts) reduction(| : failed)
-    for (int p = 0; p < g->num_parts; p++) {
+    /* The lanes are filled in parallel. */
+#pragma omp parallel for schedule(static, 1) num_threads(lanes)
+    for (int l = 0; l < lanes; l++)
+        cells_fill(g, h, width, include_zero, lanes, l, g->parts[g->num_parts > 1 ? l : 0].hp, next[l], bucket_of);
+    /* Several parts: filling advanced start[s] to the end of bucket s: shift back. */
+    for (int p = 0; g->num_parts > 1 && p < g->num_parts; p++) {
         grid_part_t *part = &g->parts[p];
-        if (finish_counts(part, g->num_buckets, err, errlen)) { failed = 1; continue; }
-        cells_fill(g, h, width, include_zero, p, bucket_of);
-        /* Filling advanced start[s] to the end of bucket s: shift back. */
         for (size_t sl = g->num_buckets; sl > 0; sl--) part->start[sl] = part->start[sl - 1];
         part->start[0] = 0;
     }
-    return failed ? -1 : 0;
+    rc = 0;
+done:
+    for (int l = 0; count && l < lanes; l++) free(count[l]);
+    free(count);
+    free(next);
+    return rc;
 }
 
 static int build_brute(grid_t *g, const hitpoints_t *h, int width, char *err, size_t errlen)

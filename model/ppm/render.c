@@ -146,7 +146,7 @@ static int open_eye(render_session_t *s, const char **phase, char *err, size_t e
  * state, the owners and the grid. *phase names the step under way. Returns 0 or -1 (err filled). */
 /* The spatial order sorts the hit points by owning part first, so the owners are ranges: the
  * screening's routing compares with their ends instead of reading owner[] (a miss a kept
- * candidate at 1600x1200). 0, or -1 (memory). */
+ * candidate at 1600x1200), and one rank frees owner[] (2 bytes a hit point). 0, or -1 (memory). */
 static int owner_ranges(render_session_t *s)
 {
     const size_t n = s->res->hp.n;
@@ -160,6 +160,9 @@ static int owner_ranges(render_session_t *s)
     if (i < n) {   /* not sorted by part: keep owner[] */
         free(s->owner_end);
         s->owner_end = NULL;
+    } else if (s->nranks <= 1) {   /* the ranges say it all (the distributed render reads owner[]) */
+        free(s->owner);
+        s->owner = NULL;
     }
     return 0;
 }

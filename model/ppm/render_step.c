@@ -75,8 +75,9 @@ int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, u
     const int T = s->T;
     int failed = update_batch_prepare(&s->batch, s->bb->chunk, TRACE_CHUNKS * blocks, s->grid.num_buckets);
     s->batch.owner = owner;
-    /* The ranges stand for owner[] only where they describe it: this rank's own parts. */
-    s->batch.owner_end = owner && owner == s->owner ? s->owner_end : NULL;
+    /* The ranges stand for owner[] only where they describe it: this rank's own parts (owner[]
+     * itself is freed where they do, so the caller passes NULL). */
+    s->batch.owner_end = owner == s->owner ? s->owner_end : NULL;
     s->batch.parts = lists;
     for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], lists);
     if (failed) return -1;
