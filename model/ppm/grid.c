@@ -223,11 +223,13 @@ static void cells_fill(grid_t *g, const hitpoints_t *h, int width, int include_z
     fill_ctx_t f = {.entries = entries, .next = next, .bucket_of = bucket_of};
     cell_cache_init(&f.cache);
     const size_t n = h->n;
-    /* One part: the lane's range of indices (lane_of's inverse); several: every index. */
-    const size_t lo = g->num_parts > 1 ? 0 : (n * (size_t)l + (size_t)lanes - 1) / (size_t)lanes;
-    const size_t hi = g->num_parts > 1 ? n : (n * (size_t)(l + 1) + (size_t)lanes - 1) / (size_t)lanes;
+    /* One part: the lane's range of indices (lane_of's inverse); several: every index, those of
+     * part l taken. */
+    const int parts = g->num_parts > 1;
+    const size_t lo = parts ? 0 : (n * (size_t)l + (size_t)lanes - 1) / (size_t)lanes;
+    const size_t hi = parts ? n : (n * (size_t)(l + 1) + (size_t)lanes - 1) / (size_t)lanes;
     for (size_t i = lo; i < hi; i++) {
-        if (!listed(h, i, include_zero) || lane_of(g, h, width, lanes, i) != l) continue;
+        if (!listed(h, i, include_zero) || (parts && lane_of(g, h, width, lanes, i) != l)) continue;
         f.hp = (uint32_t)i;
         each_cell(g, &h->hot[i], fill_cell, &f);
     }
@@ -260,26 +262,31 @@ typedef struct {
     int lanes;
     size_t cap;           /* buckets the count arrays hold */
     size_t distinct;      /* buckets numbered */
-    int part;             /* the lane of the hit point being visited */
+    int lane;             /* the lane of the hit point being visited */
     int failed;
     grid_slot_t *table;   /* hashed: open addressing on packed cell keys */
     size_t mask;
     cell_cache_t cache;
 } number_ctx_t;
 
+/* Double the count arrays (cap + 1 zeroed counts each, from 1024 buckets). 0 or -1 (memory). */
+static int grow_counts(number_ctx_t *c)
+{
+    const size_t cap = c->cap ? 2 * c->cap : 1024, held = c->cap ? c->cap + 1 : 0;
+    for (int l = 0; l < c->lanes; l++) {
+        uint32_t *a = realloc(c->count[l], (cap + 1) * sizeof *a);
+        if (!a) return -1;
+        memset(a + held, 0, (cap + 1 - held) * sizeof *a);
+        c->count[l] = a;
+    }
+    c->cap = cap;
+    return 0;
+}
+
 /* The next bucket's number in *b, the count arrays grown to hold it. 0 or -1 (memory). */
 static int new_bucket(number_ctx_t *c, uint32_t *b)
 {
-    if (c->distinct == c->cap) {
-        const size_t cap = c->cap ? 2 * c->cap : 1024;
-        for (int p = 0; p < c->lanes; p++) {
-            uint32_t *a = realloc(c->count[p], (cap + 1) * sizeof *a);
-            if (!a) return -1;
-            memset(a + (c->cap ? c->cap + 1 : 0), 0, (cap - c->cap + (c->cap ? 0 : 1)) * sizeof *a);
-            c->count[p] = a;
-        }
-        c->cap = cap;
-    }
+    if (c->distinct == c->cap && grow_counts(c)) return -1;
     *b = (uint32_t)c->distinct++;
     return 0;
 }
@@ -290,7 +297,7 @@ static void number_dense(void *ctx, const grid_t *g, int64_t ix, int64_t iy, int
     uint32_t *d = &g->dense[grid_dense_index(g, ix, iy, iz)];
     if (c->failed) return;
     if (*d == GRID_NO_BUCKET && new_bucket(c, d)) { c->failed = 1; return; }
-    c->count[c->part][*d + 1]++;
+    c->count[c->lane][*d + 1]++;
 }
 
 /* The hashed table doubles before it is three quarters full, so it stays within 8/3 of the
@@ -336,7 +343,7 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
         c->cache.key[at] = key;
         c->cache.bucket[at] = c->table[sl].bucket;
     }
-    c->count[c->part][c->cache.bucket[at] + 1]++;
+    c->count[c->lane][c->cache.bucket[at] + 1]++;
 }
 
 /* Number the distinct cells that listed hit points touch (in a dense array of every cell when the
@@ -352,9 +359,7 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_
     const int dense = cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED");
     number_ctx_t c = {.g = g, .count = count, .lanes = lanes};
     cell_cache_init(&c.cache);
-    uint32_t first;
-    if (new_bucket(&c, &first)) return -1;   /* the arrays made: bucket 0 taken back */
-    c.distinct = 0;
+    if (grow_counts(&c)) return -1;
     if (dense) {
         g->dense = malloc(cells * sizeof *g->dense);
         if (!g->dense) return -1;
@@ -364,7 +369,7 @@ static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_
     }
     for (size_t i = 0; i < h->n && !c.failed; i++) {
         if (!listed(h, i, include_zero)) continue;
-        c.part = lane_of(g, h, width, lanes, i);
+        c.lane = lane_of(g, h, width, lanes, i);
         each_cell(g, &h->hot[i], dense ? number_dense : number_hashed, &c);
     }
     g->table = c.table;   /* grid_free frees it on every path from here */

@@ -142,8 +142,6 @@ static int open_eye(render_session_t *s, const char **phase, char *err, size_t e
     return 0;
 }
 
-/* render_open's grid step: the initial radius, the spatial order of the hit points, their
- * state, the owners and the grid. *phase names the step under way. Returns 0 or -1 (err filled). */
 /* The spatial order sorts the hit points by owning part first, so the owners are ranges: the
  * screening's routing compares with their ends instead of reading owner[] (a miss a kept
  * candidate at 1600x1200), and one rank frees owner[] (2 bytes a hit point). 0, or -1 (memory). */
@@ -167,6 +165,8 @@ static int owner_ranges(render_session_t *s)
     return 0;
 }
 
+/* render_open's grid step: the initial radius, the spatial order of the hit points, their
+ * state, the owners and the grid. *phase names the step under way. Returns 0 or -1 (err filled). */
 static int open_grid(render_session_t *s, const char **phase, char *err, size_t errlen)
 {
     const render_options_t *opt = &s->opt;

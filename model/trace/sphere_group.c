@@ -22,9 +22,7 @@ void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n)
 
 #if defined(__x86_64__) && defined(__GNUC__)
 #include <immintrin.h>
-/* Lane by lane the scalar expression: separate multiplies and adds in the same order, IEEE sqrt,
- * ordered comparisons (false for NaN, as in the scalar test). A pad lane has rr = -inf: det is
- * -inf, a miss. */
+/* A ray's coordinates and eps in every lane. */
 typedef struct { __m256d ox, oy, oz, dx, dy, dz, e; } ray_lanes_t;
 
 __attribute__((target("avx2")))
@@ -34,7 +32,9 @@ static inline ray_lanes_t ray_lanes(vec3 o, vec3 d, double eps)
                          _mm256_set1_pd(d.x), _mm256_set1_pd(d.y), _mm256_set1_pd(d.z), _mm256_set1_pd(eps)};
 }
 
-/* t of spheres i .. i+3 (0 for a miss). */
+/* t of spheres i .. i+3 (0 for a miss), lane by lane the scalar expression: separate multiplies
+ * and adds in the same order, IEEE sqrt, ordered comparisons (false for NaN, as in the scalar
+ * test). A pad lane has rr = -inf: det is -inf, a miss. */
 __attribute__((target("avx2")))
 static inline __m256d t_lanes(const sphere_group_t *g, int i, const ray_lanes_t *r)
 {

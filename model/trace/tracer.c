@@ -189,7 +189,6 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
     if (scene->num_meshes == 0 && scene->num_spheres > 1 && scene->num_spheres <= SPHERE_GROUP_MAX &&
         !getenv("PREE_TRACER_EMBREE")) {
         tr->direct = 1;
-        tr->spheres_per_prim = scene->num_spheres;
         sphere_group_init(&tr->group, scene->spheres, scene->num_spheres);
         if (stop_requested(stop)) {
             snprintf(err, errlen, "%s", STOP_MESSAGE);

@@ -18,6 +18,7 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
     h->n = h->cap = n;
     h->hot = calloc(n + 1, sizeof *h->hot);
     h->pixel = calloc(n + 1, sizeof *h->pixel);
+    h->object = calloc(n + 1, sizeof *h->object);
     if (fp32) {
         h->fp32 = calloc(n + 1, sizeof *h->fp32);
         h->r2_f32 = calloc(n + 1, sizeof *h->r2_f32);
@@ -30,6 +31,7 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
     for (size_t i = 0; i < n; i++) {
         h->hot[i].px = (double)i;
         h->pixel[i] = (int32_t)(7 * i + 1);
+        h->object[i] = (uint32_t)(5 * i + 2);
         if (fp32) {
             memset(&h->fp32[i], (int)(i * 13 + 5) & 0xff, sizeof h->fp32[i]);
             memcpy(&h->fp32[i], &i, sizeof i < sizeof h->fp32[i] ? sizeof i : sizeof h->fp32[i]);
@@ -45,7 +47,7 @@ static void fill(hitpoints_t *h, size_t n, int fp32)
 
 static void release(hitpoints_t *h)
 {
-    free(h->hot); free(h->pixel); free(h->fp32); free(h->r2_f32); free(h->dark);
+    free(h->hot); free(h->pixel); free(h->object); free(h->fp32); free(h->r2_f32); free(h->dark);
     free(h->acc); free(h->r2); free(h->weight);
 }
 
@@ -56,6 +58,7 @@ static void assert_moved(const hitpoints_t *a, const hitpoints_t *b, const uint3
         const size_t j = perm ? perm[k] : k;
         assert_memory_equal(&a->hot[k], &b->hot[j], sizeof a->hot[k]);
         assert_int_equal(a->pixel[k], b->pixel[j]);
+        assert_int_equal(a->object[k], b->object[j]);
         if (a->fp32) {
             assert_memory_equal(&a->fp32[k], &b->fp32[j], sizeof a->fp32[k]);
             assert_int_equal(a->r2_f32[k], b->r2_f32[j]);
