@@ -27,48 +27,57 @@ module pree_ram_banks #(
   output wire [(1 << BankW)*Width-1:0] rdata_o
 );
 
-  localparam AW = RowW + BankW;
+  localparam AW    = RowW + BankW;
+  localparam Banks = 1 << BankW;
+
+  // Every bank's enables, addresses and data, flat (bank b's at [b], [b*RowW +: RowW] and
+  // [b*Width +: Width]), from one loop over the banks: the same AND-OR logic as a block per bank,
+  // but a loop that Verilator keeps as one (a block per bank made the 16-PREU model's C++ 2.4x
+  // larger and its build take minutes more).
+  reg [Banks-1:0]       re, we;
+  reg [Banks*RowW-1:0]  raddr, waddr;
+  reg [Banks*Width-1:0] wdata;
+  integer b, j;
+  always @* begin
+    for (b = 0; b < Banks; b = b + 1) begin
+      re[b] = 1'b0; raddr[b*RowW +: RowW] = {RowW{1'b0}};
+      we[b] = 1'b0; waddr[b*RowW +: RowW] = {RowW{1'b0}}; wdata[b*Width +: Width] = {Width{1'b0}};
+      for (j = 0; j < Lanes; j = j + 1) begin
+        if (rd_i[j] && rd_addr_i[j*AW +: BankW] == b[BankW-1:0]) begin
+          re[b] = 1'b1;
+          raddr[b*RowW +: RowW] = raddr[b*RowW +: RowW] | rd_addr_i[j*AW + BankW +: RowW];
+        end
+        if (wr_i[j] && wr_addr_i[j*AW +: BankW] == b[BankW-1:0]) begin
+          we[b] = 1'b1;
+          waddr[b*RowW +: RowW] = waddr[b*RowW +: RowW] | wr_addr_i[j*AW + BankW +: RowW];
+          wdata[b*Width +: Width] = wdata[b*Width +: Width] | wr_data_i[j*Width +: Width];
+        end
+      end
+    end
+  end
 
   genvar gb;
   generate
-    for (gb = 0; gb < (1 << BankW); gb = gb + 1) begin : g_bank
-      localparam [BankW-1:0] BANK = gb;
-      reg             re, we;
-      reg [RowW-1:0]  raddr, waddr;
-      reg [Width-1:0] wdata;
-      integer j;
-      always @* begin
-        re = 1'b0; raddr = {RowW{1'b0}};
-        we = 1'b0; waddr = {RowW{1'b0}}; wdata = {Width{1'b0}};
-        for (j = 0; j < Lanes; j = j + 1) begin
-          if (rd_i[j] && rd_addr_i[j*AW +: BankW] == BANK) begin
-            re    = 1'b1;
-            raddr = raddr | rd_addr_i[j*AW + BankW +: RowW];
-          end
-          if (wr_i[j] && wr_addr_i[j*AW +: BankW] == BANK) begin
-            we    = 1'b1;
-            waddr = waddr | wr_addr_i[j*AW + BankW +: RowW];
-            wdata = wdata | wr_data_i[j*Width +: Width];
-          end
-        end
-      end
+    for (gb = 0; gb < Banks; gb = gb + 1) begin : g_bank
       pree_ram_sdp #(.Width(Width), .AddrW(RowW)) u_ram (
-        .clk_i(clk_i), .we_i(we), .waddr_i(waddr), .wdata_i(wdata),
-        .re_i(re), .raddr_i(raddr), .rdata_o(rdata_o[gb*Width +: Width]));
-
-`ifdef PREE_ASSERT
-      integer nr, nw, k;
-      always @(posedge clk_i) begin
-        nr = 0; nw = 0;
-        for (k = 0; k < Lanes; k = k + 1) begin
-          if (rd_i[k] && rd_addr_i[k*AW +: BankW] == BANK) nr = nr + 1;
-          if (wr_i[k] && wr_addr_i[k*AW +: BankW] == BANK) nw = nw + 1;
-        end
-        if (nr > 1 || nw > 1)
-          $fatal(1, "pree_ram_banks %m: %0d reads and %0d writes in one cycle", nr, nw);
-      end
-`endif
+        .clk_i(clk_i), .we_i(we[gb]), .waddr_i(waddr[gb*RowW +: RowW]), .wdata_i(wdata[gb*Width +: Width]),
+        .re_i(re[gb]), .raddr_i(raddr[gb*RowW +: RowW]), .rdata_o(rdata_o[gb*Width +: Width]));
     end
   endgenerate
+
+`ifdef PREE_ASSERT
+  integer nb, nr, nw, k;
+  always @(posedge clk_i) begin
+    for (nb = 0; nb < Banks; nb = nb + 1) begin
+      nr = 0; nw = 0;
+      for (k = 0; k < Lanes; k = k + 1) begin
+        if (rd_i[k] && rd_addr_i[k*AW +: BankW] == nb[BankW-1:0]) nr = nr + 1;
+        if (wr_i[k] && wr_addr_i[k*AW +: BankW] == nb[BankW-1:0]) nw = nw + 1;
+      end
+      if (nr > 1 || nw > 1)
+        $fatal(1, "pree_ram_banks %m: bank %0d: %0d reads and %0d writes in one cycle", nb, nr, nw);
+    end
+  end
+`endif
 
 endmodule
