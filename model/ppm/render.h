@@ -53,7 +53,7 @@ typedef struct {
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
                               * update then runs photon-major on one thread */
     int one_rank;            /* 1: render the whole frame on this rank alone, even under MPI (each
-                              * rank of `pree cosim` under mpirun runs the whole engine) */
+                              * rank of the co-simulation under mpirun runs the whole engine) */
     /* The photon-map estimator (--estimator pm, model/pm/): the k nearest photons of each hit
      * point within max_radius, found by knn_search; photons traced in task units. */
     estimator_t estimator;   /* ESTIMATOR_PPM (default) or ESTIMATOR_PM */

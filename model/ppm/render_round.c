@@ -28,7 +28,7 @@ typedef struct { uint64_t w[3]; } seg_photon_t;   /* 3 doubles, or 6 binary32 wo
 
 int render_round_open(render_session_t *s, char *err, size_t errlen)
 {
-    s->nranks = s->opt.one_rank ? 1 : render_dist_size();   /* one_rank: pree cosim's ranks */
+    s->nranks = s->opt.one_rank ? 1 : render_dist_size();   /* one_rank: each rank renders alone */
     s->rank = s->opt.one_rank ? 0 : render_dist_rank();
     s->res->stats.mpi_ranks = s->nranks;
     if (s->nranks < 2) return 0;

@@ -1,7 +1,7 @@
 /* aftso_rule.h: the AFTSO-HpUOC accumulate-and-dispatch rule (rtl/pree_aftso_hpuoc.v, paper 000
  * Sec. IV.B widened to PhotonsPerCycle photons a cycle; docs/controllers.md), once in C. The
  * controller bench's model (tb/ctrl/aftso_model.c) and the co-simulation host's cycle model
- * (host/cosim_shadow.c) both call it; the RTL is its own copy, checked against it cycle by
+ * (the shadow in host/) both call it; the RTL is its own copy, checked against it cycle by
  * cycle (tb/ctrl/aftso_bench.cpp) and through the host's exact stall predictions.
  *
  * State: a buffer of buf_depth entries, valid ones 0..count-1 in photon order, each {first
