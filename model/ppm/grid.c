@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <omp.h>
 #include "grid_table.h"
 
 /* x86-64 cvttsd2si: truncation toward zero; out of range or NaN gives INT_MIN. */
