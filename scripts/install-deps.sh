@@ -43,7 +43,8 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
   fi
   [ -x "$venv/bin/python3" ] || python3 -m venv "$venv"
   echo "install-deps: installing ${missing[*]} into $venv" >&2
-  "$venv/bin/python3" -m pip install -q --disable-pip-version-check "${missing[@]}"
+  lock=(); [ "$1" = --fpga ] && lock=(-c "$(dirname "$0")/hw-tools.lock")   # transitive pins
+  "$venv/bin/python3" -m pip install -q --disable-pip-version-check "${lock[@]}" "${missing[@]}"
   shims "$1"
   exit 0
 fi
