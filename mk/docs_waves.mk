@@ -1,0 +1,14 @@
+# (After mk/fpga.mk, whose venv it uses.) The timing diagrams of docs/integration.md: WaveDrom
+# sources docs/wave/*.json rendered to the SVGs beside them (committed, so that the docs show
+# them) by the wavedrom package of the hardware tools' venv (`make fpga-deps`).
+#
+#   make docs-waves   render every docs/wave/*.json whose SVG is missing or older
+
+WAVE_SVG := $(patsubst %.json,%.svg,$(wildcard docs/wave/*.json))
+
+.PHONY: docs-waves
+docs-waves: $(WAVE_SVG)
+
+docs/wave/%.svg: docs/wave/%.json | $(FPGA_STAMP)
+	$(abspath $(FPGA_VENV))/bin/wavedrompy --input $< --svg $@.tmp
+	mv $@.tmp $@

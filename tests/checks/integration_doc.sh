@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# docs/integration.md against the product: its instantiation example (the ```verilog block) is
+# lint-clean with pree_axi (verilator --lint-only -Wall through rtl/pree.f); every timing diagram
+# it shows exists, and each docs/wave/*.json renders (wavedrom, the hardware tools' venv:
+# FPGA_VENV, default build/fpga-venv) to exactly the SVG committed beside it (`make docs-waves`).
+# cost: 8 (its seconds in a serial run; the runner starts costly checks first)
+source "$(dirname "$0")/../lib/check.sh"
+cd "$ROOT"
+doc=docs/integration.md
+awk '/^```verilog$/ { f = 1; n++; next } /^```$/ { f = 0 } f && n == 1' "$doc" > "$TMP/pree_example.v"
+grep -q '^module pree_example' "$TMP/pree_example.v" || fail "$doc: no \`\`\`verilog block with module pree_example"
+run verilator --lint-only -Wall -Irtl --top-module pree_example -f rtl/pree.f "$TMP/pree_example.v"
+echo "ok: $doc's instantiation example is lint-clean"
+
+venv=${FPGA_VENV:-${BUILD:-build}/fpga-venv}
+[ -x "$venv/bin/wavedrompy" ] || fail "no wavedrompy in $venv (make fpga-deps)"
+refs=$(grep -o '(wave/[a-z_]*\.svg)' "$doc" | tr -d '()' | sort -u)
+[ -n "$refs" ] || fail "$doc shows no docs/wave diagram"
+for r in $refs; do
+  [ -f "docs/${r%.svg}.json" ] || fail "$doc shows $r, but docs/${r%.svg}.json does not exist"
+done
+n=0
+for src in docs/wave/*.json; do
+  svg=${src%.json}.svg
+  run "$venv/bin/wavedrompy" --input "$src" --svg "$TMP/out.svg" >/dev/null
+  cmp -s "$TMP/out.svg" "$svg" || fail "$svg is not $src rendered (make docs-waves)"
+  n=$((n + 1))
+done
+echo "ok: $n diagrams, each SVG its source's rendering; $(echo "$refs" | wc -l) shown in $doc"
