@@ -1,6 +1,8 @@
 # (After mk/fpga.mk, whose venv it uses.) The timing diagrams of docs/integration.md: WaveDrom
 # sources docs/wave/*.json rendered to the SVGs beside them (committed, so that the docs show
-# them) by the wavedrom package of the hardware tools' venv (`make fpga-deps`).
+# them) by the wavedrom package of the hardware tools' venv (`make fpga-deps`). Their port rows
+# are checked against pree_axi by tests/checks/integration_doc.sh (tb/axi/axi_wave_tb.v,
+# scripts/wave_check.py).
 #
 #   make docs-waves   render every docs/wave/*.json whose SVG is missing or older
 
