@@ -3,7 +3,8 @@
 # pree_axi, the repository as the cores root, no network) passes; rtl/pree.f is what `make pree-f`
 # generates from the core (the same files in FuseSoC's order); the core's parameters are exactly
 # pree_axi's overridable ones (those not marked "do not override"), and so are those of the pnr
-# target's top, tb/fpga/pree_fpga_axi_wrap.v, which is lint-clean too. FuseSoC from the hardware
+# target's top, tb/fpga/pree_fpga_axi_wrap.v, which is lint-clean too; the core's version is
+# pree_axi's PREE_VERSION. FuseSoC from the hardware
 # tools' venv (FPGA_VENV, default build/fpga-venv; make test installs it).
 # cost: 10 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
@@ -40,3 +41,9 @@ wrap_params=$(params pree_fpga_axi_wrap tb/fpga/pree_fpga_axi_wrap.v)
   || fail "tb/fpga/pree_fpga_axi_wrap.v and pree_axi differ in parameters (< pree_axi.v, > wrapper): $(diff <(echo "$rtl_params") <(echo "$wrap_params") | grep '^[<>]' | tr '\n' ' ')"
 run verilator --lint-only -Wall -Irtl --top-module pree_fpga_axi_wrap -f rtl/pree.f tb/fpga/pree_fpga_fold.v tb/fpga/pree_fpga_axi_wrap.v
 echo "ok: the pnr target's top passes pree_axi's parameters and is lint-clean"
+
+v=$(sed -n "s/.*localparam \[31:0\] PREE_VERSION = 32'h\([0-9a-fA-F_]*\);.*/\1/p" rtl/pree_axi.v | tr -d _)
+[ ${#v} = 8 ] || fail "no PREE_VERSION = 32'hXXXX_XXXX in rtl/pree_axi.v"
+rtl_ver=$((16#${v:2:2})).$((16#${v:4:2})).$((16#${v:6:2}))
+core_ver=$(sed -n 's/^name: .*:\([^:]*\)$/\1/p' pree.core)
+expect_eq "pree.core's version (pree_axi's PREE_VERSION $rtl_ver)" "$core_ver" "$rtl_ver"
