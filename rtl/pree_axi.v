@@ -262,7 +262,7 @@ module pree_axi #(
   wire [CntW-1:0] ph_in_n = s_axis_ph_tdata[192 +: CntW];
   wire            ph_take = s_axis_ph_tvalid && s_axis_ph_tready;
   wire            ph_push = ph_take && ph_in_n != {CntW{1'b0}};
-  assign s_axis_ph_tready = !phf_full && state_q == S_IDLE;
+  assign s_axis_ph_tready = rst_n && !phf_full && state_q == S_IDLE;
   assign ph_big = ph_take && {{(32-CntW){1'b0}}, ph_in_n} > IDX_ROOM;
 
   wire [31:0] head_end = phf_end_q[rp];
@@ -305,7 +305,7 @@ module pree_axi #(
   reg  [NumPreu*HpAW-1:0]  idx_data;
   reg  [31:0]              cand_n;
   wire [31:0] used = wr_cnt_q - ret_q;
-  assign s_axis_cand_tready = state_q == S_IDLE && used <= IDX_ROOM;
+  assign s_axis_cand_tready = rst_n && state_q == S_IDLE && used <= IDX_ROOM;
   wire cand_take = s_axis_cand_tvalid && s_axis_cand_tready;
 
   always @* begin : cand_lanes
@@ -342,7 +342,7 @@ module pree_axi #(
   wire        issue    = rd_state && more && (!rd_pend_q || move);
   wire        px_clr   = state_q == S_PX_CLEAR && more;
   assign hp_take  = s_axis_hp_tvalid && s_axis_hp_tready;
-  assign s_axis_hp_tready = all_idle;
+  assign s_axis_hp_tready = rst_n && all_idle;
   assign cmd_done = (rd_state && !more && !rd_pend_q && !m_valid_q) ||
                     (state_q == S_PX_CLEAR && !more) || (state_q == S_RAD_WAIT && core_idle);
 

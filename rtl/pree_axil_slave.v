@@ -9,6 +9,8 @@
 // pulses with rd_addr_o and rd_data_i (combinational from rd_addr_o in the parent) is captured
 // into RDATA; RVALID (OKAY) follows on the next edge, held until RREADY.
 // One transaction of each kind in flight: a new one is taken in the cycle after B/R completes.
+// Nothing is taken while rst_ni is low (AWREADY, WREADY and ARREADY low), so that a request made
+// while a synchronised reset is still being released is taken, and answered, once it ends.
 // Every response is OKAY; addresses are byte addresses, the low two bits ignored.
 // Parameters: AddrW address bits.
 `default_nettype none
@@ -49,15 +51,15 @@ module pree_axil_slave #(
   reg        bvalid_q, rvalid_q;
   reg [31:0] rdata_q;
 
-  assign wr_o      = awvalid_i && wvalid_i && !bvalid_q;
+  assign wr_o      = rst_ni && awvalid_i && wvalid_i && !bvalid_q;
   assign awready_o = wr_o;
   assign wready_o  = wr_o;
   assign wr_addr_o = awaddr_i;
   assign wr_data_o = wdata_i;
   assign wr_strb_o = wstrb_i;
 
-  assign rd_o      = arvalid_i && !rvalid_q;
-  assign arready_o = !rvalid_q;
+  assign rd_o      = arvalid_i && arready_o;
+  assign arready_o = rst_ni && !rvalid_q;
   assign rd_addr_o = araddr_i;
 
   always @(posedge clk_i or negedge rst_ni) begin
