@@ -1,0 +1,170 @@
+// pree_axi_fv: the formal harness of pree_axi (job formal/axi; docs/formal.md). The wrapper with
+// small parameters around the pree_top stub (pree_top_stub.v), every port checked by the
+// interface property modules of formal/lib, the environment's assumptions, and the wrapper's
+// own properties: no deadlock, counters through wrap-around, the covers.
+//
+// Taps: the f_t_* wires have no driver here; taps.ys connects each to a register inside the
+// wrapper after flattening (SymbiYosys reads it), so that the RTL stays free of formal code and
+// the harness can state invariants on its state.
+`default_nettype none
+
+module pree_axi_fv #(
+  parameter NumPreu  = 2,
+  parameter HpAW     = 4,
+  parameter HpBankW  = 1,
+  parameter IdxAW    = 3,
+  parameter PxAW     = 3,
+  parameter PxBankW  = 1,
+  parameter CntW     = 3,
+  parameter PhFifoAW = 1,
+  parameter RingAW   = 2,
+  parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
+  parameter StuckMax = 12,  // no deadlock: cycles with work pending and no progress
+  parameter Live     = 0    // 1: prove no deadlock (job formal/axi_live), else the rest
+) (
+  input wire aclk,
+  input wire aresetn,
+  input wire [11:0] s_axil_awaddr, input wire s_axil_awvalid,
+  input wire [31:0] s_axil_wdata, input wire [3:0] s_axil_wstrb, input wire s_axil_wvalid,
+  input wire s_axil_bready,
+  input wire [11:0] s_axil_araddr, input wire s_axil_arvalid, input wire s_axil_rready,
+  input wire [223:0] s_axis_ph_tdata, input wire s_axis_ph_tlast, input wire s_axis_ph_tvalid,
+  input wire [32*NumPreu-1:0] s_axis_cand_tdata, input wire [4*NumPreu-1:0] s_axis_cand_tkeep,
+  input wire s_axis_cand_tvalid,
+  input wire [32+192+160-1:0] s_axis_hp_tdata, input wire s_axis_hp_tvalid,
+  input wire m_axis_tready
+);
+
+  localparam HpRecW = 32 + 192 + 160;
+  localparam [31:0] IDX_ROOM = (32'd1 << IdxAW) - NumPreu;
+
+  wire s_axil_awready, s_axil_wready, s_axil_bvalid, s_axil_arready, s_axil_rvalid;
+  wire [1:0] s_axil_bresp, s_axil_rresp;
+  wire [31:0] s_axil_rdata;
+  wire s_axis_ph_tready, s_axis_cand_tready, s_axis_hp_tready;
+  wire [HpRecW-1:0] m_axis_tdata;
+  wire m_axis_tuser, m_axis_tlast, m_axis_tvalid, irq_o;
+
+  pree_axi #(
+    .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
+    .PxBankW(PxBankW), .CntW(CntW), .PhFifoAW(PhFifoAW), .RingAW(RingAW)
+  ) u_dut (
+    .aclk(aclk), .aresetn(aresetn),
+    .s_axil_awaddr(s_axil_awaddr), .s_axil_awvalid(s_axil_awvalid), .s_axil_awready(s_axil_awready),
+    .s_axil_wdata(s_axil_wdata), .s_axil_wstrb(s_axil_wstrb), .s_axil_wvalid(s_axil_wvalid),
+    .s_axil_wready(s_axil_wready), .s_axil_bresp(s_axil_bresp), .s_axil_bvalid(s_axil_bvalid),
+    .s_axil_bready(s_axil_bready), .s_axil_araddr(s_axil_araddr), .s_axil_arvalid(s_axil_arvalid),
+    .s_axil_arready(s_axil_arready), .s_axil_rdata(s_axil_rdata), .s_axil_rresp(s_axil_rresp),
+    .s_axil_rvalid(s_axil_rvalid), .s_axil_rready(s_axil_rready),
+    .s_axis_ph_tdata(s_axis_ph_tdata), .s_axis_ph_tlast(s_axis_ph_tlast),
+    .s_axis_ph_tvalid(s_axis_ph_tvalid), .s_axis_ph_tready(s_axis_ph_tready),
+    .s_axis_cand_tdata(s_axis_cand_tdata), .s_axis_cand_tkeep(s_axis_cand_tkeep),
+    .s_axis_cand_tvalid(s_axis_cand_tvalid), .s_axis_cand_tready(s_axis_cand_tready),
+    .s_axis_hp_tdata(s_axis_hp_tdata), .s_axis_hp_tvalid(s_axis_hp_tvalid),
+    .s_axis_hp_tready(s_axis_hp_tready),
+    .m_axis_tdata(m_axis_tdata), .m_axis_tuser(m_axis_tuser), .m_axis_tlast(m_axis_tlast),
+    .m_axis_tvalid(m_axis_tvalid), .m_axis_tready(m_axis_tready), .irq_o(irq_o));
+
+  reg f_past_valid = 1'b0;
+  always @(posedge aclk) f_past_valid <= 1'b1;
+  initial assume (!aresetn);
+
+  // ---------------------------------------------------------------------------------------------
+  // Every port's interface rules.
+  wire [3:0] f_aw_out, f_w_out, f_ar_out, f_wwait, f_rwait;
+  pree_faxil_slave #(.AddrW(12), .MaxOut(1), .MaxStall(StallMax), .MaxWait(4)) f_axil (
+    .clk_i(aclk), .rst_ni(aresetn),
+    .awaddr(s_axil_awaddr), .awvalid(s_axil_awvalid), .awready(s_axil_awready),
+    .wdata(s_axil_wdata), .wstrb(s_axil_wstrb), .wvalid(s_axil_wvalid), .wready(s_axil_wready),
+    .bresp(s_axil_bresp), .bvalid(s_axil_bvalid), .bready(s_axil_bready),
+    .araddr(s_axil_araddr), .arvalid(s_axil_arvalid), .arready(s_axil_arready),
+    .rdata(s_axil_rdata), .rresp(s_axil_rresp), .rvalid(s_axil_rvalid), .rready(s_axil_rready),
+    .f_aw_out_o(f_aw_out), .f_w_out_o(f_w_out), .f_ar_out_o(f_ar_out), .f_wwait_o(f_wwait),
+    .f_rwait_o(f_rwait));
+
+  pree_faxis #(.DataW(224), .SrcIsDut(0)) f_ph (
+    .clk_i(aclk), .rst_ni(aresetn), .tvalid(s_axis_ph_tvalid), .tready(s_axis_ph_tready),
+    .tdata(s_axis_ph_tdata), .tlast(s_axis_ph_tlast), .tkeep(1'b1), .tuser(1'b1), .f_stall_o());
+  pree_faxis #(.DataW(32*NumPreu), .KeepW(4*NumPreu), .SrcIsDut(0)) f_cand (
+    .clk_i(aclk), .rst_ni(aresetn), .tvalid(s_axis_cand_tvalid), .tready(s_axis_cand_tready),
+    .tdata(s_axis_cand_tdata), .tlast(1'b1), .tkeep(s_axis_cand_tkeep), .tuser(1'b1),
+    .f_stall_o());
+  pree_faxis #(.DataW(HpRecW), .SrcIsDut(0)) f_hp (
+    .clk_i(aclk), .rst_ni(aresetn), .tvalid(s_axis_hp_tvalid), .tready(s_axis_hp_tready),
+    .tdata(s_axis_hp_tdata), .tlast(1'b1), .tkeep(1'b1), .tuser(1'b1), .f_stall_o());
+  wire [7:0] f_m_stall;
+  pree_faxis #(.DataW(HpRecW), .SrcIsDut(1), .MaxStall(StallMax)) f_m (
+    .clk_i(aclk), .rst_ni(aresetn), .tvalid(m_axis_tvalid), .tready(m_axis_tready),
+    .tdata(m_axis_tdata), .tlast(m_axis_tlast), .tkeep(1'b1), .tuser(m_axis_tuser),
+    .f_stall_o(f_m_stall));
+
+  // ---------------------------------------------------------------------------------------------
+  // Taps into the wrapper (taps.ys).
+  (* keep *) wire [2:0]  f_t_state;
+  (* keep *) wire [31:0] f_t_wr_cnt, f_t_cum_in, f_t_given, f_t_ret, f_t_ci, f_t_taken, f_t_done;
+  (* keep *) wire        f_t_all_idle, f_t_rst_n;
+  (* keep *) wire [31:0] f_t_head_end;
+  (* keep *) wire [PhFifoAW:0] f_t_phf_wp, f_t_phf_rp;
+
+  // ---------------------------------------------------------------------------------------------
+  // The environment (the host's contract, docs/integration.md): a photon's N^P fits the index
+  // table; the host supplies the candidates that accepted photons still need, and the photons
+  // of candidates sent ahead (fair streams).
+  wire [31:0] f_owed = f_t_cum_in - f_t_wr_cnt;   // candidates of accepted photons not yet in
+  always @* if (aresetn) begin
+    if (s_axis_ph_tvalid) assume ({{(32-CntW){1'b0}}, s_axis_ph_tdata[192 +: CntW]} <= IDX_ROOM);
+    if (f_t_rst_n && f_owed != 32'd0 && !f_owed[31]) assume (s_axis_cand_tvalid);
+    if (f_t_rst_n && f_owed[31]) assume (s_axis_ph_tvalid);
+  end
+
+  // ---------------------------------------------------------------------------------------------
+  // No deadlock: while work is pending (the wrapper or the engine busy, or a photon or candidate
+  // offered), something moves within StuckMax cycles: a stream beat, a photon into or out of the
+  // engine, a command step.
+  reg [2:0]  f_state_q;
+  reg [31:0] f_given_q, f_done_q, f_ci_q;
+  always @(posedge aclk) begin
+    f_state_q <= f_t_state; f_given_q <= f_t_given; f_done_q <= f_t_done; f_ci_q <= f_t_ci;
+  end
+  wire f_progress = (s_axis_ph_tvalid && s_axis_ph_tready) ||
+                    (s_axis_cand_tvalid && s_axis_cand_tready) ||
+                    (m_axis_tvalid && m_axis_tready) ||
+                    (f_past_valid && (f_t_state != f_state_q || f_t_given != f_given_q ||
+                                      f_t_done != f_done_q || f_t_ci != f_ci_q));
+  wire f_pending = !f_t_all_idle || s_axis_ph_tvalid || s_axis_cand_tvalid;
+  reg [4:0] f_stuck_q = 5'd0;
+  always @(posedge aclk)
+    f_stuck_q <= (!aresetn || !f_t_rst_n || !f_pending || f_progress) ? 5'd0 : f_stuck_q + 5'd1;
+  generate
+    if (Live != 0) begin : g_live
+      always @* assert (f_stuck_q < StuckMax);
+    end
+  endgenerate
+
+  // ---------------------------------------------------------------------------------------------
+  // Invariants of the wrapper's state (they hold from reset; stated for induction).
+  wire [PhFifoAW:0] f_phf_n = f_t_phf_wp - f_t_phf_rp;   // photons in the FIFO
+  always @* if (aresetn) begin
+    assert (f_aw_out == {3'd0, s_axil_bvalid} && f_w_out == {3'd0, s_axil_bvalid});
+    assert (f_ar_out == {3'd0, s_axil_rvalid});
+    assert (f_t_given == f_t_taken);
+    assert (f_t_state <= 3'd5);
+    assert (f_phf_n <= (1 << PhFifoAW));
+    assert (f_t_given - f_t_done < (1 << RingAW));
+  end
+  // ---------------------------------------------------------------------------------------------
+  // Covers: the events the proof must reach, so that none of it is vacuous.
+  always @* if (aresetn && f_t_rst_n) begin
+    cover (s_axis_ph_tvalid && !s_axis_ph_tready);               // a stalled photon stream
+    cover (s_axis_cand_tvalid && !s_axis_cand_tready && f_t_state == 3'd0);
+    cover (m_axis_tvalid && !m_axis_tready);                     // a stalled result stream
+    cover (m_axis_tvalid && m_axis_tready && m_axis_tlast);      // a read command's last beat
+    cover (irq_o);                                               // an interrupt raised
+    cover (f_phf_n == (1 << PhFifoAW));                          // photon FIFO full
+    cover (f_t_wr_cnt - f_t_ret == (32'd1 << IdxAW));            // index table full
+    cover (s_axil_bvalid && s_axil_rvalid);                      // a write and a read answered
+  end
+
+endmodule
+
+`default_nettype wire
