@@ -67,13 +67,13 @@ module axi_wave_tb;
   // One cycle's samples of the current diagram, printed in the middle of the cycle.
   reg [8*16-1:0] diagram = "";
   integer scen = 0;
-  task bus;   // a bus sample: x without a beat, else the beat number
+  task put_bus;   // a bus sample: x without a beat, else the beat number
     input held; input integer n;
     begin
       if (held) $write(" b%0d", n); else $write(" x");
     end
   endtask
-  task bit;
+  task put_bit;
     input v;
     begin
       $write(" %b", v);
@@ -83,23 +83,23 @@ module axi_wave_tb;
     $write("SMP %0s", diagram);
     case (scen)
       1: begin   // stream_hp
-        bit(hp_valid); bus(hp_valid, hp_n); bit(hp_ready);
+        put_bit(hp_valid); put_bus(hp_valid, hp_n); put_bit(hp_ready);
       end
       2: begin   // stream_ph_cand
-        bit(ph_valid); bus(ph_valid, ph_n); bit(ph_last); bit(ph_ready);
-        bit(cand_valid); bus(cand_valid && &cand_keep[3:0], cand_n);
-        bus(cand_valid && &cand_keep[7:4], cand_n); bus(cand_valid && &cand_keep[11:8], cand_n);
-        bus(cand_valid && &cand_keep[15:12], cand_n); bus(cand_valid, cand_n); bit(cand_ready);
-        bit(irq);
+        put_bit(ph_valid); put_bus(ph_valid, ph_n); put_bit(ph_last); put_bit(ph_ready);
+        put_bit(cand_valid); put_bus(cand_valid && &cand_keep[3:0], cand_n);
+        put_bus(cand_valid && &cand_keep[7:4], cand_n); put_bus(cand_valid && &cand_keep[11:8], cand_n);
+        put_bus(cand_valid && &cand_keep[15:12], cand_n); put_bus(cand_valid, cand_n); put_bit(cand_ready);
+        put_bit(irq);
       end
       3: begin   // stream_m
-        bus(awvalid && wvalid, aw_n); bit(m_valid); bus(m_valid, m_n); bit(m_user); bit(m_last);
-        bit(m_ready); bit(irq);
+        put_bus(awvalid && wvalid, aw_n); put_bit(m_valid); put_bus(m_valid, m_n); put_bit(m_user); put_bit(m_last);
+        put_bit(m_ready); put_bit(irq);
       end
       4: begin   // axil_cmd
-        bit(awvalid); bus(awvalid, aw_n); bit(wvalid); bus(wvalid, aw_n); bit(awready && wready);
-        bit(bvalid); bit(bready); bit(arvalid); bus(arvalid, ar_n); bit(arready); bit(rvalid);
-        bus(rvalid, r_n); bit(rready); bit(irq);
+        put_bit(awvalid); put_bus(awvalid, aw_n); put_bit(wvalid); put_bus(wvalid, aw_n); put_bit(awready && wready);
+        put_bit(bvalid); put_bit(bready); put_bit(arvalid); put_bus(arvalid, ar_n); put_bit(arready); put_bit(rvalid);
+        put_bus(rvalid, r_n); put_bit(rready); put_bit(irq);
       end
       default: ;
     endcase
