@@ -19,15 +19,23 @@
 // order; any NumPreu consecutive candidates lie in distinct index banks (no stage-A conflict and
 // a conflict-free load port). A photon is offered to pree_top once all its candidates are written
 // (registered count), and an entry is overwritten only after pree_top has counted its photon
-// done (photons_done_o; a ring of the in-flight photons' candidate ends). Photons with N^P = 0
-// are dropped here. The mode (update / radiance) is the command engine's: radiance only while
-// CMD 1 runs. Streams and commands never overlap: streams move only while no command runs, and
-// a command starts only when everything is idle.
+// done (photons_done_o; a ring of the in-flight photons' candidate ends; the candidates retired
+// follow each move of photons_done_o, never its value, which wraps to 0). Every running count
+// (photons and candidates) is CountW bits and wraps; the wrapper compares them only as
+// differences modulo 2^CountW, which its parameter check keeps below 2^(CountW-1). Photons with
+// N^P = 0 are dropped here. The mode (update / radiance) is the command engine's: radiance only
+// while CMD 1 runs. Streams and commands never overlap: streams move only while no command runs,
+// and a command starts only when everything is idle.
 //
 // Parameters: those of pree_top, and PhotonsPerCycle (photons a beat on s_axis_ph; 1 only until
 // pree_top's wide intake lands: the slots of one beat then share tvalid/tready and a slot with
 // N^P = 0 is empty), PhFifoAW (log2 of the photon FIFO depth), RingAW (log2 of the in-flight
-// photon ring: at most 2^RingAW - 1 photons between pree_top's intake and photons_done_o).
+// photon ring: at most 2^RingAW - 1 photons between pree_top's intake and photons_done_o),
+// CountW (bits of the running counts: photons in, given and done, candidates in and retired;
+// they wrap, and every comparison between them is modulo 2^CountW; PH_IN, PH_DONE and CAND_IN
+// read them zero-extended; at least IdxAW + PhFifoAW + 1 and more than RingAW, so that the
+// distances compared stay below 2^(CountW-1); 32 unless a simulation or a proof wants to reach
+// the wrap-around in a few hundred photons).
 `default_nettype none
 
 module pree_axi #(
@@ -42,6 +50,7 @@ module pree_axi #(
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
   parameter RingAW   = 4,
+  parameter CountW   = 32,
   parameter StateW   = (Datapath != 0) ? 320 : 160,   // do not override: set by Datapath
   parameter HpRecW   = 32 + 192 + StateW               // do not override: hit-point record bits
 ) (
@@ -95,6 +104,7 @@ module pree_axi #(
   localparam PH_DEPTH = 1 << PhFifoAW;
   localparam RING     = 1 << RingAW;
   localparam [31:0] IDX_ROOM = (32'd1 << IdxAW) - NumPreu;   // free entries a beat needs
+  localparam [CountW-1:0] ROOM = IDX_ROOM[CountW-1:0];
 
   generate
     if (PhotonsPerCycle != 1) begin : g_bad_ppc
@@ -102,6 +112,9 @@ module pree_axi #(
     end
     if (PxAW > 31 || HpAW > 31 || CntW > 31) begin : g_bad_widths
       pree_axi_addresses_and_counts_fit_32_bit_slots u_fail ();
+    end
+    if (CountW > 32 || CountW < IdxAW + PhFifoAW + 1 || CountW <= RingAW) begin : g_bad_countw
+      pree_axi_countw_is_32_at_most_and_idxaw_plus_phfifoaw_plus_1_at_least u_fail ();
     end
   endgenerate
 
@@ -158,12 +171,16 @@ module pree_axi #(
   reg         cnt_en_q;
   reg  [1:0]  irq_en_q, irq_q, err_q;
   reg  [31:0] ne_q, alpha_q, kappa_q, n_hit_q, hp_ptr_q, hp_cnt_q, px_base_q, px_cnt_q;
-  reg  [31:0] ph_in_q, cnt_hi_q;
+  reg  [31:0] cnt_hi_q;
+  reg  [CountW-1:0] ph_in_q;
   reg         mode_q, batch_q;
   wire        all_idle, core_idle, cmd_done, batch_done;
-  wire [31:0] core_done;
+  wire [CountW-1:0] core_done;
   wire [NCNT*CtrW-1:0] cnt;
-  reg  [31:0] cum_in_q, wr_cnt_q;
+  reg  [CountW-1:0] cum_in_q, wr_cnt_q;   // candidates announced by photons in; written
+  // The running counts as registers read them: zero-extended to 32 bits.
+  wire [31+CountW:0] ph_in_x = {32'd0, ph_in_q}, done_x = {32'd0, core_done},
+                     cand_in_x = {32'd0, wr_cnt_q};
 
   wire        idle_wr  = wr && all_idle;   // constants and commands: only while idle
   wire [9:0]  wreg     = wr_addr[11:2];
@@ -233,9 +250,9 @@ module pree_axi #(
         R_HP_COUNT:   rd_data = hp_cnt_q;
         R_PX_BASE:    rd_data = px_base_q;
         R_PX_COUNT:   rd_data = px_cnt_q;
-        R_PH_IN:      rd_data = ph_in_q;
-        R_PH_DONE:    rd_data = core_done;
-        R_CAND_IN:    rd_data = wr_cnt_q;
+        R_PH_IN:      rd_data = ph_in_x[31:0];
+        R_PH_DONE:    rd_data = done_x[31:0];
+        R_CAND_IN:    rd_data = cand_in_x[31:0];
         default:      rd_data = 32'd0;
       endcase
     end
@@ -251,10 +268,11 @@ module pree_axi #(
   // Photon FIFO: {data, N^P, candidate end S_k + N_k}.
   reg  [191:0]      phf_data_q [0:PH_DEPTH-1];
   reg  [CntW-1:0]   phf_n_q    [0:PH_DEPTH-1];
-  reg  [31:0]       phf_end_q  [0:PH_DEPTH-1];
+  reg  [CountW-1:0] phf_end_q  [0:PH_DEPTH-1];
   reg  [PhFifoAW:0] phf_wp_q, phf_rp_q;
-  reg  [31:0]       ring_q [0:RING-1];     // candidate end of photon g mod RING, given to pree_top
-  reg  [31:0]       given_q, ret_q;        // photons given; candidates retired
+  reg  [CountW-1:0] ring_q [0:RING-1];     // candidate end of photon g mod RING, given to pree_top
+  reg  [CountW-1:0] given_q, ret_q;        // photons given; candidates retired
+  reg  [CountW-1:0] done_q;                // photons_done_o as ret_q last followed it
   wire [PhFifoAW-1:0] rp = phf_rp_q[PhFifoAW-1:0];
   wire phf_empty = phf_wp_q == phf_rp_q;
   wire phf_full  = phf_wp_q == {~phf_rp_q[PhFifoAW], phf_rp_q[PhFifoAW-1:0]};
@@ -262,12 +280,18 @@ module pree_axi #(
   wire [CntW-1:0] ph_in_n = s_axis_ph_tdata[192 +: CntW];
   wire            ph_take = s_axis_ph_tvalid && s_axis_ph_tready;
   wire            ph_push = ph_take && ph_in_n != {CntW{1'b0}};
+  wire [CntW+CountW-1:0] ph_in_nx = {{CountW{1'b0}}, ph_in_n};
+  wire [CountW-1:0] ph_n_c = ph_in_nx[CountW-1:0];   // N^P as a count (at most ROOM unless ph_big)
   assign s_axis_ph_tready = rst_n && !phf_full && state_q == S_IDLE;
   assign ph_big = ph_take && {{(32-CntW){1'b0}}, ph_in_n} > IDX_ROOM;
 
-  wire [31:0] head_end = phf_end_q[rp];
-  wire        head_written = wr_cnt_q - head_end < 32'h8000_0000;   // every candidate written
-  wire [31:0] in_flight = given_q - core_done;
+  // Distances between the running counts, modulo 2^CountW (the parameter check keeps them below
+  // 2^(CountW-1)): the head photon's candidates are all written when its end is not ahead of the
+  // candidates written.
+  wire [CountW-1:0] head_end = phf_end_q[rp];
+  wire [CountW-1:0] head_ahead = wr_cnt_q - head_end;
+  wire        head_written = !head_ahead[CountW-1];
+  wire [CountW-1:0] in_flight = given_q - core_done;
   wire        core_ready;
   wire        core_valid = !phf_empty && head_written && in_flight < RING - 1 && state_q == S_IDLE;
   wire        core_take = core_valid && core_ready;
@@ -277,14 +301,18 @@ module pree_axi #(
   always @(posedge aclk or negedge rst_n) begin
     if (!rst_n) begin
       phf_wp_q <= {(PhFifoAW+1){1'b0}}; phf_rp_q <= {(PhFifoAW+1){1'b0}};
-      cum_in_q <= 32'd0; ph_in_q <= 32'd0; given_q <= 32'd0; ret_q <= 32'd0; batch_q <= 1'b0;
+      cum_in_q <= {CountW{1'b0}}; ph_in_q <= {CountW{1'b0}}; given_q <= {CountW{1'b0}};
+      ret_q <= {CountW{1'b0}}; done_q <= {CountW{1'b0}}; batch_q <= 1'b0;
     end else begin
       if (ph_push) phf_wp_q <= phf_wp_q + 1'b1;
-      if (ph_push) cum_in_q <= cum_in_q + {{(32-CntW){1'b0}}, ph_in_n};
-      if (ph_take) ph_in_q <= ph_in_q + 32'd1;
+      if (ph_push) cum_in_q <= cum_in_q + ph_n_c;
+      if (ph_take) ph_in_q <= ph_in_q + 1'b1;
       if (core_take) phf_rp_q <= phf_rp_q + 1'b1;
-      if (core_take) given_q <= given_q + 32'd1;
-      ret_q <= (core_done == 32'd0) ? 32'd0 : ring_q[last_done];
+      if (core_take) given_q <= given_q + 1'b1;
+      // Candidates retired: the end of the last photon done, followed whenever photons_done_o
+      // moves (never from its value: it returns to 0 when it wraps).
+      done_q <= core_done;
+      if (core_done != done_q) ret_q <= ring_q[last_done];
       batch_q <= (batch_q && !batch_done) || (ph_take && s_axis_ph_tlast);
     end
   end
@@ -293,7 +321,7 @@ module pree_axi #(
     if (ph_push) begin
       phf_data_q[phf_wp_q[PhFifoAW-1:0]] <= s_axis_ph_tdata[191:0];
       phf_n_q[phf_wp_q[PhFifoAW-1:0]]    <= ph_in_n;
-      phf_end_q[phf_wp_q[PhFifoAW-1:0]]  <= cum_in_q + {{(32-CntW){1'b0}}, ph_in_n};
+      phf_end_q[phf_wp_q[PhFifoAW-1:0]]  <= cum_in_q + ph_n_c;
     end
     if (core_take) ring_q[given_q[RingAW-1:0]] <= head_end;
   end
@@ -303,26 +331,26 @@ module pree_axi #(
   reg  [NumPreu-1:0]       idx_we;
   reg  [NumPreu*IdxAW-1:0] idx_addr;
   reg  [NumPreu*HpAW-1:0]  idx_data;
-  reg  [31:0]              cand_n;
-  wire [31:0] used = wr_cnt_q - ret_q;
-  assign s_axis_cand_tready = rst_n && state_q == S_IDLE && used <= IDX_ROOM;
+  reg  [CountW-1:0]        cand_n;
+  wire [CountW-1:0] used = wr_cnt_q - ret_q;
+  assign s_axis_cand_tready = rst_n && state_q == S_IDLE && used <= ROOM;
   wire cand_take = s_axis_cand_tvalid && s_axis_cand_tready;
 
   always @* begin : cand_lanes
     integer j;
     reg [IdxAW-1:0] s;
-    cand_n = 32'd0;
+    cand_n = {CountW{1'b0}};
     for (j = 0; j < NumPreu; j = j + 1) begin
       s = wr_cnt_q[IdxAW-1:0] + cand_n[IdxAW-1:0];
       idx_we[j] = cand_take && (&s_axis_cand_tkeep[4*j +: 4]);
       idx_addr[j*IdxAW +: IdxAW] = ~s;
       idx_data[j*HpAW +: HpAW] = s_axis_cand_tdata[32*j +: HpAW];
-      if (&s_axis_cand_tkeep[4*j +: 4]) cand_n = cand_n + 32'd1;
+      if (&s_axis_cand_tkeep[4*j +: 4]) cand_n = cand_n + 1'b1;
     end
   end
 
   always @(posedge aclk or negedge rst_n) begin
-    if (!rst_n)         wr_cnt_q <= 32'd0;
+    if (!rst_n)         wr_cnt_q <= {CountW{1'b0}};
     else if (cand_take) wr_cnt_q <= wr_cnt_q + cand_n;
   end
 
@@ -399,7 +427,7 @@ module pree_axi #(
 
   pree_top #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
-    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW)
+    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW), .CountW(CountW)
   ) u_top (
     .clk_i(aclk), .rst_ni(rst_n),
     .mode_i(mode_q), .cnt_en_i(cnt_en_q), .ne_i(ne_q), .alpha_i(alpha_q), .kappa_i(kappa_q),
@@ -415,7 +443,8 @@ module pree_axi #(
   // Bits the engine does not use: the slots' upper bits, the byte offsets, the counts' tops.
   wire unused_bits = ^{s_axis_ph_tdata[223:192+CntW], s_axis_hp_tdata[HpRecW-1:PxAW+192+StateW],
                        wr_addr[1:0], rd_addr[1:0], n_hit_q[31:HpAW], hp_a[31:HpAW], px_a[31:PxAW],
-                       cand_unused};
+                       cand_unused, ph_in_x[31+CountW:32], done_x[31+CountW:32],
+                       cand_in_x[31+CountW:32], ph_in_nx[CntW+CountW-1:CountW]};
   reg [NumPreu*(32-HpAW)-1:0] cand_unused;
   always @* begin : cand_tops
     integer j;

@@ -34,7 +34,8 @@
 // pixel sums in 2^PxBankW banks (the pixel's low bits).
 // Counters (cnt_o, pree_counters, while cnt_en_i): update and radiance cycles, haz, dup, bank,
 // abank, starve, then the operations into each PREU; photons_done_o counts photons whose last
-// index entry has been read (the host may reuse their entries; it wraps).
+// index entry has been read (the host may reuse their entries; CountW bits, it wraps: compare
+// it with the host's own counts modulo 2^CountW).
 `default_nettype none
 
 module pree_top #(
@@ -52,6 +53,7 @@ module pree_top #(
   parameter AddStages  = 0,
   parameter MulStages  = 0, SqrStages = 0, DivStages = 0, U2fStages = 0, WaccStages = 0,
   parameter PhotonsPerCycle = 1, // photons AFTSO-HpUOC takes per cycle (1 .. 8; 1 = the paper)
+  parameter CountW  = 32,   // bits of photons_done_o (a running count that wraps)
   parameter StateW  = (Datapath != 0) ? 320 : 160  // do not override: set by Datapath
 ) (
   input  wire                       clk_i,
@@ -72,7 +74,7 @@ module pree_top #(
   input  wire [PhotonsPerCycle*192-1:0]   ph_data_i,
   input  wire [PhotonsPerCycle*IdxAW-1:0] ph_paddr_i,
   input  wire [PhotonsPerCycle*CntW-1:0]  ph_n_i,
-  output wire [31:0]                photons_done_o,
+  output wire [CountW-1:0]          photons_done_o,
   // Index-table load port: entry j in bits [j*W +: W].
   input  wire [NumPreu-1:0]         idx_we_i,
   input  wire [NumPreu*IdxAW-1:0]   idx_addr_i,
@@ -192,7 +194,7 @@ module pree_top #(
     .ad_addr_i(ad_addr), .valid_o(a_valid), .idx_o(a_idx), .hp_o(a_hp), .bank_o(a_bank),
     .last_o(a_last), .data_o(a_data));
 
-  pree_top_read #(.NumPreu(NumPreu), .BankW(ABANK_W)) u_read (
+  pree_top_read #(.NumPreu(NumPreu), .BankW(ABANK_W), .CountW(CountW)) u_read (
     .clk_i(clk_i), .rst_ni(rst_ni), .go_i(a_go), .valid_i(a_valid), .bank_i(a_bank),
     .last_i(a_last), .count_last_i(~mode_i), .rd_o(a_rd), .all_o(a_all), .short_o(a_short),
     .photons_done_o(photons_done_o));

@@ -7,7 +7,8 @@
 
 module pree_top_read #(
   parameter NumPreu = 4,   // lanes
-  parameter BankW   = 4    // bits of a lane's bank number
+  parameter BankW   = 4,   // bits of a lane's bank number
+  parameter CountW  = 32   // bits of photons_done_o (it wraps)
 ) (
   input  wire                     clk_i,
   input  wire                     rst_ni,
@@ -19,7 +20,7 @@ module pree_top_read #(
   output reg  [NumPreu-1:0]       rd_o,          // lanes read in this cycle
   output wire                     all_o,         // every lane of the offer is read by now
   output wire                     short_o,       // A read, but left lanes (a bank conflict)
-  output wire [31:0]              photons_done_o
+  output wire [CountW-1:0]        photons_done_o
 );
 
   reg  [NumPreu-1:0] done_q;   // lanes of the current offer read in earlier cycles
@@ -50,16 +51,16 @@ module pree_top_read #(
   end
 
   // Photons whose last index entry has been read.
-  reg [31:0] photons_done_q;
-  reg [31:0] last_rd;
+  reg [CountW-1:0] photons_done_q;
+  reg [CountW-1:0] last_rd;
   always @* begin : last_count
     integer l;
-    last_rd = 32'd0;
+    last_rd = {CountW{1'b0}};
     for (l = 0; l < NumPreu; l = l + 1)
-      if (rd_o[l] && last_i[l] && count_last_i) last_rd = last_rd + 32'd1;
+      if (rd_o[l] && last_i[l] && count_last_i) last_rd = last_rd + 1'b1;
   end
   always @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) photons_done_q <= 32'd0;
+    if (!rst_ni) photons_done_q <= {CountW{1'b0}};
     else         photons_done_q <= photons_done_q + last_rd;
   end
   assign photons_done_o = photons_done_q;

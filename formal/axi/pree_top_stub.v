@@ -36,6 +36,7 @@ module pree_top #(
   parameter AddStages  = 0,
   parameter MulStages  = 0, SqrStages = 0, DivStages = 0, U2fStages = 0, WaccStages = 0,
   parameter PhotonsPerCycle = 1,
+  parameter CountW  = 32,
   parameter StateW  = (Datapath != 0) ? 320 : 160
 ) (
   input  wire                       clk_i,
@@ -53,7 +54,7 @@ module pree_top #(
   input  wire [PhotonsPerCycle*192-1:0]   ph_data_i,
   input  wire [PhotonsPerCycle*IdxAW-1:0] ph_paddr_i,
   input  wire [PhotonsPerCycle*CntW-1:0]  ph_n_i,
-  output wire [31:0]                photons_done_o,
+  output wire [CountW-1:0]          photons_done_o,
   input  wire [NumPreu-1:0]         idx_we_i,
   input  wire [NumPreu*IdxAW-1:0]   idx_addr_i,
   input  wire [NumPreu*HpAW-1:0]    idx_data_i,
@@ -84,21 +85,21 @@ module pree_top #(
   always @(posedge clk_i) f_past_valid <= 1'b1;
 
   // Photons taken and done; the radiance pass.
-  reg  [31:0] taken_q, done_q;
+  reg  [CountW-1:0] taken_q, done_q;
   reg         rad_q;
-  wire [31:0] fly = taken_q - done_q;
+  wire [CountW-1:0] fly = taken_q - done_q;
   wire        take = ph_valid_i && ph_ready_o;
-  wire        done = f_done && fly != 32'd0;
+  wire        done = f_done && fly != {CountW{1'b0}};
   assign ph_ready_o     = f_ready && !mode_i;
   assign photons_done_o = done_q;
-  assign idle_o         = fly == 32'd0 && !rad_q;
+  assign idle_o         = fly == {CountW{1'b0}} && !rad_q;
   assign hp_rdata_o     = f_hp_rdata;
   assign px_rdata_o     = f_px_rdata;
   assign cnt_o          = f_cnt;
 
   always @(posedge clk_i or negedge rst_ni)
     if (!rst_ni) begin
-      taken_q <= 32'd0; done_q <= 32'd0; rad_q <= 1'b0;
+      taken_q <= {CountW{1'b0}}; done_q <= {CountW{1'b0}}; rad_q <= 1'b0;
     end else begin
       taken_q <= taken_q + take;
       done_q  <= done_q + done;
@@ -109,7 +110,7 @@ module pree_top #(
   reg [3:0] take_wait_q, done_wait_q, rad_wait_q;
   always @(posedge clk_i) begin
     take_wait_q <= (!rst_ni || !ph_valid_i || mode_i || take) ? 4'd0 : take_wait_q + 4'd1;
-    done_wait_q <= (!rst_ni || fly == 32'd0 || done) ? 4'd0 : done_wait_q + 4'd1;
+    done_wait_q <= (!rst_ni || fly == {CountW{1'b0}} || done) ? 4'd0 : done_wait_q + 4'd1;
     rad_wait_q  <= (!rst_ni || !rad_q || f_rad_end) ? 4'd0 : rad_wait_q + 4'd1;
   end
   always @* begin

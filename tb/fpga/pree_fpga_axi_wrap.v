@@ -18,7 +18,8 @@ module pree_fpga_axi_wrap #(
   parameter Datapath = 0,
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
-  parameter RingAW   = 4
+  parameter RingAW   = 4,
+  parameter CountW   = 32
 ) (
   input  wire       clk_i,
   input  wire       rst_ni,
@@ -59,7 +60,7 @@ module pree_fpga_axi_wrap #(
   pree_axi #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
     .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .PhotonsPerCycle(PhotonsPerCycle),
-    .PhFifoAW(PhFifoAW), .RingAW(RingAW)
+    .PhFifoAW(PhFifoAW), .RingAW(RingAW), .CountW(CountW)
   ) u_axi (
     .aclk(clk_i), .aresetn(rst_ni),
     .s_axil_awaddr(awaddr), .s_axil_awvalid(hs_q[0]), .s_axil_awready(awready),

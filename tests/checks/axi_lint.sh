@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
-# verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths); Icarus
+# verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths; the wrapper
+# bench's narrow counts); Icarus
 # (-g2005) elaborates pree_axi and pree_reset_sync through it.
 # cost: 45 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
@@ -14,6 +15,9 @@ for d in 0 1; do
     run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=$p -GDatapath=$d -f rtl/pree.f
   done
 done
+# The narrowest running counts the wrapper bench uses (tests/checks/axi_wrap.sh).
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=2 -GHpAW=6 -GHpBankW=2 \
+  -GIdxAW=4 -GPxAW=4 -GPxBankW=2 -GCntW=8 -GPhFifoAW=1 -GCountW=6 -f rtl/pree.f
 run iverilog -g2005 -Wall -Irtl -o "$TMP/axi.vvp" -s pree_axi -c rtl/pree.f
 run iverilog -g2005 -Irtl -o "$TMP/rs.vvp" -s pree_reset_sync -c rtl/pree.f
 echo "ok: pree_axi lint-clean and elaborated"
