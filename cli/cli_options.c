@@ -177,6 +177,13 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
         if (cli_int(a, 1, 1024, &v)) return 2;
         opt->threads = (int)v;
         return 0;
+    case CLI_LAYOUT: {
+        static const char *const names[] = {"spatial", "pixel"};
+        if ((k = cli_keyword(a, names, 2)) < 0) return 2;
+        opt->layout = k ? HP_LAYOUT_PIXEL : HP_LAYOUT_SPATIAL;
+        return 0;
+    }
+    case CLI_PIPE_FAST: opt->pipe_fast = 1; return 0;
     case CLI_NO_SKIP: opt->no_skip = 1; return 0;
     case CLI_QUIET: opt->progress = 0; return 0;
     default: return 1;

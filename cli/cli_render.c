@@ -62,8 +62,13 @@ static void render_usage(FILE *f)
         "  --scan S               bucket (default: a block's candidates bucket by bucket, then applied in\n"
         "                         photon order) or photon (photon by photon; the oracle); same bits\n"
         "  --no-skip              disable the skips (zero-weight hit points, empty cells, far candidates)\n"
-        "  --preu P               fp32: the PREE's PREU count (4, 8 or 16, default 4), which sets the\n"
-        "                         radiance pass's per-pixel order (docs/pree_top.md)\n"
+        "  --preu P               fp32: the PREE whose radiance pass the image reproduces bit for bit\n"
+        "  --pipe-fast            (the order of each pixel's additions, docs/pree_top.md): its PREU count\n"
+        "  --layout L             (4, 8 or 16, default 4), its deep PREU pipelines (PipeFast = 1), its\n"
+        "                         hit-point layout (spatial, the default, or pixel); 'pree cosim' with\n"
+        "                         the same scene and options writes the same image\n"
+        "  --prees N              fp32: the image of a board of N such PREEs, each holding its run of\n"
+        "                         the spatial order, as 'mpirun -np N pree cosim' forms it (default 1)\n"
         "  --threads T            OpenMP threads (default: all cores); the image does not depend on T\n"
         "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
         "  --stats FILE.json      write the statistics\n"
@@ -82,7 +87,7 @@ static void render_usage(FILE *f)
 }
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
-       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY };
+       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -97,6 +102,7 @@ static const struct option render_longopts[] = {
     {"resume", required_argument, NULL, OPT_RESUME},
     {"time-limit", required_argument, NULL, OPT_TIME_LIMIT},
     {"max-memory", required_argument, NULL, OPT_MAX_MEMORY},
+    {"prees", required_argument, NULL, OPT_PREES},
     {NULL, 0, NULL, 0}
 };
 
@@ -149,10 +155,13 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             opt->checkpoint_every = (uint64_t)v;
             break;
         case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt->time_limit)) return 2; break;
+        case OPT_PREES: if (cli_int(&a, 1, 1024, &v)) return 2; opt->prees = (int)v; break;
         default: if (cli_pm_option(&a, id, opt)) return 2;
         }
     }
     if (!(j->scene_path = cli_scene(&a)) || cli_pm_check(&a, opt)) return 2;
+    if (opt->prees > 1 && opt->layout == HP_LAYOUT_PIXEL)
+        return cli_error(&a, "--prees %d: a board of PREEs holds the spatial layout (drop --layout pixel)", opt->prees);
     if (opt->datapath == DATAPATH_STABLE && opt->precision != PRECISION_FP32)
         return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
     if ((uint64_t)opt->width * (uint64_t)opt->height > 64ull * 1024 * 1024)

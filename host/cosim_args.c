@@ -1,6 +1,5 @@
 /* cosim_args.c: pree cosim's usage and command line (cosim_args.h). */
 #include <stdio.h>
-#include <string.h>
 #include "cli.h"
 #include "cli_options.h"
 #include "cosim_args.h"
@@ -50,8 +49,7 @@ static void cosim_usage(FILE *f)
 }
 
 enum { OPT_GAP = CLI_OWN, OPT_NO_REFERENCE, OPT_NO_REORDER, OPT_NO_SCHEDULE, OPT_WINDOW,
-       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_PIPE_FAST, OPT_LAYOUT,
-       OPT_REFILTER };
+       OPT_TRACE, OPT_TRACE_WINDOW, OPT_OUT, OPT_STATS, OPT_MODEL_ONLY, OPT_AXI, OPT_REFILTER };
 
 static const struct option cosim_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -66,8 +64,6 @@ static const struct option cosim_longopts[] = {
     {"stats", required_argument, NULL, OPT_STATS},
     {"model-only", no_argument, NULL, OPT_MODEL_ONLY},
     {"axi", no_argument, NULL, OPT_AXI},
-    {"pipe-fast", no_argument, NULL, OPT_PIPE_FAST},
-    {"layout", required_argument, NULL, OPT_LAYOUT},
     {"refilter", no_argument, NULL, OPT_REFILTER},
     {NULL, 0, NULL, 0}
 };
@@ -105,15 +101,11 @@ int cosim_parse_args(int argc, char **argv, int axi_program, render_options_t *o
         case OPT_STATS: c->stats = a.val; break;
         case OPT_MODEL_ONLY: c->model_only = 1; break;
         case OPT_AXI: c->axi = 1; break;
-        case OPT_PIPE_FAST: c->pipefast = 1; break;
-        case OPT_LAYOUT:
-            if (strcmp(a.val, "spatial") && strcmp(a.val, "pixel"))
-                return cli_error(&a, "--layout: '%s' is not spatial or pixel", a.val);
-            c->pixel_layout = !strcmp(a.val, "pixel");
-            break;
         }
     }
     if (!(c->scene = cli_scene(&a))) return 2;
+    c->pipefast = opt->pipe_fast;
+    c->pixel_layout = opt->layout == HP_LAYOUT_PIXEL;
     if (!c->window) c->window = cosim_sched_default_window(opt->preu);
     if (c->model_only && !c->schedule) return cli_error(&a, "--model-only needs the scheduler (drop --no-schedule)");
     if (c->win_to != UINT64_MAX && !c->trace) return cli_error(&a, "--trace-window needs --trace");

@@ -67,29 +67,11 @@ unsigned long long cosim_image_words_differ(const uint32_t *Lr, const uint32_t *
 int cosim_model_radiance(const render_result_t *res, const uint32_t *order, size_t n, int preu, int pipefast,
                          size_t npix, uint32_t *L)
 {
-    const hitpoints_t *h = &res->hp;
+    const radiance_pree_t pree = {.preu = preu, .stages = cosim_radiance_depth(pipefast), .at = order,
+                                  .n = order ? n : res->hp.n};
     unsigned long long skipped;
     memset(L, 0, npix * 3 * sizeof *L);
-    if (!order) return radiance_fp32_words(h, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L,
-                                           &skipped);
-    hitpoints_t sub = {.n = n};
-    sub.pixel = malloc((n ? n : 1) * sizeof *sub.pixel);
-    if (h->stable) sub.stable = malloc((n ? n : 1) * sizeof *sub.stable);
-    else sub.fp32 = malloc((n ? n : 1) * sizeof *sub.fp32);
-    int rc = -1;
-    if (sub.pixel && (sub.stable || sub.fp32)) {
-        for (size_t a = 0; a < n; a++) {
-            const size_t j = order[a];
-            sub.pixel[a] = h->pixel[j];
-            if (h->stable) sub.stable[a] = h->stable[j];
-            else sub.fp32[a] = h->fp32[j];
-        }
-        rc = radiance_fp32_words(&sub, res->stats.photons_emitted, 0, preu, cosim_radiance_depth(pipefast), L, &skipped);
-    }
-    free(sub.pixel);
-    free(sub.stable);
-    free(sub.fp32);
-    return rc;
+    return radiance_fp32_words(&res->hp, &pree, res->stats.photons_emitted, 0, L, &skipped);
 }
 
 long long cosim_compare_image(cosim_drv_t *drv, const render_result_t *res, const uint32_t *order, int preu,

@@ -4,7 +4,7 @@
 #include <string.h>
 #include "cosim_dist.h"
 #include "cosim_shadow.h"
-#include "fp32_ops.h"
+#include "radiance.h"
 #include "render_dist.h"
 
 int cosim_dist_gather(cosim_drv_t *drv, const cosim_part_t *p, const render_result_t *res, int preu, int pipefast,
@@ -49,12 +49,11 @@ int cosim_dist_gather(cosim_drv_t *drv, const cosim_part_t *p, const render_resu
     memcpy(figs, rf, (size_t)p->nranks * sizeof *figs);
     free(rf);
     const uint32_t *all = recv;
-    for (int r = 0; r < p->nranks; r++)
-        for (size_t j = 0; j < words; j++) {
-            const uint32_t *q = all + (size_t)r * 2 * words;
-            Lr[j] = r ? fp32_add(Lr[j], q[j]) : q[j];
-            Lm[j] = r ? fp32_add(Lm[j], q[words + j]) : q[words + j];
-        }
+    for (int r = 0; r < p->nranks; r++) {   /* the board's image, the RTL's and the model's */
+        const uint32_t *q = all + (size_t)r * 2 * words;
+        radiance_board_add(Lr, q, words, r == 0);
+        radiance_board_add(Lm, q + words, words, r == 0);
+    }
     free(part);
     free(recv);
     free(counts);

@@ -37,6 +37,7 @@
 #include "aftso_rule.h"
 #include "cosim_rtl.h"
 #include "hp_bank.h"
+#include "radiance.h"
 
 #define SHADOW_WIN_MAX 64 /* update hazard window, cycles (WIN_UPD): 11 / 13, PipeFast 1 49 / 53 */
 
@@ -87,11 +88,11 @@ static inline int cosim_update_window(int datapath, int pipe_fast)
     return pipe_fast ? (datapath ? 53 : 49) : (datapath ? 13 : 11);
 }
 /* ADISO-REC's pipeline depth in pree_top (its RAD_LAT, the PREU's radiance latency: the same for
- * both datapaths), which sets the radiance pass's issue order and so the reference image's
- * rounding (model/ppm/radiance.h). */
+ * both datapaths), which sets the radiance pass's issue order and so the image's rounding: the
+ * model's (radiance_depth, model/ppm/radiance.h). */
 static inline int cosim_radiance_depth(int pipe_fast)
 {
-    return pipe_fast ? 64 : 12;
+    return radiance_depth(pipe_fast);
 }
 /* Whether pree_top has the registered flow, A's offer register and B's queue (its REG_FLOW):
  * with PipeFast 1. */

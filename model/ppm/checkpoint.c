@@ -53,8 +53,8 @@ uint64_t checkpoint_fingerprint(const scene_t *scene, const render_options_t *op
     HASH(f, sizes);
     /* The options that change the bits (not --photons: a resume may extend a render). */
     const double alpha = render_alpha(opt);
-    const int o[7] = {opt->width, opt->height, (int)opt->precision, (int)opt->datapath, (int)opt->grid, opt->no_skip,
-                      opt->preu ? opt->preu : 4};
+    const int o[10] = {opt->width, opt->height, (int)opt->precision, (int)opt->datapath, (int)opt->grid, opt->no_skip,
+                       opt->preu ? opt->preu : 4, opt->pipe_fast, (int)opt->layout, opt->prees > 1 ? opt->prees : 1};
     HASH(f, o);
     HASH(f, alpha);
     HASH(f, opt->photon_offset);

@@ -3,19 +3,22 @@
 #include <string.h>
 #include "radiance.h"
 #include "adiso_order.h"
+#include "fp32_ops.h"
+#include "render_dist.h"
 
-/* fp32: the PREE's radiance pass, hit points in ADISO-REC issue order (model/pree/adiso_order.h). */
-int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, int preu, int stages,
+/* fp32: the PREE's radiance pass, its addresses in ADISO-REC issue order (model/pree/adiso_order.h). */
+int radiance_fp32_words(const hitpoints_t *h, const radiance_pree_t *pree, uint64_t emitted, int skip_zero,
                         uint32_t *L, unsigned long long *skipped)
 {
     unsigned long long sk = 0;
-    if (stages < 1) return -1;
-    uint32_t *order = malloc((h->n ? h->n : 1) * sizeof *order);
+    const size_t n = pree->n;
+    if (pree->stages < 1 || n > h->n) return -1;
+    uint32_t *order = malloc((n ? n : 1) * sizeof *order);
     if (!order) return -1;
-    if (adiso_order((uint32_t)h->n, preu, stages, order)) { free(order); return -1; }
+    if (adiso_order((uint32_t)n, pree->preu, pree->stages, order)) { free(order); return -1; }
     const uint32_t ne = preu_n_emitted(emitted);
-    for (size_t k = 0; k < h->n; k++) {
-        const uint32_t i = order[k];
+    for (size_t k = 0; k < n; k++) {
+        const uint32_t i = pree->at ? pree->at[order[k]] : order[k];
         if (skip_zero && hitpoints_zero_weight(h, i)) { sk++; continue; }
         if (h->stable) preu_stable_radiance(L + 3 * (size_t)h->pixel[i], &h->stable[i], ne);
         else preu_radiance(L + 3 * (size_t)h->pixel[i], &h->fp32[i], ne);
@@ -25,8 +28,37 @@ int radiance_fp32_words(const hitpoints_t *h, uint64_t emitted, int skip_zero, i
     return 0;
 }
 
-int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emitted, int skip_zero,
-                           int preu, double *rgb, size_t num_pixels, unsigned long long *skipped)
+void radiance_board_add(uint32_t *L, const uint32_t *part, size_t words, int first)
+{
+    for (size_t j = 0; j < words; j++) L[j] = first ? part[j] : fp32_add(L[j], part[j]);
+}
+
+/* fp32: the pixel words of a PREE or a board of them (radiance.h) into L (zeroed, `words` long). */
+static int board_words(const hitpoints_t *h, const radiance_pree_t *pree, uint64_t emitted, int skip_zero,
+                       size_t words, uint32_t *L, unsigned long long *skipped)
+{
+    if (pree->prees <= 1) return radiance_fp32_words(h, pree, emitted, skip_zero, L, skipped);
+    uint32_t *part = pree->at ? malloc((words ? words : 1) * sizeof *part) : NULL;
+    if (!part) return -1;
+    int rc = 0;
+    *skipped = 0;
+    for (int r = 0; r < pree->prees && rc == 0; r++) {
+        const size_t lo = render_dist_lo(pree->n, r, pree->prees), hi = render_dist_lo(pree->n, r + 1, pree->prees);
+        radiance_pree_t one = *pree;
+        one.at = pree->at + lo;
+        one.n = hi - lo;
+        unsigned long long sk = 0;
+        memset(part, 0, words * sizeof *part);
+        rc = radiance_fp32_words(h, &one, emitted, skip_zero, part, &sk);
+        *skipped += sk;
+        radiance_board_add(L, part, words, r == 0);
+    }
+    free(part);
+    return rc;
+}
+
+int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, const radiance_pree_t *pree, uint64_t emitted,
+                           int skip_zero, double *rgb, size_t num_pixels, unsigned long long *skipped)
 {
     unsigned long long sk = 0;
     memset(rgb, 0, num_pixels * 3 * sizeof *rgb);
@@ -43,7 +75,7 @@ int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, uint64_t emit
     } else {
         uint32_t *L = calloc(num_pixels * 3, sizeof *L);   /* +0.0f */
         if (!L) return -1;
-        if (radiance_fp32_words(h, emitted, skip_zero, preu, RADIANCE_PREU_STAGES, L, &sk)) { free(L); return -1; }
+        if (board_words(h, pree, emitted, skip_zero, num_pixels * 3, L, &sk)) { free(L); return -1; }
         for (size_t j = 0; j < num_pixels * 3; j++) rgb[j] = (double)fp32_from_bits(L[j]);
         free(L);
     }

@@ -259,6 +259,27 @@ const update_ops_t *render_block_ops(const render_session_t *s) { return &s->ops
 
 const uint32_t *render_hp_address(const render_session_t *s) { return s->perm; }
 
+/* The PREE (or board) whose radiance pass the fp32 image reproduces (opt: preu, pipe_fast, layout,
+ * prees). With
+ * the spatial layout its address a holds the a-th hit point of the spatial order of one part, the
+ * co-simulation's (its photon pass runs on one thread): s->perm when this photon pass ran on one
+ * thread too, else that order made here into *made (the caller frees it), so that the image does
+ * not depend on the thread count. 0, or -1 (memory). */
+static int radiance_pree(const render_session_t *s, radiance_pree_t *pree, uint32_t **made)
+{
+    const hitpoints_t *h = &s->res->hp;
+    *pree = (radiance_pree_t){.preu = s->opt.preu ? s->opt.preu : 4, .stages = radiance_depth(s->opt.pipe_fast),
+                              .n = h->n, .prees = s->opt.prees};
+    *made = NULL;
+    if (s->opt.precision != PRECISION_FP32 || (s->opt.layout == HP_LAYOUT_PIXEL && s->opt.prees <= 1)) return 0;
+    if (s->T == 1) {
+        pree->at = s->perm;
+        return 0;
+    }
+    pree->at = *made = hp_order_spatial(h, s->opt.width, 1, s->res->stats.r0);
+    return *made ? 0 : -1;
+}
+
 int render_close(render_session_t *s, char *err, size_t errlen)
 {
     render_result_t *res = s->res;
@@ -282,8 +303,13 @@ int render_close(render_session_t *s, char *err, size_t errlen)
 
     /* Radiance evaluation. */
     double t = omp_get_wtime();
-    if (radiance_evaluate_preu(&res->hp, s->opt.precision, st->photons_emitted, s->skip, s->opt.preu ? s->opt.preu : 4,
-                               res->rgb, s->npix, &st->radiance_skipped)) {
+    radiance_pree_t pree;
+    uint32_t *made;
+    const int rad = radiance_pree(s, &pree, &made) ? -1
+                  : radiance_evaluate_preu(&res->hp, s->opt.precision, &pree, st->photons_emitted, s->skip, res->rgb,
+                                           s->npix, &st->radiance_skipped);
+    free(made);
+    if (rad) {
         snprintf(err, errlen, "out of memory in radiance evaluation");
         goto done;
     }

@@ -25,6 +25,10 @@
 typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
 typedef enum { ESTIMATOR_PPM = 0, ESTIMATOR_PM = 1 } estimator_t;
 typedef enum { KNN_CLUSTERED = 0, KNN_NAIVE = 1 } knn_search_t;
+/* Where the PREE holds the hit points, which sets its radiance pass's order (docs/pree_top.md,
+ * "Hit-point layout"): address a holds the a-th hit point of the spatial order of one part
+ * (render_hp_address of a photon pass on one thread) or of the eye pass's order. */
+typedef enum { HP_LAYOUT_SPATIAL = 0, HP_LAYOUT_PIXEL = 1 } hp_layout_t;
 
 #define RENDER_PHOTON_BLOCK 32000u            /* photons traced and applied together */
 #define RENDER_CHECKPOINT_EVERY (32ull * RENDER_PHOTON_BLOCK)
@@ -40,7 +44,12 @@ typedef struct {
     int threads;             /* 0: OpenMP's default */
     int no_skip;             /* 1: disable the skips (for proving them harmless) */
     update_scan_t scan;      /* SCAN_BUCKET (default): update_batch.c; SCAN_PHOTON: update_part, the oracle */
-    int preu;                /* PREUs of the PREE whose radiance order fp32 mode reproduces (0: 4) */
+    /* fp32: the PREE whose radiance pass the image reproduces bit for bit (model/ppm/radiance.h). */
+    int preu;                /* its PREUs (0: 4) */
+    int pipe_fast;           /* 1: their deep pipelines (RTL PipeFast = 1: radiance depth 64, not 12) */
+    hp_layout_t layout;      /* its hit-point layout */
+    int prees;               /* > 1: a board of this many such PREEs (model/ppm/radiance.h), which holds
+                              * the spatial layout (layout is then not read) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop: the photon block in progress is abandoned */
     double time_limit;       /* render_run: > 0: stop after the block in progress once this many

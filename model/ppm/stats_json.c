@@ -60,6 +60,12 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_u64(o, "threads", (uint64_t)st->threads);
     json_set_str(o, "datapath", stats_datapath_name(opt));
     json_set_real(o, "alpha", render_alpha(opt));
+    if (opt->precision == PRECISION_FP32) {   /* the PREE whose radiance pass the image reproduces */
+        json_set_u64(o, "preu", (uint64_t)(opt->preu ? opt->preu : 4));
+        json_set_u64(o, "pipe_fast", (uint64_t)opt->pipe_fast);
+        json_set_str(o, "hp_layout", opt->layout == HP_LAYOUT_PIXEL && opt->prees <= 1 ? "pixel" : "spatial");
+        json_set_u64(o, "prees", (uint64_t)(opt->prees > 1 ? opt->prees : 1));
+    }
     json_set_bool(o, "interrupted", interrupted);
     json_set_u64(o, "photon_offset", opt->photon_offset);
     json_object_set_new(o, "scene_contents", json_fields(st, contents, N(contents)));
