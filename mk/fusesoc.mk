@@ -5,8 +5,9 @@
 #
 #   make fusesoc-lint           Verilator --lint-only -Wall of pree_axi (in `make lint`; the
 #                               regression runs it too: tests/checks/fusesoc_lint.sh)
-#   make fusesoc-sim-icarus     the core's self-checking bench under Icarus
-#   make fusesoc-sim-verilator  the same bench under Verilator
+#   make fusesoc-sim-icarus     tb/axi/axi_wave_tb.v under Icarus, its waves compared with the
+#                               timing diagrams of docs/wave (scripts/wave_check.py, a hook)
+#   make fusesoc-sim-verilator  the same under Verilator (--binary)
 #   make fusesoc-synth          Yosys synth_ecp5 of pree_axi, a JSON netlist
 #   make fusesoc-pnr            Yosys, nextpnr-ecp5 (LFE5U-85F) and ecppack of pree_axi between
 #                               registers on a few pins (tb/fpga/pree_fpga_axi_wrap.v)
@@ -36,7 +37,7 @@ fusesoc-lint: $(FPGA_STAMP)
 	$(call FUSESOC_RUN,lint,lint)
 
 fusesoc-sim-icarus fusesoc-sim-verilator: fusesoc-%: $(FPGA_STAMP)
-	$(call FUSESOC_RUN,$*,$*)
+	$(call FUSESOC_RUN,$(subst -,_,$*),$(subst -,_,$*))
 
 # The venv's place-and-route tools under the names edalize calls, on PATH for synth and pnr.
 $(FUSESOC_BIN)/.tools: $(FPGA_STAMP) mk/fusesoc.mk

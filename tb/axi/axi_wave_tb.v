@@ -4,10 +4,12 @@
 //   ROWS <diagram> <row> ...        the rows, in the order of the samples
 //   SMP <diagram> <sample> ...      one cycle: a bit as 0, 1 or x; a bus as x while its stream
 //                                   holds no beat, else the number of the beat it holds
-// scripts/wave_check.py turns them into WaveDrom waves and compares them with the JSON sources
+// (to standard output, or to the file that +out=FILE names). scripts/wave_check.py turns them
+// into WaveDrom waves and compares them with the JSON sources
 // (a diagram's gap stands for the cycles between its first and its last part). Rows inside
 // pree_axi (its engine intake, STATUS bits, HP_PTR, memory reads) are not recorded.
-// Icarus (-g2005); NumPreu 4 as the diagrams, small memories.
+// Icarus (-g2005) and Verilator (--binary) print the same; NumPreu 4 as the diagrams, small
+// memories.
 `default_nettype none
 
 module axi_wave_tb;
@@ -64,23 +66,31 @@ module axi_wave_tb;
     if (rvalid && rready)         r_n    <= r_n + 1;
   end
 
+  // Where the lines go: standard output, or +out=FILE.
+  integer fd = 32'h8000_0001;
+  reg [8*256-1:0] out_name;
+  initial if ($value$plusargs("out=%s", out_name)) begin
+    fd = $fopen(out_name, "w");
+    if (fd == 0) $fatal(1, "axi_wave_tb: cannot write %0s", out_name);
+  end
+
   // One cycle's samples of the current diagram, printed in the middle of the cycle.
   reg [8*16-1:0] diagram = "";
   integer scen = 0;
   task put_bus;   // a bus sample: x without a beat, else the beat number
     input held; input integer n;
     begin
-      if (held) $write(" b%0d", n); else $write(" x");
+      if (held) $fwrite(fd, " b%0d", n); else $fwrite(fd, " x");
     end
   endtask
   task put_bit;
     input v;
     begin
-      $write(" %b", v);
+      $fwrite(fd, " %b", v);
     end
   endtask
   always @(negedge aclk) if (scen != 0) begin
-    $write("SMP %0s", diagram);
+    $fwrite(fd, "SMP %0s", diagram);
     case (scen)
       1: begin   // stream_hp
         put_bit(hp_valid); put_bus(hp_valid, hp_n); put_bit(hp_ready);
@@ -103,7 +113,7 @@ module axi_wave_tb;
       end
       default: ;
     endcase
-    $write("\n");
+    $fwrite(fd, "\n");
   end
 
   // Stimulus: inputs change just after a rising edge.
@@ -137,7 +147,7 @@ module axi_wave_tb;
     // Hit points in: h0 .. h2; a command that runs for one cycle (CMD 3 with PX_COUNT 0),
     // written with h1, makes the engine busy while h2 waits.
     diagram = "stream_hp";
-    $display("ROWS stream_hp s_axis_hp_tvalid s_axis_hp_tdata s_axis_hp_tready");
+    $fdisplay(fd, "ROWS stream_hp s_axis_hp_tvalid s_axis_hp_tdata s_axis_hp_tready");
     scen = 1; cycle;
     hp_valid = 1'b1; cycle;
     awaddr = 12'h014; wdata = 32'd3; awvalid = 1'b1; wvalid = 1'b1; cycle;
@@ -153,7 +163,7 @@ module axi_wave_tb;
     // Photons A (N^P 5: a0 .. a4) and B (N^P 2, tlast: b0, b1); the second candidate beat has
     // a4 in lane 0, lane 1 empty, b0 and b1 in lanes 2 and 3.
     diagram = "stream_ph_cand";
-    $display("ROWS stream_ph_cand s_axis_ph.tvalid s_axis_ph.tdata s_axis_ph.tlast s_axis_ph.tready s_axis_cand.tvalid s_axis_cand.lane_0_[31:0] s_axis_cand.lane_1_[63:32] s_axis_cand.lane_2_[95:64] s_axis_cand.lane_3_[127:96] s_axis_cand.tkeep s_axis_cand.tready irq_o");
+    $fdisplay(fd, "ROWS stream_ph_cand s_axis_ph.tvalid s_axis_ph.tdata s_axis_ph.tlast s_axis_ph.tready s_axis_cand.tvalid s_axis_cand.lane_0_[31:0] s_axis_cand.lane_1_[63:32] s_axis_cand.lane_2_[95:64] s_axis_cand.lane_3_[127:96] s_axis_cand.tkeep s_axis_cand.tready irq_o");
     scen = 2; cycle;
     ph_valid = 1'b1; ph_data[192 +: 16] = 16'd5; cand_valid = 1'b1;
     cand_data = {32'd3, 32'd2, 32'd1, 32'd0}; cand_keep = 16'hFFFF; cycle;
@@ -171,7 +181,7 @@ module axi_wave_tb;
 
     // Read command: CMD 4 (pixels, PX_COUNT 3), m_axis_tready low for one cycle.
     diagram = "stream_m";
-    $display("ROWS stream_m AW_+_W m_axis_tvalid m_axis_tdata m_axis_tuser m_axis_tlast m_axis_tready irq_o");
+    $fdisplay(fd, "ROWS stream_m AW_+_W m_axis_tvalid m_axis_tdata m_axis_tuser m_axis_tlast m_axis_tready irq_o");
     scen = 3;
     awaddr = 12'h014; wdata = 32'd4; awvalid = 1'b1; wvalid = 1'b1; cycle;
     awvalid = 1'b0; wvalid = 1'b0; cycle;
@@ -184,7 +194,7 @@ module axi_wave_tb;
 
     // AXI4-Lite: CMD 4 again, its interrupt, IRQ_STATUS read and its bit 1 cleared.
     diagram = "axil_cmd";
-    $display("ROWS axil_cmd write.s_axil_awvalid write.s_axil_awaddr write.s_axil_wvalid write.s_axil_wdata write.s_axil_aw/wready write.s_axil_bvalid write.s_axil_bready read.s_axil_arvalid read.s_axil_araddr read.s_axil_arready read.s_axil_rvalid read.s_axil_rdata read.s_axil_rready irq_o");
+    $fdisplay(fd, "ROWS axil_cmd write.s_axil_awvalid write.s_axil_awaddr write.s_axil_wvalid write.s_axil_wdata write.s_axil_aw/wready write.s_axil_bvalid write.s_axil_bready read.s_axil_arvalid read.s_axil_araddr read.s_axil_arready read.s_axil_rvalid read.s_axil_rdata read.s_axil_rready irq_o");
     scen = 4; cycle;
     awaddr = 12'h014; wdata = 32'd4; awvalid = 1'b1; wvalid = 1'b1; cycle;
     awvalid = 1'b0; wvalid = 1'b0; cycle;
@@ -198,7 +208,8 @@ module axi_wave_tb;
     awvalid = 1'b0; wvalid = 1'b0; cycle;
     cycle;
     scen = 0;
-    $display("DONE");
+    $fdisplay(fd, "DONE");
+    if (fd != 32'h8000_0001) $fclose(fd);
     $finish;
   end
 endmodule
