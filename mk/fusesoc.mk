@@ -5,6 +5,8 @@
 #
 #   make fusesoc-lint           Verilator --lint-only -Wall of pree_axi (in `make lint`; the
 #                               regression runs it too: tests/checks/fusesoc_lint.sh)
+#   make fusesoc-sim-wrap       tb/axi/axi_wrap_tb.v under Icarus (self-checking: pree_axi through
+#                               the wrap-around of its running counts)
 #   make fusesoc-sim-icarus     tb/axi/axi_wave_tb.v under Icarus, its waves compared with the
 #                               timing diagrams of docs/wave (scripts/wave_check.py, a hook)
 #   make fusesoc-sim-verilator  the same under Verilator (--binary)
@@ -32,11 +34,11 @@ FUSESOC_RUN     = touch $(BUILD)/FUSESOC_IGNORE && $(abspath $(FPGA_VENV))/bin/f
 TEST_PREREQS += $(FPGA_STAMP)
 LINT_TARGETS += fusesoc-lint
 
-.PHONY: fusesoc-lint fusesoc-sim-icarus fusesoc-sim-verilator fusesoc-synth fusesoc-pnr pree-f
+.PHONY: fusesoc-lint fusesoc-sim-wrap fusesoc-sim-icarus fusesoc-sim-verilator fusesoc-synth fusesoc-pnr pree-f
 fusesoc-lint: $(FPGA_STAMP)
 	$(call FUSESOC_RUN,lint,lint)
 
-fusesoc-sim-icarus fusesoc-sim-verilator: fusesoc-%: $(FPGA_STAMP)
+fusesoc-sim-wrap fusesoc-sim-icarus fusesoc-sim-verilator: fusesoc-%: $(FPGA_STAMP)
 	$(call FUSESOC_RUN,$(subst -,_,$*),$(subst -,_,$*))
 
 # The venv's place-and-route tools under the names edalize calls, on PATH for synth and pnr.
