@@ -4,18 +4,24 @@
 # generates from the core (the same files in FuseSoC's order); the core's parameters are exactly
 # pree_axi's overridable ones (those not marked "do not override"), and so are those of the pnr
 # target's top, tb/fpga/pree_fpga_axi_wrap.v, which is lint-clean too; the core's version is
-# pree_axi's PREE_VERSION. FuseSoC from the hardware
+# pree_axi's PREE_VERSION; every other target (sim_wrap, sim_icarus, sim_verilator, synth, pnr)
+# sets up (`fusesoc run --setup`: its files exist, its flow and options are valid; nothing is
+# built). FuseSoC from the hardware
 # tools' venv (FPGA_VENV, default build/fpga-venv; make test installs it).
-# cost: 10 (its seconds in a serial run; the runner starts costly checks first)
+# cost: 20 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 venv=${FPGA_VENV:-${BUILD:-build}/fpga-venv}
 [ -x "$venv/bin/fusesoc" ] || fail "no FuseSoC in $venv (make fpga-deps)"
 out=${BUILD:-build}/fusesoc/check-lint
-rm -rf "$out"
+rm -rf "$out" "$out"-*
 mkdir -p "${BUILD:-build}" && touch "${BUILD:-build}/FUSESOC_IGNORE"
 run "$venv/bin/fusesoc" --cores-root . run --build-root "$out" --target=lint pree:pree:pree_axi
 echo "ok: fusesoc run --target=lint of pree.core"
+for t in sim_wrap sim_icarus sim_verilator synth pnr; do
+  run "$venv/bin/fusesoc" --cores-root . run --setup --build-root "$out-$t" --target=$t pree:pree:pree_axi >/dev/null
+done
+echo "ok: the targets sim_wrap, sim_icarus, sim_verilator, synth and pnr set up"
 
 eda=$(ls "$out"/*/lint/*.eda.yml) || fail "no .eda.yml under $out"
 run "$venv/bin/python3" scripts/pree_filelist.py "$eda" "$TMP/pree.f"
