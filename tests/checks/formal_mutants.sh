@@ -5,7 +5,7 @@
 # unmutated RTL: checked here, except a quick-level job's prove and cover (formal_quick.sh runs
 # those). A job's bmc task (a bounded check from reset, deeper than its prove task's) gives the
 # mutants a counterexample from reset rather than an induction failure.
-# cost: 50 (its seconds in a serial run; the runner starts costly checks first)
+# cost: 90 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 export FPGA_VENV=$(cd "${FPGA_VENV:-build/fpga-venv}" 2>/dev/null && pwd) \
