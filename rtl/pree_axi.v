@@ -150,13 +150,9 @@ module pree_axi #(
     end
   endfunction
 
-  // Register numbers (byte address / 4).
-  localparam [9:0] R_VERSION = 10'h000, R_CONFIG0 = 10'h001, R_CONFIG1 = 10'h002,
-                   R_CTRL = 10'h004, R_CMD = 10'h005, R_STATUS = 10'h006, R_IRQ_EN = 10'h007,
-                   R_IRQ_STATUS = 10'h008, R_ERR = 10'h009, R_NE = 10'h00C, R_ALPHA = 10'h00D,
-                   R_KAPPA = 10'h00E, R_N_HIT = 10'h00F, R_HP_PTR = 10'h010, R_HP_COUNT = 10'h011,
-                   R_PX_BASE = 10'h012, R_PX_COUNT = 10'h013, R_PH_IN = 10'h014,
-                   R_PH_DONE = 10'h015, R_CAND_IN = 10'h016;
+  // Register numbers (byte address / 4), R_<name>: generated from the register map
+  // rtl/regs/pree_axi.rdl (make regs).
+  `include "pree_axi_regs.vh"
   // Commands (CMD register).
   localparam [2:0] C_RAD = 3'd1, C_HP_READ = 3'd2, C_PX_CLEAR = 3'd3, C_PX_READ = 3'd4;
   // Command engine states.
