@@ -96,6 +96,8 @@ typedef struct pree_drv pree_drv_t;
  * 5 abank, 6 starved, 7 + l operations of PREU l. */
 #define PREE_NCNT_MAX 32
 
+/* The driver owns the back end from here on. On failure *d is still set when it could be
+ * allocated (pree_error(*d) says why; pree_close it), else NULL with the back end closed. */
 int pree_open(pree_drv_t **d, const pree_backend_t *be);
 void pree_close(pree_drv_t *d);   /* closes the back end too */
 const char *pree_error(const pree_drv_t *d);
