@@ -3,6 +3,8 @@
 # tests) and a board's UIO / /dev/mem mapping with Xilinx AXI DMA engines (drv/pree_be_uio.c).
 #
 #   build/drv/libpree_drv.a   the driver and the board back end (for a board's program)
+#   build/drv/pree_probe      board bring-up through it: the build's registers, and a hit-point
+#                             loopback through the DMA (drv/pree_probe.c; tests/checks/drv_board.sh)
 #   build/drv/pree_drv_test   the driver on the Verilated pree_axi of build/pree-cosim-axi-p4
 #                             against the C model (tests/checks/drv_verilated.sh)
 
@@ -10,11 +12,12 @@ DRV_DIR    := $(BUILD)/drv
 DRV_CFLAGS := $(CFLAGS) -Idrv
 DRV_TEST   := $(DRV_DIR)/pree_drv_test
 DRV_LIB    := $(DRV_DIR)/libpree_drv.a
+DRV_PROBE  := $(DRV_DIR)/pree_probe
 # The Verilated back end's model: pree_axi with 4 PREUs, the paper datapath (mk/cosim_axi.mk).
 DRV_VL_OBJS := $(DRV_DIR)/pree_be_verilated.o $(HOST_DIR)/cosim_axi_rtl_p4.o \
                $(call AXI_MDIR,4,p)/Vpree_axi_p4__ALL.a $(COSIM_VLIB)
 
-TEST_PREREQS += $(DRV_LIB) $(DRV_TEST)
+TEST_PREREQS += $(DRV_LIB) $(DRV_PROBE) $(DRV_TEST)
 
 $(DRV_DIR)/%.o: drv/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
@@ -27,6 +30,8 @@ $(DRV_DIR)/pree_drv_test.o: tb/drv/pree_drv_test.c | $(DEPS_STAMP)
 	$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
 $(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o
 	rm -f $@ && ar rcs $@ $^
+$(DRV_PROBE): $(DRV_DIR)/pree_probe.o $(DRV_LIB)
+	$(CC) $(LDFLAGS) $^ -o $@
 $(DRV_TEST): $(DRV_DIR)/pree_drv_test.o $(DRV_DIR)/pree_drv.o $(DRV_VL_OBJS) $(LIBPREE)
 	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(DRV_DIR)/*.d)
