@@ -19,6 +19,8 @@
 #include "pree_axi_regs_table.h"
 #include "pree_be_verilated.h"
 
+#define RAD_HP 1024   /* hit points of the radiance pass */
+
 static pree_backend_t be;
 static int failures;
 
@@ -196,9 +198,15 @@ static void check_status(void)
     if ((v = rd(st)) != (busy | core)) bad("%s at 0x%03x reads 0x%08x while a clear runs, expected 0x%08x", "STATUS", st, v, busy | core);
     while (!(rd(st) & idle)) {}
     wr(offset("IRQ_STATUS"), 0xffffffffu);
+    /* RAD_HP hit points loaded (zeros, pixel 0: a wrapper may refuse a pass over unloaded ones). */
+    static uint32_t hp[RAD_HP * 17];
+    const unsigned hw = param("DATAPATH") ? 17 : 12;
+    wr(offset("HP_PTR"), 0);
+    if (be.submit(be.ctx, PREE_STREAM_HP, hp, (size_t)RAD_HP * hw, hw, 0)) { fprintf(stderr, "regs_check: %s\n", be.error(be.ctx)); exit(1); }
+    settle();
     wr(offset("CTRL"), bit("CTRL", "CNT_EN"));
-    wr(offset("N_HIT"), 4096);
-    wr(offset("CMD"), 1);   /* a radiance pass over 4096 hit points */
+    wr(offset("N_HIT"), RAD_HP);
+    wr(offset("CMD"), 1);   /* a radiance pass over them */
     v = rd(st);
     if ((v & ~core) != (busy | rad)) bad("%s at 0x%03x reads 0x%08x while the radiance pass runs, expected 0x%08x (and CORE_IDLE 0)", "STATUS", st, v, busy | rad);
     while (!(rd(st) & idle)) {}
@@ -223,7 +231,7 @@ static void check_counters(void)
     for (uint32_t k = 0; k < lo->count; k++) {
         const uint32_t l = rd(lo->offset + k * lo->stride), h = rd(hi->offset + k * hi->stride);
         if (k >= ncnt && (l || h)) bad("%s at 0x%03x reads 0x%08x beyond the build's counters, expected 0x%08x", "CNT", lo->offset + k * lo->stride, l | h, 0);
-        if (k == 1 && (l < 4096 / param("NUM_PREU") || h)) bad("%s at 0x%03x (radiance cycles) reads 0x%08x, expected at least 0x%08x", "CNT.LO", lo->offset + k * lo->stride, l, 4096 / param("NUM_PREU"));
+        if (k == 1 && (l < RAD_HP / param("NUM_PREU") || h)) bad("%s at 0x%03x (radiance cycles) reads 0x%08x, expected at least 0x%08x", "CNT.LO", lo->offset + k * lo->stride, l, RAD_HP / param("NUM_PREU"));
     }
     printf("ok: counter 1 counted the radiance pass's cycles at 0x%03x; counters %u..%u read 0\n", lo->offset + lo->stride, ncnt, lo->count - 1);
 }
