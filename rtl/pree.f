@@ -2,8 +2,9 @@
 // Verilator (-f), Icarus (-c) and Yosys (read_verilog of each line). Top for an FPGA build:
 // pree_axi (docs/integration.md); pree_top for the bare engine. Paths relative to the repository.
 // Generated from pree.core's rtl fileset by `make pree-f` (scripts/pree_filelist.py): edit the core.
-// The include directory is rtl/ (rtl/pree_preu_plan.vh, rtl/pree_hp_bank.vh, rtl/pree_axi_regs.vh): -Irtl for Verilator
-// and Icarus, +incdir+rtl or Vivado's include_dirs elsewhere.
+// The include directory is rtl/: -Irtl for Verilator and Icarus, +incdir+rtl or Vivado's
+// include_dirs elsewhere. Include files:
+//   rtl/pree_preu_plan.vh, rtl/pree_hp_bank.vh, rtl/pree_axi_regs.vh.
 rtl/pree_ram_sdp.v
 rtl/pree_ram_banks.v
 rtl/pree_reset_sync.v

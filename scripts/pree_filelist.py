@@ -19,8 +19,9 @@ HEADER = """\
 // Verilator (-f), Icarus (-c) and Yosys (read_verilog of each line). Top for an FPGA build:
 // pree_axi (docs/integration.md); pree_top for the bare engine. Paths relative to the repository.
 // Generated from pree.core's rtl fileset by `make pree-f` (scripts/pree_filelist.py): edit the core.
-// The include directory is rtl/ ({includes}): -Irtl for Verilator
-// and Icarus, +incdir+rtl or Vivado's include_dirs elsewhere.
+// The include directory is rtl/: -Irtl for Verilator and Icarus, +incdir+rtl or Vivado's
+// include_dirs elsewhere. Include files:
+//   {includes}.
 """
 
 
