@@ -13,6 +13,10 @@
 //                 pixels (tuser 1, {b, g, r} in the low 96 bits); tlast on a command's last beat.
 //   irq_o         level: (IRQ_STATUS & IRQ_EN) != 0.
 //
+// Defined outputs. Every register software reads is reset, and so is m_axis_tdata: no output is
+// X from reset on. The hit-point and pixel memories are not cleared at reset: read back only what
+// was written (hit points loaded, pixels cleared by CMD 3).
+//
 // Index table. The wrapper owns pree_top's index table: candidate number s (counting every
 // candidate since reset) goes to entry ~s mod 2^IdxAW, so that photon k, whose candidates are
 // s = S_k .. S_k + N_k - 1, has p_k = -(S_k + N_k) and AFTSO-HpUOC reads its entries in stream
@@ -254,8 +258,10 @@ module pree_axi #(
     end
   end
 
-  always @(posedge aclk) begin
-    if (rd && rreg[9:6] == 4'h1 && !rreg[0]) cnt_hi_q <= {{(64-CtrW){1'b0}}, cnt_sel[CtrW-1:32]};
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n) cnt_hi_q <= 32'd0;
+    else if (rd && rreg[9:6] == 4'h1 && !rreg[0])
+      cnt_hi_q <= {{(64-CtrW){1'b0}}, cnt_sel[CtrW-1:32]};
   end
 
   assign irq_o = |(irq_q & irq_en_q);
@@ -401,9 +407,10 @@ module pree_axi #(
     end
   end
 
-  always @(posedge aclk) begin
-    if (move) m_data_q <= state_q == S_PX_READ ? {{(HpRecW-96){1'b0}}, px_rdata}
-                                               : {{(32-PxAW){1'b0}}, hp_rdata};
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n)    m_data_q <= {HpRecW{1'b0}};
+    else if (move) m_data_q <= state_q == S_PX_READ ? {{(HpRecW-96){1'b0}}, px_rdata}
+                                                    : {{(32-PxAW){1'b0}}, hp_rdata};
   end
 
   assign m_axis_tdata  = m_data_q;

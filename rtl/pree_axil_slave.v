@@ -72,8 +72,9 @@ module pree_axil_slave #(
     end
   end
 
-  always @(posedge clk_i) begin
-    if (rd_o) rdata_q <= rd_data_i;
+  always @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni)   rdata_q <= 32'd0;
+    else if (rd_o) rdata_q <= rd_data_i;
   end
 
   assign bresp_o  = 2'b00;

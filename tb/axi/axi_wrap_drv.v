@@ -4,7 +4,8 @@
 // for each batch's interrupt (the engine drains there: with Batch = 2^CountW the photon-done
 // count rests at a multiple of 2^CountW, where it wraps to 0), checks the
 // running counts (PH_IN, PH_DONE, CAND_IN modulo 2^CountW), reads every hit point back, runs the
-// radiance pass and reads every pixel. The stimulus is a function of the photon number only, so
+// radiance pass and reads every pixel; after reset it checks that a counter's high half read
+// first is 0. The stimulus is a function of the photon number only, so
 // two drivers with different seeds send the same data under different back-pressure. Fails
 // ($fatal) when a stream makes no progress for StallLimit cycles (a deadlock) or on a protocol
 // error; results in hp_res / px_res, done_o high at the end.
@@ -280,6 +281,8 @@ module axi_wrap_drv #(
     repeat (4) @(posedge aclk);
     aresetn <= 1'b1;
     repeat (4) @(posedge aclk);
+    // After reset: a counter's high half read first is 0.
+    expect_reg(12'h104, 32'd0, "CNT0 hi");
     // Configuration: alpha 0.7, both interrupts.
     lite_write(12'h034, 32'h3f33_3333);
     lite_write(12'h01c, 32'd3);

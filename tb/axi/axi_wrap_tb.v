@@ -8,8 +8,9 @@
 // rests at 0 after its wrap, where a wrapper that takes a count of 0 for "nothing retired" stops
 // taking candidates for good. Both must take every photon and
 // candidate (no stall), read the running counts modulo 2^CountW, and give the same hit points
-// and pixels bit for bit, with no X, and the photons must have changed the hit points.
-// Runs under Icarus (`iverilog -g2005`) and Verilator (`--binary`): tests/checks/axi_wrap.sh.
+// and pixels bit for bit, the photons must have changed the hit points, and no output of either
+// wrapper may be X at any clock edge after aresetn rises (reset read data and m_axis_tdata).
+// Runs under Icarus (`iverilog -g2005`, `vvp -N`): tests/checks/axi_wrap.sh.
 `default_nettype none
 
 module axi_wrap_tb;
@@ -63,6 +64,12 @@ module axi_wrap_tb;
         .ph_tvalid(pv), .ph_tready(pr), .cand_tdata(cd), .cand_tkeep(ck), .cand_tvalid(cv),
         .cand_tready(cr), .hp_tdata(hd), .hp_tvalid(hv), .hp_tready(hr), .m_tdata(md),
         .m_tuser(mu), .m_tlast(ml), .m_tvalid(mv), .m_tready(mr), .irq(irq), .done_o(done[g]));
+      // No X on any output of the wrapper once aresetn has risen.
+      always @(posedge aclk) begin
+        if (rstn && ^{awr, wr, bresp, bv, arr, rd, rresp, rv, pr, cr, hr, md, mu, ml, mv,
+                      irq} === 1'bx)
+          $fatal(1, "axi_wrap_tb: an output of wrapper %0d is X", g);
+      end
     end
   endgenerate
 
