@@ -1,5 +1,5 @@
 // cosim_axi_rtl.cpp: the Verilated pree_axi behind cosim_axi_rtl.h (one model per program: the
-// make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_HPB). C++ only because Verilator's
+// make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_PF, AXI_HPB). C++ only because Verilator's
 // models are C++ classes. Every field of the wrapper's streams sits on a 32-bit boundary, so the
 // wide ports are filled and read a word at a time. Clocked by the benches' harness
 // (tb/lib/vharness.h) with the wrapper's aclk and aresetn.
@@ -113,9 +113,9 @@ extern "C" {
 
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
-    if (preu != AXI_NP || (datapath != 0) != (AXI_DP != 0) || pipefast) {
-        std::snprintf(err, errlen, "this program holds pree_axi with %d PREUs, the %s datapath and PipeFast 0, not %d, %s and %d",
-                      AXI_NP, AXI_DP ? "stable" : "paper", preu, datapath ? "stable" : "paper", pipefast != 0);
+    if (preu != AXI_NP || (datapath != 0) != (AXI_DP != 0) || (pipefast != 0) != (AXI_PF != 0)) {
+        std::snprintf(err, errlen, "this program holds pree_axi with %d PREUs, the %s datapath and PipeFast %d, not %d, %s and %d",
+                      AXI_NP, AXI_DP ? "stable" : "paper", AXI_PF, preu, datapath ? "stable" : "paper", pipefast != 0);
         return nullptr;
     }
     cosim_rtl_t *r = new cosim_rtl(fst);
@@ -130,14 +130,16 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
 void cosim_rtl_free(cosim_rtl_t *r) { delete r; }
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
-// pree_axi's pree_top runs with PipeFast 0: 1 + the PREU's update latency (10 paper, 12 stable).
-int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_DP ? 13 : 11; }
-// ... and without PipeFast 1's registered flow (A's offer register, B's queue).
-int cosim_rtl_reg_flow(cosim_rtl_t *) { return 0; }
+// pree_axi's pree_top with the units' default stages for PipeFast (AXI_PF): 1 + the PREU's
+// update latency (PipeFast 0: 10 paper, 12 stable; PipeFast 1: 48, 52), as rtl/pree_top.v's
+// WIN_UPD (cosim_main.c checks it against the host's own figure).
+int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_PF ? (AXI_DP ? 53 : 49) : (AXI_DP ? 13 : 11); }
+// ... and PipeFast 1's registered flow (A's offer register, B's queue) with PipeFast 1.
+int cosim_rtl_reg_flow(cosim_rtl_t *) { return AXI_PF ? 1 : 0; }
 // The wrapper drives pree_top's photon port one photon a cycle (PhotonsPerCycle 1); --model-only
 // is for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
-int cosim_rtl_radiance_depth(cosim_rtl_t *) { return 12; }   // PipeFast 0's RAD_LAT
+int cosim_rtl_radiance_depth(cosim_rtl_t *) { return AXI_PF ? 64 : 12; }   // RAD_LAT
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }
 int cosim_rtl_config(int, int *, int *) { return -1; }

@@ -7,16 +7,16 @@
 #                      SYNTH_AXI_PREUS (default 4; the reduced flow, synth_axi.sh --fast) into the
 #                      table of docs/integration.md (scripts/fpga_doc.py, markers synth-axi)
 #   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
-#   build/pree-cosim-axi-<d><n>  `pree cosim --axi`: the co-simulation through pree_axi (d: p paper,
-#                      s stable; n PREUs), built only when asked (the regression builds axi-p4:
-#                      tests/checks/axi_cosim.sh)
+#   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
+#                      pree_axi (d: p paper, s stable; n PREUs; f: PipeFast 1), built only when
+#                      asked (the regression builds axi-p4: tests/checks/axi_cosim.sh)
 #   make sim-axi-wide  the wrapper with 8 PREUs against the model (tb/axi/axi_cosim_wide.sh; its
 #                      model takes about 15 minutes to build, so it is outside `make test`)
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
 AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
-AXI_MDIR    = $(AXI_DIR)/vl_$(2)$(1)_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+AXI_MDIR    = $(AXI_DIR)/vl_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
 SYNTH_AXI_PREUS ?= 4
 
 TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
@@ -26,27 +26,28 @@ LINT_TARGETS  += lint-axi
 sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
 	@bash tb/axi/axi_cosim_wide.sh
 
-# pree_axi has no PipeFast parameter (its pree_top keeps the paper's PREUs; the program refuses
-# --pipe-fast) and takes one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's
-# port, not yet the wrapper's): the pree_top parameters without either.
+# The wrapper's models take the co-simulation's pree_top parameters (PipeFast included: d = pf,
+# sf) but one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's port, not yet the
+# wrapper's). $(1): PREU count, $(2): p, s, pf or sf; the tag (p4, s8f, ...) names the model
+# directory, its class and its program (build/pree-cosim-axi-p4f: `pree cosim --axi --pipe-fast`).
 define AXI_VL_RULE
-$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
-	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(2)$(1) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(filter-out -GPipeFast=% -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
+	  $(filter-out -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
-$(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a
+$(HOST_DIR)/cosim_axi_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2)) -DAXI_MODEL=Vpree_axi_$(2)$(1) \
-	  -DAXI_MODEL_H='"Vpree_axi_$(2)$(1).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(filter s,$(2)),1,0) \
-	  -DAXI_HPB=$(COSIM_HPB_$(1)) -c $$< -o $$@
-$(BUILD)/pree-cosim-axi-$(2)$(1): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
-                          $(HOST_DIR)/cosim_axi_rtl_$(2)$(1).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
-                          $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(2)$(1)__ALL.a $(COSIM_VLIB)
+	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
+	  -DAXI_MODEL_H='"Vpree_axi_$(call cosim_tag,$(1),$(2)).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(findstring s,$(2)),1,0) \
+	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -c $$< -o $$@
+$(BUILD)/pree-cosim-axi-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
+                          $(HOST_DIR)/cosim_axi_rtl_$(call cosim_tag,$(1),$(2)).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
+                          $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach p,4 8 16,$(foreach d,p s,$(eval $(call AXI_VL_RULE,$(p),$(d)))))
+$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d)))))
 
 $(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)

@@ -31,7 +31,9 @@
 // while CMD 1 runs. Streams and commands never overlap: streams move only while no command runs,
 // and a command starts only when everything is idle.
 //
-// Parameters: those of pree_top, and PhotonsPerCycle (photons a beat on s_axis_ph; 1 only until
+// Parameters: those of pree_top a user chooses (NumPreu, the memory sizes, CntW, Datapath,
+// PipeFast and the PREU units' Stages; CtrW is the register map's 48), checked together at
+// elaboration (a missing module named after the problem), and PhotonsPerCycle (photons a beat on s_axis_ph; 1 only until
 // pree_top's wide intake lands: the slots of one beat then share tvalid/tready and a slot with
 // N^P = 0 is empty), PhFifoAW (log2 of the photon FIFO depth), RingAW (log2 of the in-flight
 // photon ring: at most 2^RingAW - 1 photons between pree_top's intake and photons_done_o),
@@ -51,6 +53,13 @@ module pree_axi #(
   parameter PxBankW  = 4,
   parameter CntW     = 16,
   parameter Datapath = 0,
+  parameter PipeFast = 0,
+  parameter AddStages  = 0,
+  parameter MulStages  = 0,
+  parameter SqrStages  = 0,
+  parameter DivStages  = 0,
+  parameter U2fStages  = 0,
+  parameter WaccStages = 0,
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
   parameter RingAW   = 4,
@@ -119,6 +128,40 @@ module pree_axi #(
     end
     if (CountW > 32 || CountW < IdxAW + PhFifoAW + 1 || CountW <= RingAW) begin : g_bad_countw
       pree_axi_countw_is_32_at_most_and_idxaw_plus_phfifoaw_plus_1_at_least u_fail ();
+    end
+    if (Datapath < 0 || Datapath > 1) begin : g_bad_datapath
+      pree_axi_datapath_is_0_paper_or_1_stable u_fail ();
+    end
+    if (PipeFast < 0 || PipeFast > 1) begin : g_bad_pipefast
+      pree_axi_pipefast_is_0_or_1 u_fail ();
+    end
+    // A unit's stages: 0 (its default for PipeFast) or what the unit builds (its header).
+    if (AddStages < 0 || AddStages > 7) begin : g_bad_add
+      pree_axi_addstages_is_0_or_1_to_7 u_fail ();
+    end
+    if (MulStages < 0 || MulStages > 8) begin : g_bad_mul
+      pree_axi_mulstages_is_0_or_1_to_8 u_fail ();
+    end
+    if (SqrStages < 0 || SqrStages > 6) begin : g_bad_sqr
+      pree_axi_sqrstages_is_0_or_1_to_6 u_fail ();
+    end
+    if (DivStages < 0 || DivStages == 1 || DivStages > 31) begin : g_bad_div
+      pree_axi_divstages_is_0_or_2_to_31 u_fail ();
+    end
+    if (U2fStages < 0 || U2fStages > 5) begin : g_bad_u2f
+      pree_axi_u2fstages_is_0_or_1_to_5 u_fail ();
+    end
+    if (WaccStages < 0 || WaccStages > 5) begin : g_bad_wacc
+      pree_axi_waccstages_is_0_or_1_to_5 u_fail ();
+    end
+    if (HpBankW < 1 || 2 * HpBankW > HpAW) begin : g_bad_hpbankw
+      pree_axi_hpbankw_is_1_to_half_of_hpaw u_fail ();
+    end
+    if (PxBankW < 1 || PxBankW >= PxAW) begin : g_bad_pxbankw
+      pree_axi_pxbankw_is_1_to_pxaw_minus_1 u_fail ();
+    end
+    if ((1 << IdxAW) <= NumPreu) begin : g_bad_idxaw
+      pree_axi_index_table_needs_more_entries_than_preus u_fail ();
     end
   endgenerate
 
@@ -430,7 +473,9 @@ module pree_axi #(
 
   pree_top #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
-    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW), .CountW(CountW)
+    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW), .PipeFast(PipeFast),
+    .AddStages(AddStages), .MulStages(MulStages), .SqrStages(SqrStages), .DivStages(DivStages),
+    .U2fStages(U2fStages), .WaccStages(WaccStages), .CountW(CountW)
   ) u_top (
     .clk_i(aclk), .rst_ni(rst_n),
     .mode_i(mode_q), .cnt_en_i(cnt_en_q), .ne_i(ne_q), .alpha_i(alpha_q), .kappa_i(kappa_q),

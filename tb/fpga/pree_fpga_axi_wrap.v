@@ -16,6 +16,13 @@ module pree_fpga_axi_wrap #(
   parameter PxBankW  = 4,
   parameter CntW     = 16,
   parameter Datapath = 0,
+  parameter PipeFast = 0,
+  parameter AddStages  = 0,
+  parameter MulStages  = 0,
+  parameter SqrStages  = 0,
+  parameter DivStages  = 0,
+  parameter U2fStages  = 0,
+  parameter WaccStages = 0,
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
   parameter RingAW   = 4,
@@ -59,7 +66,9 @@ module pree_fpga_axi_wrap #(
 
   pree_axi #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
-    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .PhotonsPerCycle(PhotonsPerCycle),
+    .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .PipeFast(PipeFast),
+    .AddStages(AddStages), .MulStages(MulStages), .SqrStages(SqrStages), .DivStages(DivStages),
+    .U2fStages(U2fStages), .WaccStages(WaccStages), .PhotonsPerCycle(PhotonsPerCycle),
     .PhFifoAW(PhFifoAW), .RingAW(RingAW), .CountW(CountW)
   ) u_axi (
     .aclk(clk_i), .aresetn(rst_ni),

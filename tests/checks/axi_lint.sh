@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
 # verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths; the wrapper
-# bench's narrow counts); Icarus
+# bench's narrow counts; PipeFast 1 and unit stages; out-of-range parameters refused by name); Icarus
 # (-g2005) elaborates pree_axi and pree_reset_sync through it.
-# cost: 45 (its seconds in a serial run; the runner starts costly checks first)
+# cost: 70 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 listed=$(grep -v '^//' rtl/pree.f | sort)
@@ -18,6 +18,18 @@ done
 # The narrowest running counts the wrapper bench uses (tests/checks/axi_wrap.sh).
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=2 -GHpAW=6 -GHpBankW=2 \
   -GIdxAW=4 -GPxAW=4 -GPxBankW=2 -GCntW=8 -GPhFifoAW=1 -GCountW=6 -f rtl/pree.f
+# The deep PREU pipeline and per-unit stages through the wrapper.
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -f rtl/pree.f
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -GDivStages=18 -GAddStages=3 -f rtl/pree.f
+# A combination out of range stops elaboration with a module named after the problem.
+for bad in "DivStages=1:pree_axi_divstages_is_0_or_2_to_31" "PipeFast=2:pree_axi_pipefast_is_0_or_1" \
+           "HpBankW=10:pree_axi_hpbankw_is_1_to_half_of_hpaw" "PhotonsPerCycle=2:pree_axi_photons_per_cycle"; do
+  if verilator --lint-only -Wall -Irtl --top-module pree_axi -G${bad%%:*} -f rtl/pree.f >"$TMP/bad.log" 2>&1; then
+    fail "pree_axi elaborated with ${bad%%:*}"
+  fi
+  grep -q "${bad#*:}" "$TMP/bad.log" || fail "pree_axi with ${bad%%:*}: no message naming ${bad#*:}: $(head -2 "$TMP/bad.log")"
+done
+echo "ok: out-of-range parameters stop elaboration with a named module"
 run iverilog -g2005 -Wall -Irtl -o "$TMP/axi.vvp" -s pree_axi -c rtl/pree.f
 run iverilog -g2005 -Irtl -o "$TMP/rs.vvp" -s pree_reset_sync -c rtl/pree.f
 echo "ok: pree_axi lint-clean and elaborated"
