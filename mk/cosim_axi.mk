@@ -12,6 +12,11 @@
 #                      asked (the regression builds axi-p4: tests/checks/axi_cosim.sh)
 #   make sim-axi-wide  the wrapper with 8 PREUs against the model (tb/axi/axi_cosim_wide.sh; its
 #                      model takes about 15 minutes to build, so it is outside `make test`)
+#   make sim-axi-full  the whole-frame rows through the wrapper beside pree_top alone
+#                      (tb/axi/axi_cosim_full.sh): AXI_FULL_TAGS (default p4 p8 p16 p4f p8f p16f
+#                      s4 s4f), AXI_FULL_OPTS (default the whole frame, cornell3 320x240 / 768k
+#                      photons), --gap AXI_FULL_GAP (0.3); the table in build/axi/full/table.md.
+#                      Outside `make test`: its 16 models take hours to build here
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
@@ -20,11 +25,14 @@ AXI_MDIR    = $(AXI_DIR)/vl_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(CO
 SYNTH_AXI_PREUS ?= 4
 
 TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
+AXI_FULL_TAGS ?= p4 p8 p16 p4f p8f p16f s4 s4f
 LINT_TARGETS  += lint-axi
 
-.PHONY: lint-axi synth-axi fit-table sim-axi-wide
+.PHONY: lint-axi synth-axi fit-table sim-axi-wide sim-axi-full
 sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
 	@bash tb/axi/axi_cosim_wide.sh
+sim-axi-full: $(BUILD)/pree $(foreach t,$(AXI_FULL_TAGS),$(BUILD)/pree-cosim-axi-$(t) $(BUILD)/pree-cosim-$(t))
+	@AXI_FULL_OPTS="$(AXI_FULL_OPTS)" bash tb/axi/axi_cosim_full.sh $(AXI_DIR)/full $(AXI_FULL_TAGS)
 
 # The wrapper's models take the co-simulation's pree_top parameters (PipeFast included: d = pf,
 # sf) but one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's port, not yet the
