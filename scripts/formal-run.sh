@@ -6,7 +6,8 @@
 #   job     only these jobs (any level), prove and cover; job:task one task of a job (a job may
 #           have more tasks, e.g. bmc: a deeper bounded check from reset, for the mutants)
 # Prints one line per task: job, task, PASS or FAIL, seconds, depth (prove: the k-induction
-# depth, or the step of a counterexample; cover: the last cover's step), and for a failure its
+# depth, or bmc=N where a job's prove task is only bounded, or the step of a counterexample;
+# cover: the last cover's step), and for a failure its
 # status (FAIL: a counterexample, UNKNOWN: induction failed, TIMEOUT, ERROR) and the trace (.vcd,
 # open in GTKWave). Exits 1 if any task fails.
 # Environment: FPGA_VENV the tools' venv (build/fpga-venv), FORMAL_OUT the work folders
@@ -55,7 +56,8 @@ for p in "${pairs[@]}"; do
     if [ "$task" = cover ]; then
       depth="step $(grep -io 'reached cover statement.* step [0-9]*' "$log" | sed 's/.* step //' | sort -n | tail -1)"
     else
-      depth="$([ "$task" = prove ] && echo k || echo bmc)=$(sed -n "s/^depth *//p; s/^$task: *depth *//p" "formal/$job/$job.sby" | head -1)"
+      mode=$(sed -n "s/^mode *//p; s/^$task: *mode *//p" "formal/$job/$job.sby" | head -1)
+      depth="$([ "$mode" = prove ] && echo k || echo bmc)=$(sed -n "s/^depth *//p; s/^$task: *depth *//p" "formal/$job/$job.sby" | head -1)"
     fi
     echo "$job $task PASS ${secs}s $depth"
   else

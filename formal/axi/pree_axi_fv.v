@@ -1,7 +1,7 @@
 // pree_axi_fv: the formal harness of pree_axi (job formal/axi; docs/formal.md). The wrapper with
 // small parameters around the pree_top stub (pree_top_stub.v), every port checked by the
 // interface property modules of formal/lib, the environment's assumptions, and the wrapper's
-// own properties: no deadlock, counters through wrap-around, the covers.
+// own invariants and covers.
 //
 // Taps: the f_t_* wires have no driver here; taps.ys connects each to a register inside the
 // wrapper after flattening (SymbiYosys reads it), so that the RTL stays free of formal code and
@@ -19,9 +19,7 @@ module pree_axi_fv #(
   parameter PhFifoAW = 1,
   parameter RingAW   = 2,
   parameter CountW   = 6,   // the wrapper's running counts: narrow, so that they wrap
-  parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
-  parameter StuckMax = 8,   // no deadlock: cycles with work pending and no progress
-  parameter Live     = 0    // 1: prove no deadlock (job formal/axi_live), else the rest
+  parameter StallMax = 3    // fair back-pressure: the host takes a waiting result or response
 ) (
   input wire aclk,
   input wire aresetn,
@@ -103,55 +101,20 @@ module pree_axi_fv #(
   // Taps into the wrapper (taps.ys).
   (* keep *) wire [2:0]  f_t_state;
   (* keep *) wire [CountW-1:0] f_t_wr_cnt, f_t_cum_in, f_t_given, f_t_ret, f_t_taken, f_t_done;
-  (* keep *) wire [31:0] f_t_ci;
   (* keep *) wire        f_t_all_idle, f_t_rst_n;
-  (* keep *) wire [CountW-1:0] f_t_head_end, f_t_wdone;
-  // Live only (axi_live/taps.ys, after memory_map): the ring of in-flight photons' candidate
-  // ends and the photon FIFO's ends.
-  (* keep *) wire [CountW*(1<<RingAW)-1:0]   f_t_ring;
-  (* keep *) wire [CountW*(1<<PhFifoAW)-1:0] f_t_phf_end;
   (* keep *) wire [PhFifoAW:0] f_t_phf_wp, f_t_phf_rp;
 
   // ---------------------------------------------------------------------------------------------
   // The environment (the host's contract, docs/integration.md): a photon's N^P fits the index
-  // table; the host supplies the candidates that accepted photons still need, and the photons
-  // of candidates sent ahead (fair streams).
-  wire [CountW-1:0] f_owed = f_t_cum_in - f_t_wr_cnt;   // candidates of accepted photons not yet in
-  always @* if (aresetn) begin
-    if (s_axis_ph_tvalid) assume ({{(32-CntW){1'b0}}, s_axis_ph_tdata[192 +: CntW]} <= IDX_ROOM);
-    if (f_t_rst_n && f_owed != 0 && !f_owed[CountW-1]) assume (s_axis_cand_tvalid);
-    if (f_t_rst_n && f_owed[CountW-1]) assume (s_axis_ph_tvalid);
-  end
-
-  // ---------------------------------------------------------------------------------------------
-  // No deadlock: while work is pending (the wrapper or the engine busy, or a photon or candidate
-  // offered), something moves within StuckMax cycles: a stream beat, a photon into or out of the
-  // engine, a command step.
-  reg [2:0]  f_state_q;
-  reg [CountW-1:0] f_given_q, f_done_q;
-  reg [31:0] f_ci_q;
-  always @(posedge aclk) begin
-    f_state_q <= f_t_state; f_given_q <= f_t_given; f_done_q <= f_t_done; f_ci_q <= f_t_ci;
-  end
-  wire f_progress = (s_axis_ph_tvalid && s_axis_ph_tready) ||
-                    (s_axis_cand_tvalid && s_axis_cand_tready) ||
-                    (m_axis_tvalid && m_axis_tready) ||
-                    (f_past_valid && (f_t_state != f_state_q || f_t_given != f_given_q ||
-                                      f_t_done != f_done_q || f_t_ci != f_ci_q));
-  wire f_pending = !f_t_all_idle || s_axis_ph_tvalid || s_axis_cand_tvalid;
-  reg [4:0] f_stuck_q = 5'd0;
-  always @(posedge aclk)
-    f_stuck_q <= (!aresetn || !f_t_rst_n || !f_pending || f_progress) ? 5'd0 : f_stuck_q + 5'd1;
-  generate
-    if (Live != 0) begin : g_live
-      always @* assert (f_stuck_q < StuckMax);
-    end
-  endgenerate
+  // table.
+  always @* if (aresetn && s_axis_ph_tvalid)
+    assume ({{(32-CntW){1'b0}}, s_axis_ph_tdata[192 +: CntW]} <= IDX_ROOM);
 
   // ---------------------------------------------------------------------------------------------
   // Invariants of the wrapper's state (they hold from reset; stated for induction).
   wire [PhFifoAW:0] f_phf_n = f_t_phf_wp - f_t_phf_rp;   // photons in the FIFO
   wire [CountW-1:0] f_fly = f_t_given - f_t_done;          // photons in the engine
+  wire [CountW-1:0] f_used = f_t_wr_cnt - f_t_ret;         // index entries not yet retired
   always @* if (aresetn) begin
     assert (f_aw_out == {3'd0, s_axil_bvalid} && f_w_out == {3'd0, s_axil_bvalid});
     assert (f_ar_out == {3'd0, s_axil_rvalid});
@@ -160,56 +123,6 @@ module pree_axi_fv #(
     assert (f_phf_n <= (1 << PhFifoAW));
     assert (f_fly < (1 << RingAW));
   end
-  // ---------------------------------------------------------------------------------------------
-  // Live: the candidate accounting's invariants (they hold from reset; the induction needs them).
-  // Measured from the candidates retired (ret): the candidate ends of the photons in flight
-  // (ring, oldest first), then of the FIFO's (oldest first), rise to cum_in, the last photon's;
-  // every photon in flight has its candidates written; the written candidates not yet retired
-  // fit the table.
-  localparam RING = 1 << RingAW, PHF = 1 << PhFifoAW;
-  localparam [31:0] SPAN = IDX_ROOM * (RING + PHF);   // below 2^CountW
-  // The photons whose candidates are not retired: from the wrapper's copy of photons_done_o
-  // (w_done, which ret follows a cycle late) to the photons given.
-  wire [CountW-1:0] f_unret = f_t_given - f_t_wdone;
-
-  generate
-    if (Live != 0) begin : g_acct
-      reg [CountW-1:0] f_end [0:RING+PHF-1];   // the ends in order; f_n of them
-      reg [CountW-1:0] f_dist [0:RING+PHF-1];  // each end - ret, modulo 2^CountW
-      reg [3:0] f_n;
-      wire [CountW-1:0] f_d_cum = f_t_cum_in - f_t_ret, f_d_wr = f_t_wr_cnt - f_t_ret;
-      always @* begin : chain
-        integer i, k;
-        f_n = 4'd0;
-        for (i = 0; i < RING + PHF; i = i + 1) begin f_end[i] = 0; f_dist[i] = 0; end
-        for (i = 0; i < RING; i = i + 1)
-          if (i < f_unret) begin
-            k = (f_t_wdone + i) % RING;
-            f_end[f_n] = f_t_ring[CountW*k +: CountW]; f_n = f_n + 4'd1;
-          end
-        for (i = 0; i < PHF; i = i + 1)
-          if (i < f_phf_n) begin
-            k = (f_t_phf_rp + i) % PHF;
-            f_end[f_n] = f_t_phf_end[CountW*k +: CountW]; f_n = f_n + 4'd1;
-          end
-        for (i = 0; i < RING + PHF; i = i + 1) f_dist[i] = f_end[i] - f_t_ret;
-      end
-      always @* if (aresetn && f_t_rst_n) begin : acct
-        integer i;
-        assert (f_d_cum <= SPAN);
-        assert (f_t_done - f_t_wdone <= 1);
-        assert (f_d_wr <= (32'd1 << IdxAW));
-        for (i = 0; i < RING + PHF; i = i + 1)
-          if (i < f_n) begin
-            assert (f_dist[i] <= f_d_cum);
-            if (i > 0) assert (f_dist[i] >= f_dist[i-1]);
-            if (i == f_n - 1) assert (f_end[i] == f_t_cum_in);
-            if (i < f_unret) assert (f_dist[i] <= f_d_wr);
-          end
-        if (f_n == 4'd0) assert (f_d_cum == 0);
-      end
-    end
-  endgenerate
 
   // ---------------------------------------------------------------------------------------------
   // Covers: the events the proof must reach, so that none of it is vacuous.
@@ -220,7 +133,7 @@ module pree_axi_fv #(
     cover (m_axis_tvalid && m_axis_tready && m_axis_tlast);      // a read command's last beat
     cover (irq_o);                                               // an interrupt raised
     cover (f_phf_n == (1 << PhFifoAW));                          // photon FIFO full
-    cover (f_t_wr_cnt - f_t_ret == (1 << IdxAW));                // index table full
+    cover (f_used == (1 << IdxAW));                              // index table full
     cover (s_axil_bvalid && s_axil_rvalid);                      // a write and a read answered
   end
 
