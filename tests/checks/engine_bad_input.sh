@@ -73,6 +73,7 @@ expect_error "alpha above one" "--alpha: 1.5 is out of range" render "$good" --a
 expect_error "alpha not a number" "--alpha: 'nan' is not a number" render "$good" --alpha nan "${out[@]}"
 expect_error "bad datapath" "--datapath: 'fast' is not paper or stable" render "$good" --datapath fast "${out[@]}"
 expect_error "stable datapath in double" "--datapath stable needs --precision fp32" render "$good" --datapath stable "${out[@]}"
+expect_error "bad layout" "--layout: 'hilbert' is not spatial or pixel" render "$good" --layout hilbert "${out[@]}"
 sed 's/intensity 2500 2500 2500/intensity 1e38 1e38 1e38/' "$good" > "$TMP/hot.scene"
 for dp in paper stable; do
   expect_error "light flux beyond binary32 ($dp)" "photon 0's flux .* beyond binary32's range" render "$TMP/hot.scene" \
