@@ -19,7 +19,8 @@ module pree_axi_fv #(
   parameter PhFifoAW = 1,
   parameter RingAW   = 2,
   parameter CountW   = 6,   // the wrapper's running counts: narrow, so that they wrap
-  parameter StallMax = 3    // fair back-pressure: the host takes a waiting result or response
+  parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
+  parameter Acct     = 0    // 1: the candidate accounting's invariants (job formal/axi_acct)
 ) (
   input wire aclk,
   input wire aresetn,
@@ -103,6 +104,11 @@ module pree_axi_fv #(
   (* keep *) wire [CountW-1:0] f_t_wr_cnt, f_t_cum_in, f_t_given, f_t_ret, f_t_taken, f_t_done;
   (* keep *) wire        f_t_all_idle, f_t_rst_n;
   (* keep *) wire [PhFifoAW:0] f_t_phf_wp, f_t_phf_rp;
+  // Acct only (axi_acct/taps_acct.ys, after memory_map): the wrapper's copy of photons_done_o,
+  // the ring of in-flight photons' candidate ends and the photon FIFO's ends.
+  (* keep *) wire [CountW-1:0] f_t_wdone;
+  (* keep *) wire [CountW*(1<<RingAW)-1:0]   f_t_ring;
+  (* keep *) wire [CountW*(1<<PhFifoAW)-1:0] f_t_phf_end;
 
   // ---------------------------------------------------------------------------------------------
   // The environment (the host's contract, docs/integration.md): a photon's N^P fits the index
@@ -123,6 +129,59 @@ module pree_axi_fv #(
     assert (f_phf_n <= (1 << PhFifoAW));
     assert (f_fly < (1 << RingAW));
   end
+
+  // ---------------------------------------------------------------------------------------------
+  // Acct: the candidate accounting's invariants through wrap-around (job axi_acct).
+  // Measured from the candidates retired (ret): the candidate ends of the photons in flight
+  // (ring, oldest first), then of the FIFO's (oldest first), rise to cum_in, the last photon's;
+  // every photon in flight has its candidates written; the written candidates not yet retired
+  // fit the table.
+  localparam RING = 1 << RingAW, PHF = 1 << PhFifoAW;
+  localparam [31:0] SPAN = IDX_ROOM * (RING + PHF);   // below 2^CountW
+  // The photons whose candidates are not retired: from the wrapper's copy of photons_done_o
+  // (w_done, which ret follows a cycle late) to the photons given.
+  wire [CountW-1:0] f_unret = f_t_given - f_t_wdone;
+
+  generate
+    if (Acct != 0) begin : g_acct
+      reg [CountW-1:0] f_end [0:RING+PHF-1];   // the ends in order; f_n of them
+      reg [CountW-1:0] f_dist [0:RING+PHF-1];  // each end - ret, modulo 2^CountW
+      reg [3:0] f_n;
+      wire [CountW-1:0] f_d_cum = f_t_cum_in - f_t_ret, f_d_wr = f_t_wr_cnt - f_t_ret;
+      wire [CountW-1:0] f_lag = f_t_done - f_t_wdone;
+      always @* begin : chain
+        integer i, k;
+        f_n = 4'd0;
+        for (i = 0; i < RING + PHF; i = i + 1) begin f_end[i] = 0; f_dist[i] = 0; end
+        for (i = 0; i < RING; i = i + 1)
+          if (i < f_unret) begin
+            k = (f_t_wdone + i) % RING;
+            f_end[f_n] = f_t_ring[CountW*k +: CountW]; f_n = f_n + 4'd1;
+          end
+        for (i = 0; i < PHF; i = i + 1)
+          if (i < f_phf_n) begin
+            k = (f_t_phf_rp + i) % PHF;
+            f_end[f_n] = f_t_phf_end[CountW*k +: CountW]; f_n = f_n + 4'd1;
+          end
+        for (i = 0; i < RING + PHF; i = i + 1) f_dist[i] = f_end[i] - f_t_ret;
+      end
+      always @* if (aresetn && f_t_rst_n) begin : acct
+        integer i;
+        assert (f_d_cum <= SPAN);
+        assert (f_lag <= 1);
+        assert (f_d_wr <= (32'd1 << IdxAW));
+        for (i = 0; i < RING + PHF; i = i + 1)
+          if (i < f_n) begin
+            assert (f_dist[i] <= f_d_cum);
+            if (i > 0) assert (f_dist[i] >= f_dist[i-1] && f_dist[i] - f_dist[i-1] <= IDX_ROOM);
+            if (i == 0) assert (f_dist[i] <= IDX_ROOM);
+            if (i == f_n - 1) assert (f_end[i] == f_t_cum_in);
+            if (i < f_unret) assert (f_dist[i] <= f_d_wr);
+          end
+        if (f_n == 4'd0) assert (f_d_cum == 0);
+      end
+    end
+  endgenerate
 
   // ---------------------------------------------------------------------------------------------
   // Covers: the events the proof must reach, so that none of it is vacuous.
