@@ -55,6 +55,7 @@ struct cosim_drv {
     uint32_t rx_pixel[HP_BLOCK];
     uint32_t *rx_px;
     uint32_t blk_base, blk_n;          /* the hit points in rx_hp */
+    uint32_t hp_loaded;                /* hit points [0, hp_loaded) loaded: the wrapper reads no others */
     int irq;                           /* irq_o in the last cycle */
     cosim_sched_t *sched;
 };
@@ -268,6 +269,7 @@ void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixe
         if (++guard > WAIT_LIMIT) fail(d, "s_axis_hp: not taken");
     }
     if (lite_read(d, R_HP_PTR) != (uint32_t)n) fail(d, "HP_PTR does not count the hit points loaded");
+    if (n > d->hp_loaded) d->hp_loaded = (uint32_t)n;
 }
 
 /* Queue one photon and its candidates (in stream order); clock while the queues are long. */
@@ -345,9 +347,10 @@ int cosim_drv_drain(cosim_drv_t *d)
 
 void cosim_drv_read_hp(cosim_drv_t *d, uint32_t i, preu_hpw_t *hp, uint32_t *pixel)
 {
+    if (i >= d->hp_loaded) fail(d, "a hit point read beyond those loaded");
     if (d->hung) { memset(hp, 0, sizeof *hp); *pixel = 0; return; }
     if (i < d->blk_base || i >= d->blk_base + d->blk_n) {
-        const uint32_t cap = 1u << COSIM_HPAW;
+        const uint32_t cap = d->hp_loaded;
         d->blk_base = i;
         d->blk_n = cap - i < HP_BLOCK ? cap - i : HP_BLOCK;
         lite_write(d, R_HP_PTR, i);

@@ -13,9 +13,12 @@
 //                 pixels (tuser 1, {b, g, r} in the low 96 bits); tlast on a command's last beat.
 //   irq_o         level: (IRQ_STATUS & IRQ_EN) != 0.
 //
-// Defined outputs. Every register software reads is reset, and so is m_axis_tdata: no output is
-// X from reset on. The hit-point and pixel memories are not cleared at reset: read back only what
-// was written (hit points loaded, pixels cleared by CMD 3).
+// Defined outputs. Every register software reads is reset, and so is m_axis_tdata. Read commands
+// reach only memory the host wrote: hit points [0, n) once s_axis_hp has loaded them from
+// address 0 on (loads extend the range when they write at its end) and pixels once CMD 3 has
+// cleared them; CMD 2 beyond the hit points loaded, CMD 1 with N_HIT beyond them and CMD 4
+// beyond the pixels cleared are refused (ERR bit 0, no interrupt, no beat). The memories'
+// contents after reset (or power-up) are never relied on.
 //
 // Index table. The wrapper owns pree_top's index table: candidate number s (counting every
 // candidate since reset) goes to entry ~s mod 2^IdxAW, so that photon k, whose candidates are
@@ -228,7 +231,9 @@ module pree_axi #(
 
   wire        idle_wr  = wr && all_idle;   // constants and commands: only while idle
   wire [9:0]  wreg     = wr_addr[11:2];
-  wire        cmd_ok   = idle_wr && wreg == R_CMD && wr_data[2:0] >= C_RAD && wr_data[2:0] <= C_PX_READ;
+  wire        range_ok;                    // the command reads only what was written (below)
+  wire        cmd_ok   = idle_wr && wreg == R_CMD && wr_data[2:0] >= C_RAD &&
+                         wr_data[2:0] <= C_PX_READ && range_ok;
   wire        cmd_bad  = wr && wreg == R_CMD && !cmd_ok;
   wire        const_wr = wr && (wreg == R_NE || wreg == R_ALPHA || wreg == R_KAPPA ||
                                 wreg == R_N_HIT || wreg == R_HP_PTR || wreg == R_HP_COUNT ||
@@ -462,6 +467,38 @@ module pree_axi #(
   assign m_axis_tlast  = m_last_q;
   assign m_axis_tvalid = m_valid_q;
 
+  // ===============================================================================================
+  // Written ranges: hit points [0, hp_wr_q) have been loaded since reset (s_axis_hp extends the
+  // range when it writes at its end), pixels [0, px_wr_q) cleared (CMD 3 extends the range when
+  // it starts inside it or at its end). A command that would read beyond them (CMD 2 over
+  // [HP_PTR, + HP_COUNT), CMD 1 over [0, N_HIT), CMD 4 over [PX_BASE, + PX_COUNT)) is refused as
+  // an unknown one is (ERR bit 0), so no memory word the host never wrote leaves the wrapper and
+  // nothing relies on what the RAMs hold after reset.
+  reg  [HpAW:0] hp_wr_q;
+  reg  [PxAW:0] px_wr_q;
+  wire [32:0] hp_wr_x = {{(32-HpAW){1'b0}}, hp_wr_q};
+  wire [32:0] px_wr_x = {{(32-PxAW){1'b0}}, px_wr_q};
+  wire [32:0] hp_end  = {1'b0, hp_ptr_q} + {1'b0, hp_cnt_q};
+  wire [32:0] px_end  = {1'b0, px_base_q} + {1'b0, px_cnt_q};
+  wire [32:0] px_cap  = 33'd1 << PxAW;
+  wire [32:0] px_new  = px_end > px_cap ? px_cap : px_end;   // a clear's end, within the memory
+  wire        hp_grow = hp_take && !hp_wr_q[HpAW] && {1'b0, hp_ptr_q} == hp_wr_x;
+  wire        px_grow = cmd_ok && wr_data[2:0] == C_PX_CLEAR && {1'b0, px_base_q} <= px_wr_x &&
+                        px_new > px_wr_x;
+  assign range_ok = wr_data[2:0] == C_HP_READ ? hp_end <= hp_wr_x :
+                    wr_data[2:0] == C_RAD     ? {1'b0, n_hit_q} <= hp_wr_x :
+                    wr_data[2:0] == C_PX_READ ? px_end <= px_wr_x : 1'b1;
+
+  always @(posedge aclk or negedge rst_n) begin
+    if (!rst_n) begin
+      hp_wr_q <= {(HpAW+1){1'b0}};
+      px_wr_q <= {(PxAW+1){1'b0}};
+    end else begin
+      if (hp_grow) hp_wr_q <= hp_wr_q + 1'b1;
+      if (px_grow) px_wr_q <= px_new[PxAW:0];
+    end
+  end
+
   assign all_idle   = core_idle && phf_empty && state_q == S_IDLE && wr_cnt_q == cum_in_q &&
                       !m_valid_q;
   assign batch_done = batch_q && all_idle;
@@ -493,7 +530,7 @@ module pree_axi #(
   wire unused_bits = ^{s_axis_ph_tdata[223:192+CntW], s_axis_hp_tdata[HpRecW-1:PxAW+192+StateW],
                        wr_addr[1:0], rd_addr[1:0], n_hit_q[31:HpAW], hp_a[31:HpAW], px_a[31:PxAW],
                        cand_unused, ph_in_x[31+CountW:32], done_x[31+CountW:32],
-                       cand_in_x[31+CountW:32], ph_in_nx[CntW+CountW-1:CountW]};
+                       cand_in_x[31+CountW:32], ph_in_nx[CntW+CountW-1:CountW], px_new[32:PxAW+1]};
   reg [NumPreu*(32-HpAW)-1:0] cand_unused;
   always @* begin : cand_tops
     integer j;

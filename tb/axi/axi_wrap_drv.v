@@ -4,8 +4,9 @@
 // for each batch's interrupt (the engine drains there: with Batch = 2^CountW the photon-done
 // count rests at a multiple of 2^CountW, where it wraps to 0), checks the
 // running counts (PH_IN, PH_DONE, CAND_IN modulo 2^CountW), reads every hit point back, runs the
-// radiance pass and reads every pixel; after reset it checks that a counter's high half read
-// first is 0. The stimulus is a function of the photon number only, so
+// radiance pass and reads every pixel; before and after, it checks that a counter's high half
+// read first is 0 and that commands reading hit points never loaded or pixels never cleared are
+// refused (ERR bit 0, no interrupt). The stimulus is a function of the photon number only, so
 // two drivers with different seeds send the same data under different back-pressure. Fails
 // ($fatal) when a stream makes no progress for StallLimit cycles (a deadlock) or on a protocol
 // error; results in hp_res / px_res, done_o high at the end.
@@ -193,6 +194,17 @@ module axi_wrap_drv #(
     end
   endtask
 
+  task refused;   // a command that must be refused: ERR bit 0, no interrupt, no beat
+    input [2:0] c;
+    begin
+      rx = 0; rx_n = 0;
+      lite_write(12'h014, {29'd0, c});
+      expect_reg(12'h024, 32'd1, "ERR");
+      lite_write(12'h024, 32'd1);
+      expect_reg(12'h020, 32'd0, "IRQ_STAT");
+    end
+  endtask
+
   // ---- Photons, one a beat; tlast on the last.
   always @(posedge aclk) begin : photons
     integer n;
@@ -281,8 +293,13 @@ module axi_wrap_drv #(
     repeat (4) @(posedge aclk);
     aresetn <= 1'b1;
     repeat (4) @(posedge aclk);
-    // After reset: a counter's high half read first is 0.
+    // After reset: a counter's high half read first is 0; reading a hit point never loaded or a
+    // pixel never cleared is refused (ERR bit 0, no beat).
     expect_reg(12'h104, 32'd0, "CNT0 hi");
+    lite_write(12'h044, 32'd1);
+    refused(3'd2);
+    lite_write(12'h04c, 32'd1);
+    refused(3'd4);
     // Configuration: alpha 0.7, both interrupts.
     lite_write(12'h034, 32'h3f33_3333);
     lite_write(12'h01c, 32'd3);
@@ -308,6 +325,12 @@ module axi_wrap_drv #(
     expect_reg(12'h054, NumPhotons & MASK, "PH_DONE");
     expect_reg(12'h058, c_total & MASK, "CAND_IN");
     expect_reg(12'h024, 32'd0, "ERR");
+    // Beyond the hit points loaded: refused.
+    lite_write(12'h040, NHP - 1);
+    lite_write(12'h044, 32'd2);
+    refused(3'd2);
+    lite_write(12'h03c, NHP + 1);
+    refused(3'd1);
     // Every hit point back.
     lite_write(12'h040, 32'd0);
     lite_write(12'h044, NHP);
@@ -322,6 +345,8 @@ module axi_wrap_drv #(
     lite_write(12'h014, 32'd1);
     wait_irq(2'b10);
     read_cmd(3'd4, NPX);
+    lite_write(12'h048, 32'd1);   // beyond the pixels cleared
+    refused(3'd4);
     $display("axi_wrap_drv %0d (CountW %0d): %0d photons, %0d candidates, done", Seed, CountW,
              NumPhotons, c_total);
     done_o = 1'b1;

@@ -9,7 +9,8 @@
 // taking candidates for good. Both must take every photon and
 // candidate (no stall), read the running counts modulo 2^CountW, and give the same hit points
 // and pixels bit for bit, the photons must have changed the hit points, and no output of either
-// wrapper may be X at any clock edge after aresetn rises (reset read data and m_axis_tdata).
+// wrapper may be X at any clock edge after aresetn rises (refused reads of unwritten memory,
+// reset read data).
 // Runs under Icarus (`iverilog -g2005`, `vvp -N`): tests/checks/axi_wrap.sh.
 `default_nettype none
 
