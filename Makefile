@@ -37,7 +37,7 @@ LDFLAGS  := -fopenmp $(SANFLAGS)
 all: build
 
 help:
-	@echo "make run     install what is missing, build, render the default scene"
+	@echo "make run     install what is missing, build, render the default scene (SCENE=path for another)"
 	@echo "make test    the full regression (ends with 'N passed, N failed')"
 	@echo "make check   the quick regression for iteration"
 	@echo "make bench   speed, memory and run-time-against-error figures"
@@ -71,8 +71,12 @@ JOBS ?= $(shell nproc)
 PARALLEL := -j$(JOBS)
 
 # The clock for the time to the first image starts after the packages are in, before the build.
+# SCENE=path renders another scene through the same comparison; SIZE="--width W --height H
+# --photons N" (any render options) is given to every render of it.
+SCENE ?= scenes/cornell3
+SIZE  ?=
 run: $(DEPS_STAMP)
-	@export PREE_RUN_START=$$(date +%s.%N); \
+	@export PREE_RUN_START=$$(date +%s.%N) PREE_RUN_SCENE='$(SCENE)' PREE_RUN_SIZE="$${PREE_RUN_SIZE:-$(SIZE)}"; \
 	  $(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree && \
 	  scripts/make-run.sh $(BUILD)/pree $(OUT) "$(MAKE) --no-print-directory $(PARALLEL) $(BUILD)/pree-cosim-p4"
 

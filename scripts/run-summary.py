@@ -6,7 +6,7 @@ import os
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "report"))
-from sections import load_json as load  # noqa: E402
+from sections import load_json as load, run_scene  # noqa: E402
 
 
 def find(obj, key):
@@ -22,28 +22,29 @@ def find(obj, key):
 
 
 def main(out, rtl):
+    scene = run_scene(out)
     p = lambda name: os.path.join(out, name)
-    print("== summary")
+    print("== summary (%s)" % scene)
     try:
         first = open(p("first-image-seconds.txt")).read().strip()
     except OSError:
         first = "?"
-    print("images      %s (double, the reference; first image after %s s)" % (p("cornell3-double.png"), first))
-    print("            %s, %s" % (p("cornell3-fp32.png"), p("cornell3-fp32-stable.png"))
-          + (", %s" % p("cornell3-rtl.png") if rtl else ""))
+    print("images      %s (double, the reference; first image after %s s)" % (p(scene + "-double.png"), first))
+    print("            %s, %s" % (p(scene + "-fp32.png"), p(scene + "-fp32-stable.png"))
+          + (", %s" % p(scene + "-rtl.png") if rtl else ""))
     print("diff maps   %s-diff{,-abs,-ssim,-flip}.png (relative, absolute, SSIM, FLIP; colour bars)"
-          % p("cornell3-fp32-vs-double"))
+          % p(scene + "-fp32-vs-double"))
     print("report      make report  ->  %s" % p("report/index.html"))
-    d = load(p("cornell3-double.json"))
+    d = load(p(scene + "-double.json"))
     if d:
         print("render      %dx%d, %s photons, double %.2f s" % (d["width"], d["height"], d["photons_emitted"],
                                                                d["seconds"]["total"]))
     for name, what in (("fp32", "fp32 (paper)"), ("fp32-stable", "fp32 stable"), ("rtl", "RTL (PNG)")):
-        c = load(p("cornell3-%s-vs-double.json" % name))
+        c = load(p(scene + "-%s-vs-double.json" % name))
         if c:
             print("%-11s vs double: SSIM %.7f, PSNR %.2f dB, FLIP %.3g, largest relative error %.3g"
                   % (what, c["ssim"], float(c["psnr_db"]), c["flip"], c["rel_max"]))
-    r = load(p("cornell3-rtl.json")) if rtl else None
+    r = load(p(scene + "-rtl.json")) if rtl else None
     if r:
         print("RTL         %s: %s differing hit-point words, %s differing image words against the fp32 model; "
               "%s cycles, PREU utilization %.3f%%" % (

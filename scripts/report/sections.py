@@ -32,6 +32,15 @@ def img(path, alt, cls=""):
     return '<img class="%s" src="%s" alt="%s" title="%s" data-name="%s">' % (cls, uri, E(alt), E(path), E(os.path.basename(path)))
 
 
+def run_scene(out):
+    """The name of the scene the last make run rendered (out/run-scene.txt; cornell3 when absent)."""
+    try:
+        name = open(os.path.join(out, "run-scene.txt")).read().strip()
+    except OSError:
+        name = ""
+    return name or "cornell3"
+
+
 def not_run(path, what, cmd=""):
     return '<p class="missing">%s: not run (no %s)%s</p>' % (E(what), E(path), (" &mdash; <code>%s</code>" % E(cmd)) if cmd else "")
 
@@ -56,42 +65,43 @@ def images(out):
     """Software and RTL images side by side, and a slider over the double render."""
     names = [("double", "double (reference)"), ("fp32", "fp32, paper datapath"),
              ("fp32-stable", "fp32, stable datapath"), ("rtl", "RTL co-simulation (4 PREUs)")]
-    have = [(n, t) for n, t in names if os.path.exists(os.path.join(out, "cornell3-%s.png" % n))]
+    scene = run_scene(out)
+    have = [(n, t) for n, t in names if os.path.exists(os.path.join(out, "%s-%s.png" % (scene, n)))]
     if not have:
-        return "<h2>Images</h2>" + not_run(os.path.join(out, "cornell3-double.png"), "renders", "make run")
+        return "<h2>Images</h2>" + not_run(os.path.join(out, "%s-double.png" % scene), "renders", "make run")
     cells = "".join('<figure>%s<figcaption>%s</figcaption></figure>'
-                    % (img(os.path.join(out, "cornell3-%s.png" % n), t, "px2"), E(t)) for n, t in have)
-    s = ["<h2>Images (cornell3, <code>make run</code>)</h2>", '<div class="row">%s</div>' % cells]
+                    % (img(os.path.join(out, "%s-%s.png" % (scene, n)), t, "px2"), E(t)) for n, t in have)
+    s = ["<h2>Images (%s, <code>make run</code>)</h2>" % E(scene), '<div class="row">%s</div>' % cells]
     other = [(n, t) for n, t in have if n != "double"]
     if other and have[0][0] == "double":
         n, t = other[-1]
         s.append('<h3>Slider: double (left) against %s (right)</h3>' % E(t))
         s.append('<div class="slider" id="slider"><div class="under">%s</div><div class="over" id="over">%s</div></div>'
-                 % (img(os.path.join(out, "cornell3-%s.png" % n), t, "px2"),
-                    img(os.path.join(out, "cornell3-double.png"), "double", "px2")))
+                 % (img(os.path.join(out, "%s-%s.png" % (scene, n)), t, "px2"),
+                    img(os.path.join(out, "%s-double.png" % scene), "double", "px2")))
         s.append('<input type="range" min="0" max="100" value="50" id="cut" aria-label="slider">')
     return "\n".join(s)
 
 
 def comparisons(out):
     """fp32-, stable- and RTL-against-double figures and their difference maps."""
-    rows, maps = [], []
+    rows, maps, scene = [], [], run_scene(out)
     for name, what in (("fp32", "fp32 (paper) vs double"), ("fp32-stable", "fp32 stable vs double"),
                        ("rtl", "RTL vs double (8-bit)")):
-        c = load_json(os.path.join(out, "cornell3-%s-vs-double.json" % name))
+        c = load_json(os.path.join(out, "%s-%s-vs-double.json" % (scene, name)))
         if not c:
             rows.append([what] + ["not run"] * 7)
             continue
         rows.append([what, fmt(c.get("ssim"), "%.9f"), fmt(c.get("psnr_db"), "%.2f"), fmt(c.get("snr_db"), "%.2f"),
                      fmt(c.get("rmse")), fmt(c.get("flip"), "%.4g"), fmt(c.get("max_abs")), fmt(c.get("rel_max"))])
-        base = os.path.join(out, "cornell3-%s-vs-double-diff" % name)
+        base = os.path.join(out, "%s-%s-vs-double-diff" % (scene, name))
         cells = "".join("<figure>%s<figcaption>%s</figcaption></figure>" % (img(base + suf + ".png", what + " " + cap), cap)
                         for suf, cap in (("", "relative error"), ("-abs", "absolute error"), ("-ssim", "SSIM map"),
                                          ("-flip", "FLIP map")) if os.path.exists(base + suf + ".png"))
         maps.append("<h3>%s</h3><div class=\"row\">%s</div>" % (E(what), cells))
     s = ["<h2>Against the double render</h2>",
          table(["pair", "SSIM", "PSNR dB", "SNR dB", "RMSE", "FLIP", "max |diff|", "max relative"], rows)]
-    r = load_json(os.path.join(out, "cornell3-rtl.json"))
+    r = load_json(os.path.join(out, "%s-rtl.json" % scene))
     if r:
         s.append("<p>RTL against the fp32 model: %s differing hit-point words, %s differing image words (%s).</p>"
                  % (E(str(r.get("hp_words_differing"))), E(str(r.get("image_words_differing"))),
@@ -126,7 +136,7 @@ def utilization(out, build):
     for p in (4, 8, 16):
         src = None
         for cand in (os.path.join(build, "cosim", "full_p%d.json" % p), os.path.join(build, "cosim", "small_p%d.json" % p),
-                     os.path.join(out, "cornell3-rtl.json") if p == 4 else ""):
+                     os.path.join(out, "%s-rtl.json" % run_scene(out)) if p == 4 else ""):
             d = load_json(cand) if cand else None
             if d and d.get("preu") == p:
                 src = (cand, d)
