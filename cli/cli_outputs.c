@@ -41,6 +41,13 @@ static int check_one(const char *cmd, const cli_file_t *o, out_id_t *id)
         return 1;
     }
     if (atomic_out_target_ok(p, err, sizeof err)) { fprintf(stderr, "pree %s: %s %s\n", cmd, o->what, err); return 1; }
+    /* The temporary the write will use, made and removed: catches what access() cannot (a
+     * directory such as /proc that takes no new file, a read-only mount for root). */
+    char tmp[PATH_MAX + TMP_SUFFIX_MAX + 8];
+    int fd = atomic_out_begin(p, tmp, sizeof tmp, err, sizeof err);
+    if (fd < 0) { fprintf(stderr, "pree %s: %s %s\n", cmd, o->what, err); return 1; }
+    close(fd);
+    atomic_out_discard(tmp);
     id->exists = stat(p, &id->file) == 0;
     return 0;
 }

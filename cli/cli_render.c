@@ -55,7 +55,8 @@ static void render_usage(FILE *f)
         "                         whose photon paths are disjoint from those of the renders it judges\n"
         "  --precision P          double (the reference) or fp32 (the PREE datapath's arithmetic)\n"
         "  --datapath D           fp32: paper (default: the paper's PREU, bit for bit) or stable (exact\n"
-        "                         count, wide 1/r2 and tau/r2: accurate for any photon count)\n"
+        "                         count, wide 1/r2 and tau/r2: accurate for any photon count; implies\n"
+        "                         --precision fp32)\n"
         "  --alpha A              the radius reduction alpha, in (0, 1] (default 0.7)\n"
         "  --grid G               cells (default: exact cells, skips), smallppm (the reference program's\n"
         "                         hash grid, exact counts) or brute (every hit point, for tests)\n"
@@ -70,7 +71,8 @@ static void render_usage(FILE *f)
         "  --prees N              fp32: the image of a board of N such PREEs, each holding its run of\n"
         "                         the spatial order, as 'mpirun -np N pree cosim' forms it (default 1)\n"
         "  --threads T            OpenMP threads (default: all cores); the image does not depend on T\n"
-        "  --out IMAGE            .png, .ppm or .exr; may be given several times (default SCENE-NAME.png)\n"
+        "  --out IMAGE            .png, .ppm or .exr; may be given several times (default NAME.png in the\n"
+        "                         current folder, NAME the scene's file name less .scene or .pbrt)\n"
         "  --stats FILE.json      write the statistics\n"
         "  --checkpoint FILE      write the render's state to FILE every --checkpoint-every photons and\n"
         "                         when the photon pass ends or is interrupted (atomically)\n"
@@ -79,7 +81,8 @@ static void render_usage(FILE *f)
         "                         same bits as an uninterrupted render, for any --threads\n"
         "  --time-limit S         stop after the photon block in progress once S seconds have passed;\n"
         "                         the image holds the photons done (stats: photons_emitted), exit 0\n"
-        "  --quiet                no progress on stderr\n"
+        "  --quiet                no progress and no summary on stderr (warnings and errors only); without\n"
+        "                         it the last line names every file written\n"
         "  --max-memory SIZE      the memory the render may hold, e.g. 512M or 8G (default: the\n"
         "                         address-space limit and the available memory); checked against an\n"
         "                         estimate before allocating\n");
@@ -112,6 +115,7 @@ typedef struct {
     const char *outs[MAX_OUTPUTS];
     int nout;
     char default_out[600];
+    int precision_given;    /* --precision was on the command line */
 } render_job_t;
 
 /* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
@@ -133,6 +137,7 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             static const char *const names[] = {"double", "fp32"};
             if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
             opt->precision = k ? PRECISION_FP32 : PRECISION_DOUBLE;
+            j->precision_given = 1;
             break;
         }
         case OPT_SCAN: {
@@ -162,16 +167,23 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
     if (!(j->scene_path = cli_scene(&a)) || cli_pm_check(&a, opt)) return 2;
     if (opt->prees > 1 && opt->layout == HP_LAYOUT_PIXEL)
         return cli_error(&a, "--prees %d: a board of PREEs holds the spatial layout (drop --layout pixel)", opt->prees);
+    if (opt->datapath == DATAPATH_STABLE && !j->precision_given) opt->precision = PRECISION_FP32;
     if (opt->datapath == DATAPATH_STABLE && opt->precision != PRECISION_FP32)
-        return cli_error(&a, "--datapath stable needs --precision fp32 (the double mode has no datapath)");
+        return cli_error(&a, "--datapath stable is fp32's (the double mode has no datapath): drop --precision double");
     if ((uint64_t)opt->width * (uint64_t)opt->height > 64ull * 1024 * 1024)
         return cli_error(&a, "%dx%d is more than 64 Mpixels", opt->width, opt->height);
-    if (j->nout == 0) {
-        const char *base = strrchr(j->scene_path, '/');
+    if (j->nout == 0) {   /* NAME.png in the current folder, NAME the scene's file name less .scene or .pbrt */
+        const char *base = strrchr(j->scene_path, '/'), *dot;
         base = base ? base + 1 : j->scene_path;
-        snprintf(j->default_out, sizeof j->default_out, "%s.png", base);
+        int len = (int)strlen(base);
+        if ((dot = strrchr(base, '.')) && dot > base && (!strcmp(dot, ".scene") || !strcmp(dot, ".pbrt")))
+            len = (int)(dot - base);
+        snprintf(j->default_out, sizeof j->default_out, "%.*s.png", len, base);
         j->outs[j->nout++] = j->default_out;
     }
+    if (opt->progress && render_emitted(opt->photons) != opt->photons)
+        fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",
+                (unsigned long long)opt->photons, (unsigned long long)render_emitted(opt->photons));
     return -1;
 }
 
@@ -215,8 +227,21 @@ static void warn_result(const render_job_t *j, const render_options_t *opt, cons
                 opt->time_limit, (unsigned long long)st->photons_emitted);
 }
 
-/* The images and the statistics: 0, or 1 when one of them could not be written (printed). */
-static int write_outputs(const render_job_t *j, const render_options_t *opt, const render_result_t *res, int rc)
+/* Append path to the list of files written (", "-separated; "..." once it is full). */
+static void wrote_add(char *list, size_t len, const char *path)
+{
+    size_t used = strlen(list);
+    if (used + strlen(path) + 8 >= len) {
+        if (used + 5 < len && strcmp(list + (used >= 3 ? used - 3 : 0), "...")) strcat(list, ", ...");
+        return;
+    }
+    snprintf(list + used, len - used, "%s%s", used ? ", " : "", path);
+}
+
+/* The images and the statistics, each named in wrote when written: 0, or 1 when one of them
+ * could not be written (printed). */
+static int write_outputs(const render_job_t *j, const render_options_t *opt, const render_result_t *res, int rc,
+                         char *wrote, size_t wrote_len)
 {
     char err[1024];
     int status = 0;
@@ -224,11 +249,15 @@ static int write_outputs(const render_job_t *j, const render_options_t *opt, con
         if (write_image(j->outs[k], j->scene_path, opt, res, err, sizeof err)) {
             fprintf(stderr, "pree render: %s\n", err);
             status = 1;
+        } else {
+            wrote_add(wrote, wrote_len, j->outs[k]);
         }
     }
     if (j->stats_path && stats_json_write(j->stats_path, j->scene_path, opt, &res->stats, rc == 1, err, sizeof err)) {
         fprintf(stderr, "pree render: %s\n", err);
         status = 1;
+    } else if (j->stats_path) {
+        wrote_add(wrote, wrote_len, j->stats_path);
     }
     return status;
 }
@@ -254,6 +283,7 @@ int pree_cmd_render(int argc, char **argv)
     }
     catch_signals();
     render_result_t res;
+    char wrote[4096] = "";
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
     size_t nonfinite = 0;
     for (size_t i = 0; rc >= 0 && i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
@@ -267,7 +297,8 @@ int pree_cmd_render(int argc, char **argv)
     } else {
         warn_result(&j, &opt, &res.stats, rc);
         /* Under MPI rank 0 holds the image and writes it (docs/scale_out.md). */
-        status = render_dist_rank() == 0 && write_outputs(&j, &opt, &res, rc) ? 1 : rc == 1 ? 130 : 0;
+        status = render_dist_rank() == 0 && write_outputs(&j, &opt, &res, rc, wrote, sizeof wrote) ? 1 : rc == 1 ? 130 : 0;
+        if (opt.checkpoint) wrote_add(wrote, sizeof wrote, opt.checkpoint);
         const render_stats_t *st = &res.stats;
         if (st->mpi_ranks > 1 && opt.progress)
             fprintf(stderr, "pree render: %d MPI ranks: %.1f bytes sent per photon; %.1f%% of the kept candidates "
@@ -278,6 +309,9 @@ int pree_cmd_render(int argc, char **argv)
             fprintf(stderr, "pree render: %llu hit points, %llu photons, %llu candidates, %llu accepted, %.3f s\n",
                     res.stats.hit_points, res.stats.photons_emitted, res.stats.upd.candidates,
                     res.stats.upd.accepted, res.stats.sec_total);
+        /* The last line: every file this render wrote. */
+        if (opt.progress && render_dist_rank() == 0)
+            fprintf(stderr, "pree render: wrote %s\n", *wrote ? wrote : "nothing");
     }
     render_result_free(&res);
     scene_free(&scene);

@@ -72,7 +72,7 @@ expect_error "alpha zero" "--alpha: 0 is out of range" render "$good" --alpha 0 
 expect_error "alpha above one" "--alpha: 1.5 is out of range" render "$good" --alpha 1.5 "${out[@]}"
 expect_error "alpha not a number" "--alpha: 'nan' is not a number" render "$good" --alpha nan "${out[@]}"
 expect_error "bad datapath" "--datapath: 'fast' is not paper or stable" render "$good" --datapath fast "${out[@]}"
-expect_error "stable datapath in double" "--datapath stable needs --precision fp32" render "$good" --datapath stable "${out[@]}"
+expect_error "stable datapath in double" "--datapath stable is fp32.s .*drop --precision double" render "$good" --precision double --datapath stable "${out[@]}"
 expect_error "bad layout" "--layout: 'hilbert' is not spatial or pixel" render "$good" --layout hilbert "${out[@]}"
 sed 's/intensity 2500 2500 2500/intensity 1e38 1e38 1e38/' "$good" > "$TMP/hot.scene"
 for dp in paper stable; do
