@@ -16,6 +16,7 @@
 #include "cli_options.h"
 #include "cli_outputs.h"
 #include "cli_pm.h"
+#include "cli_resume.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -48,6 +49,7 @@ static void render_usage(FILE *f)
 {
     fprintf(f,
         "usage: pree render SCENE [options]\n"
+        "       pree render --resume CHECKPOINT [options]\n"
         "  --width W              image width in pixels (default 320)\n"
         "  --height H             image height in pixels (default 240)\n"
         "  --photons N            photons to emit, rounded down to whole 1000s (default 768000)\n"
@@ -77,7 +79,9 @@ static void render_usage(FILE *f)
         "  --checkpoint FILE      write the render's state to FILE every --checkpoint-every photons and\n"
         "                         when the photon pass ends or is interrupted (atomically)\n"
         "  --checkpoint-every N   photons between checkpoints (default 1024000)\n"
-        "  --resume FILE          continue from a checkpoint of the same scene, options and build: the\n"
+        "  --resume FILE          continue the checkpoint's render: alone, as it was started (scene,\n"
+        "                         options, outputs are in FILE); with --photons N, extended to N; other\n"
+        "                         outputs may be given, options that change the bits may not. The\n"
         "                         same bits as an uninterrupted render, for any --threads\n"
         "  --time-limit S         stop after the photon block in progress once S seconds have passed;\n"
         "                         the image holds the photons done (stats: photons_emitted), exit 0\n"
@@ -116,17 +120,25 @@ typedef struct {
     int nout;
     char default_out[600];
     int precision_given;    /* --precision was on the command line */
+    char given[48][64];     /* the options on the command line, by name ("--width") */
+    const char *given_names[48];
+    int ngiven;
 } render_job_t;
 
 /* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
 static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t *j)
 {
     cli_args_t a;
-    cli_begin(&a, argc, argv, "render", render_longopts, opt, 1);
+    cli_begin(&a, argc, argv, "render", render_longopts, NULL, 1);
     for (int id; (id = cli_next(&a)) != 0;) {
         long long v;
         int k;
         if (id < 0) return 2;
+        if (id != CLI_HELP && j->ngiven < 48) {
+            snprintf(j->given[j->ngiven], sizeof j->given[0], "%s", a.name);
+            j->given_names[j->ngiven] = j->given[j->ngiven];
+            j->ngiven++;
+        }
         switch (id) {
         case CLI_HELP: render_usage(stdout); return 0;
         case OPT_PHOTON_OFFSET:
@@ -161,9 +173,14 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             break;
         case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt->time_limit)) return 2; break;
         case OPT_PREES: if (cli_int(&a, 1, 1024, &v)) return 2; opt->prees = (int)v; break;
-        default: if (cli_pm_option(&a, id, opt)) return 2;
+        default:
+            if ((k = cli_render_option(&a, id, opt, 1)) == 2) return 2;
+            if (k == 1 && cli_pm_option(&a, id, opt)) return 2;
         }
     }
+    int nops;
+    cli_operands(&a, &nops);
+    if (opt->resume && nops == 0) return -1;   /* the scene and the rest from the checkpoint (resume_args) */
     if (!(j->scene_path = cli_scene(&a)) || cli_pm_check(&a, opt)) return 2;
     if (opt->prees > 1 && opt->layout == HP_LAYOUT_PIXEL)
         return cli_error(&a, "--prees %d: a board of PREEs holds the spatial layout (drop --layout pixel)", opt->prees);
@@ -181,10 +198,32 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
         snprintf(j->default_out, sizeof j->default_out, "%.*s.png", len, base);
         j->outs[j->nout++] = j->default_out;
     }
-    if (opt->progress && render_emitted(opt->photons) != opt->photons)
-        fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",
-                (unsigned long long)opt->photons, (unsigned long long)render_emitted(opt->photons));
     return -1;
+}
+
+/* The note a checkpoint of this render carries (cli_resume.h): 0, or 2 printed. */
+static int job_note(const render_options_t *opt, const render_job_t *j, char *note, size_t len)
+{
+    const cli_resume_job_t rj = {.scene = j->scene_path, .stats = j->stats_path, .outs = j->outs, .nout = j->nout};
+    return cli_resume_note(opt, &rj, note, len);
+}
+
+/* A resume: parse again with the options the checkpoint carries that the command line does not
+ * give (into *opt and *j; *rargc, *rargv hold the strings, freed by the caller). -1 to go on,
+ * else the exit status. */
+static int resume_args(int argc, char **argv, render_options_t *opt, render_job_t *j, int *rargc, char ***rargv)
+{
+    static char rec[CHECKPOINT_NOTE_MAX], cmd[CHECKPOINT_NOTE_MAX];
+    char err[1024];
+    uint64_t done;
+    if (checkpoint_read_note(opt->resume, rec, sizeof rec, &done, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        return 1;
+    }
+    if (job_note(opt, j, cmd, sizeof cmd)) return 2;
+    const int has_scene = j->scene_path != NULL;
+    const int rc = cli_resume_args(opt->resume, rec, cmd, j->given_names, j->ngiven, has_scene, argc, argv, rargc, rargv);
+    return rc ? rc : -1;
 }
 
 /* Every output checked before any work starts (see cli_outputs.h): 0, or 1 with the error printed. */
@@ -262,14 +301,13 @@ static int write_outputs(const render_job_t *j, const render_options_t *opt, con
     return status;
 }
 
-int pree_cmd_render(int argc, char **argv)
+/* Render the job: the exit status. */
+static int render_job(render_options_t *opt_in, render_job_t *jp)
 {
-    render_options_t opt = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
-                            .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    render_job_t j = {0};
+    render_options_t opt = *opt_in;
+    const render_job_t j = *jp;
     char err[1024];
-    int status = parse_args(argc, argv, &opt, &j);
-    if (status >= 0) return status;
+    int status;
     if (check_outputs(&j)) return 1;
     scene_t scene;
     if (scene_load(j.scene_path, &scene, err, sizeof err)) {
@@ -315,5 +353,35 @@ int pree_cmd_render(int argc, char **argv)
     }
     render_result_free(&res);
     scene_free(&scene);
+    return status;
+}
+
+int pree_cmd_render(int argc, char **argv)
+{
+    const render_options_t defaults = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
+                                       .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
+    static char note[CHECKPOINT_NOTE_MAX];
+    static render_job_t j;
+    render_options_t opt = defaults;
+    int status = parse_args(argc, argv, &opt, &j), rargc = 0;
+    char **rargv = NULL;
+    if (status < 0 && opt.resume) {   /* again, with the options the checkpoint carries */
+        if ((status = resume_args(argc, argv, &opt, &j, &rargc, &rargv)) < 0) {
+            opt = defaults;
+            memset(&j, 0, sizeof j);
+            status = parse_args(rargc, rargv, &opt, &j);
+        }
+    }
+    if (status < 0 && opt.checkpoint && (status = job_note(&opt, &j, note, sizeof note)) == 0) {
+        opt.checkpoint_note = note;
+        status = -1;
+    }
+    if (status < 0) {
+        if (opt.progress && render_emitted(opt.photons) != opt.photons)
+            fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",
+                    (unsigned long long)opt.photons, (unsigned long long)render_emitted(opt.photons));
+        status = render_job(&opt, &j);
+    }
+    if (rargv) cli_resume_free(rargc, rargv);
     return status;
 }

@@ -1,8 +1,9 @@
 /* checkpoint.c: the render state on disk (checkpoint.h): fingerprint, atomic write, checked read.
  *
  * Layout (native byte order; the fingerprint covers the build, so a file is read only by the
- * build that wrote it): magic, fingerprint, hit points n, photons done, the pass counters, then
- * each state array in address order, then the FNV-1a of every byte before it. */
+ * build that wrote it): magic, fingerprint, hit points n, photons done, the pass counters, the
+ * note's length and bytes, then each state array in address order, then the FNV-1a of every
+ * byte before it. */
 #include <errno.h>
 #include <stddef.h>
 #include <stdio.h>
@@ -12,7 +13,8 @@
 #include "checkpoint.h"
 #include "fnv1a.h"
 
-static const char MAGIC[8] = {'P', 'R', 'E', 'E', 'C', 'K', 'P', '1'};
+static const char MAGIC[8] = {'P', 'R', 'E', 'E', 'C', 'K', 'P', '2'};
+static const char MAGIC_OLD[8] = {'P', 'R', 'E', 'E', 'C', 'K', 'P', '1'};   /* no note */
 #define FNV_BASIS FNV1A_BASIS
 #define HASH(f, x) ((f) = fnv1a((f), &(x), sizeof(x)))
 #define HASH_N(f, p, n) ((f) = fnv1a((f), (p), (n) * sizeof *(p)))
@@ -47,7 +49,7 @@ static uint64_t scene_hash(uint64_t f, const scene_t *sc)
 uint64_t checkpoint_fingerprint(const scene_t *scene, const render_options_t *opt, const hitpoints_t *h)
 {
     /* The build: format, state layout, compiler. */
-    static const char build[] = "pree checkpoint 1; compiler " __VERSION__;
+    static const char build[] = "pree checkpoint 2; compiler " __VERSION__;
     const size_t sizes[3] = {sizeof(preu_hp_t), sizeof(preu_shp_t), sizeof(hp_hot_t)};
     uint64_t f = fnv1a(FNV_BASIS, build, sizeof build);
     HASH(f, sizes);
@@ -153,6 +155,9 @@ int checkpoint_save(const char *path, const checkpoint_info_t *info, const hitpo
     pack(info, h->n, w);
     put(&s, MAGIC, sizeof MAGIC);
     put(&s, w, sizeof w);
+    const uint64_t note_len = info->note ? strlen(info->note) : 0;
+    put(&s, &note_len, sizeof note_len);
+    put(&s, info->note ? info->note : "", note_len);
     state_array_t a[3];
     for (int k = 0, na = state_arrays(h, prec, a); k < na; k++)
         for (size_t i = 0; i < h->n; i++) put(&s, (const char *)a[k].base + inv[i] * a[k].stride, a[k].size);
@@ -171,6 +176,51 @@ int checkpoint_save(const char *path, const checkpoint_info_t *info, const hitpo
     return 0;
 }
 
+/* Read the magic, the header words and the note (into note[cap] when note is not NULL, else
+ * skipped): 0, or -1 with err. */
+static int read_head(stream_t *s, const char *path, checkpoint_info_t *in, uint64_t *n, char *note, size_t cap,
+                     char *err, size_t errlen)
+{
+    char magic[sizeof MAGIC];
+    uint64_t w[HEADER_WORDS], len = 0;
+    get(s, magic, sizeof magic);
+    if (s->ok && !memcmp(magic, MAGIC_OLD, sizeof MAGIC_OLD)) {
+        snprintf(err, errlen, "%s: a checkpoint of an older format (PREECKP1): resume it with the build that wrote it", path);
+        return -1;
+    }
+    if (!s->ok || memcmp(magic, MAGIC, sizeof MAGIC)) { snprintf(err, errlen, "%s: not a PREE checkpoint", path); return -1; }
+    get(s, w, sizeof w);
+    get(s, &len, sizeof len);
+    if (!s->ok) { snprintf(err, errlen, "%s: truncated checkpoint (in its header)", path); return -1; }
+    if (len >= CHECKPOINT_NOTE_MAX) { snprintf(err, errlen, "%s: corrupt checkpoint (its note)", path); return -1; }
+    unpack(w, in, n);
+    char buf[512];
+    for (uint64_t done = 0; done < len && s->ok;) {
+        const size_t k = len - done < sizeof buf ? (size_t)(len - done) : sizeof buf;
+        get(s, buf, k);
+        if (note && done + k < cap) memcpy(note + done, buf, k);
+        done += k;
+    }
+    if (!s->ok) { snprintf(err, errlen, "%s: truncated checkpoint (in its note)", path); return -1; }
+    if (note && cap) {
+        if (len >= cap || memchr(note, 0, (size_t)len)) { snprintf(err, errlen, "%s: corrupt checkpoint (its note)", path); return -1; }
+        note[len] = 0;
+    }
+    return 0;
+}
+
+int checkpoint_read_note(const char *path, char *note, size_t cap, uint64_t *done_photons, char *err, size_t errlen)
+{
+    stream_t s = {fopen(path, "rb"), FNV_BASIS, 1};
+    if (!s.f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
+    checkpoint_info_t in;
+    uint64_t n;
+    const int rc = read_head(&s, path, &in, &n, note, cap, err, errlen);
+    fclose(s.f);
+    if (rc == 0) *done_photons = in.done_photons;
+    return rc;
+}
+
 int checkpoint_load(const char *path, checkpoint_info_t *info, hitpoints_t *h, const uint32_t *perm,
                     precision_t prec, char *err, size_t errlen)
 {
@@ -178,14 +228,9 @@ int checkpoint_load(const char *path, checkpoint_info_t *info, hitpoints_t *h, c
     if (!s.f) { snprintf(err, errlen, "%s: %s", path, strerror(errno)); return -1; }
     const uint64_t want = info->fingerprint;
     checkpoint_info_t in;
-    char magic[sizeof MAGIC];
-    uint64_t n = 0, w[HEADER_WORDS], sum = 0;
-    get(&s, magic, sizeof magic);
+    uint64_t n = 0, sum = 0;
     int rc = -1;
-    if (!s.ok || memcmp(magic, MAGIC, sizeof MAGIC)) { snprintf(err, errlen, "%s: not a PREE checkpoint", path); goto out; }
-    get(&s, w, sizeof w);
-    if (!s.ok) { snprintf(err, errlen, "%s: truncated checkpoint (in its header)", path); goto out; }
-    unpack(w, &in, &n);
+    if (read_head(&s, path, &in, &n, NULL, 0, err, errlen)) goto out;
     if (in.fingerprint != want || n != h->n) {
         snprintf(err, errlen, "%s: the checkpoint is of another scene, options or build (fingerprint %016llx, this "
                  "render's %016llx)", path, (unsigned long long)in.fingerprint, (unsigned long long)want);

@@ -6,7 +6,9 @@
  * build (format, state layout, compiler), the options that change the bits, the scene, and the
  * eye pass's hit points; a resume with another fingerprint is refused. The file ends with an
  * FNV-1a of its bytes, so a truncated or corrupt one is refused too. Written atomically (a
- * temporary file beside the target, flushed to disk, then renamed over it). */
+ * temporary file beside the target, flushed to disk, then renamed over it). After the header the
+ * file holds a note, text the engine does not read: the command line's options (cli/cli_resume.c),
+ * so that a resume needs no options. */
 #ifndef PREE_CHECKPOINT_H
 #define PREE_CHECKPOINT_H
 
@@ -14,11 +16,16 @@
 #include <stdint.h>
 #include "render.h"
 
+/* The longest note a checkpoint holds (the render's options as text, render_options_t's
+ * checkpoint_note). */
+#define CHECKPOINT_NOTE_MAX 65536
+
 typedef struct {
     uint64_t fingerprint;
     uint64_t done_photons;
     unsigned long long photon_hits, photon_segments, no_cell;
     update_stats_t upd;
+    const char *note;     /* save: the note written (NULL: none); load leaves it NULL */
 } checkpoint_info_t;
 
 /* The fingerprint of a render: build, options, scene, and the hit points h (address order,
@@ -34,6 +41,11 @@ int checkpoint_save(const char *path, const checkpoint_info_t *info, const hitpo
  * expected one on entry. 0, or -1 with "PATH: reason" in err. */
 int checkpoint_load(const char *path, checkpoint_info_t *info, hitpoints_t *h, const uint32_t *perm,
                     precision_t prec, char *err, size_t errlen);
+
+/* The note of the checkpoint at path (NUL-terminated, at most CHECKPOINT_NOTE_MAX bytes, into
+ * note[cap]) and the photons it holds, read without checking the rest of the file (the resume
+ * does). 0, or -1 with "PATH: reason" in err. */
+int checkpoint_read_note(const char *path, char *note, size_t cap, uint64_t *done_photons, char *err, size_t errlen);
 
 /* Whether a checkpoint can be written at path: creates and removes its temporary file.
  * 0, or -1 with "PATH: reason" in err. */

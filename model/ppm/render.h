@@ -57,6 +57,8 @@ typedef struct {
     const char *checkpoint;  /* render_run: write the state here (model/ppm/checkpoint.h) every
                               * checkpoint_every photons and when the photon pass ends or stops */
     uint64_t checkpoint_every; /* 0: RENDER_CHECKPOINT_EVERY */
+    const char *checkpoint_note; /* text the checkpoint carries, not read by the engine (the
+                              * command line's options: cli/cli_resume.c); NULL: none */
     const char *resume;      /* render_open: continue from this checkpoint */
     uint64_t max_memory;     /* bytes the render may hold (mem_check.h); 0: RLIMIT_AS and MemAvailable */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the

@@ -1,9 +1,9 @@
 /* render_run.c: a whole render driven through its session: the photon blocks, the stopping
  * rules (interrupt, time limit), and the checkpoints (model/ppm/checkpoint.h).
  *
- * Blocks start at multiples of RENDER_PHOTON_BLOCK from the first photon, whatever stopped or
- * resumed the render, so an interrupted, time-limited or resumed render holds the same bits as
- * an uninterrupted one of the same photon count. */
+ * Each hit point receives its photons in index order whatever the blocks, so an interrupted,
+ * time-limited or resumed render holds the same bits as an uninterrupted one of the same photon
+ * count, and a checkpoint of any photon count resumes to any larger one. */
 #include <omp.h>
 #include <signal.h>
 #include <stdio.h>
@@ -19,9 +19,9 @@ int render_session_resume(render_session_t *s, char *err, size_t errlen)
 {
     checkpoint_info_t ci = {.fingerprint = s->fingerprint};
     if (checkpoint_load(s->opt.resume, &ci, &s->res->hp, s->perm, s->opt.precision, err, errlen)) return -1;
-    if (ci.done_photons > s->emitted_target || (ci.done_photons % PHOTON_BLOCK && ci.done_photons != s->emitted_target)) {
+    if (ci.done_photons > s->emitted_target) {
         snprintf(err, errlen, "%s: the checkpoint holds %llu photons; a render of %llu photons does not pass there "
-                 "(resume with at least that many, or the same --photons)", s->opt.resume,
+                 "(resume with at least that many)", s->opt.resume,
                  (unsigned long long)ci.done_photons, (unsigned long long)s->emitted_target);
         return -1;
     }
@@ -41,7 +41,7 @@ static int session_checkpoint(render_session_t *s, char *err, size_t errlen)
     const render_stats_t *st = &s->res->stats;
     checkpoint_info_t ci = {.fingerprint = s->fingerprint, .done_photons = s->done_photons,
                             .photon_hits = st->photon_hits, .photon_segments = st->photon_segments,
-                            .no_cell = s->bb->no_cell};
+                            .no_cell = s->bb->no_cell, .note = s->opt.checkpoint_note};
     ci.upd = render_session_update_totals(s);
     s->last_checkpoint = s->done_photons;
     return checkpoint_save(s->opt.checkpoint, &ci, &s->res->hp, s->perm, s->opt.precision, err, errlen);

@@ -84,10 +84,11 @@ bad "corrupt checkpoint" "corrupt.ckp: corrupt checkpoint" "${R[@]}" --resume "$
 bad "trailing bytes" "long.ckp: corrupt checkpoint" "${R[@]}" --resume "$TMP/long.ckp"
 bad "not a checkpoint" "cornell3: not a PREE checkpoint" "${R[@]}" --resume "$SCENE"
 bad "missing checkpoint" "none.ckp: No such file" "${R[@]}" --resume "$TMP/none.ckp"
-bad "other options (width)" "another scene, options or build" render "$SCENE" --width 80 --height 72 \
+bad "other options (width)" "width 80 conflicts with the checkpoint's --width 96" render "$SCENE" --width 80 --height 72 \
     --photons 200000 --quiet --resume "$TMP/d.ckp"
-bad "other options (alpha)" "another scene, options or build" "${R[@]}" --alpha 0.8 --resume "$TMP/d.ckp"
-bad "other precision" "another scene, options or build" "${R[@]}" --precision fp32 --resume "$TMP/d.ckp"
+bad "other options (alpha)" "alpha 0.8 conflicts with the checkpoint's --alpha 0.7" "${R[@]}" --alpha 0.8 --resume "$TMP/d.ckp"
+bad "other precision" "precision fp32 conflicts with the checkpoint's --precision double" "${R[@]}" --precision fp32 --resume "$TMP/d.ckp"
+bad "a flag added" "no-skip is given, but the checkpoint's render ran without it" "${R[@]}" --no-skip --resume "$TMP/d.ckp"
 bad "other scene" "another scene, options or build" render "$ROOT/scenes/cornell-sphere" --width 96 --height 72 \
     --photons 200000 --quiet --resume "$TMP/d.ckp"
 bad "fewer photons than the checkpoint" "holds 96000 photons" render "$SCENE" --width 96 --height 72 \
