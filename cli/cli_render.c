@@ -17,6 +17,7 @@
 #include "cli_outputs.h"
 #include "cli_pm.h"
 #include "cli_resume.h"
+#include "cli_series.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -83,6 +84,9 @@ static void render_usage(FILE *f)
         "                         options, outputs are in FILE); with --photons N, extended to N; other\n"
         "                         outputs may be given, options that change the bits may not. The\n"
         "                         same bits as an uninterrupted render, for any --threads\n"
+        "  --write-every N        a convergence series: also write every output at N, 2N, ... photons\n"
+        "  --write-at N,N,...     and/or at these counts (100k, 1.5M: whole thousands), each NAME.EXT as\n"
+        "                         NAME-COUNT.EXT with the bits of a render of COUNT photons\n"
         "  --time-limit S         stop after the photon block in progress once S seconds have passed;\n"
         "                         the image holds the photons done (stats: photons_emitted), exit 0\n"
         "  --quiet                no progress and no summary on stderr (warnings and errors only); without\n"
@@ -94,7 +98,7 @@ static void render_usage(FILE *f)
 }
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
-       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES };
+       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES, OPT_WRITE_EVERY, OPT_WRITE_AT };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -110,6 +114,8 @@ static const struct option render_longopts[] = {
     {"time-limit", required_argument, NULL, OPT_TIME_LIMIT},
     {"max-memory", required_argument, NULL, OPT_MAX_MEMORY},
     {"prees", required_argument, NULL, OPT_PREES},
+    {"write-every", required_argument, NULL, OPT_WRITE_EVERY},
+    {"write-at", required_argument, NULL, OPT_WRITE_AT},
     {NULL, 0, NULL, 0}
 };
 
@@ -123,6 +129,7 @@ typedef struct {
     char given[48][64];     /* the options on the command line, by name ("--width") */
     const char *given_names[48];
     int ngiven;
+    cli_series_t series;    /* --write-every, --write-at */
 } render_job_t;
 
 /* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
@@ -173,6 +180,8 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             break;
         case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt->time_limit)) return 2; break;
         case OPT_PREES: if (cli_int(&a, 1, 1024, &v)) return 2; opt->prees = (int)v; break;
+        case OPT_WRITE_EVERY:
+        case OPT_WRITE_AT: if (cli_series_option(&a, id == OPT_WRITE_EVERY, &j->series)) return 2; break;
         default:
             if ((k = cli_render_option(&a, id, opt, 1)) == 2) return 2;
             if (k == 1 && cli_pm_option(&a, id, opt)) return 2;
@@ -204,7 +213,10 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
 /* The note a checkpoint of this render carries (cli_resume.h): 0, or 2 printed. */
 static int job_note(const render_options_t *opt, const render_job_t *j, char *note, size_t len)
 {
-    const cli_resume_job_t rj = {.scene = j->scene_path, .stats = j->stats_path, .outs = j->outs, .nout = j->nout};
+    static char series[16 * CLI_SERIES_MAX + 64];
+    cli_series_note(&j->series, series, sizeof series);
+    const cli_resume_job_t rj = {.scene = j->scene_path, .stats = j->stats_path, .outs = j->outs, .nout = j->nout,
+                                 .series = series};
     return cli_resume_note(opt, &rj, note, len);
 }
 
@@ -301,6 +313,37 @@ static int write_outputs(const render_job_t *j, const render_options_t *opt, con
     return status;
 }
 
+/* What the convergence series' writer needs (series_write). */
+typedef struct {
+    const render_job_t *j;
+    const render_options_t *opt;
+    int written;            /* points written */
+} series_ctx_t;
+
+/* A point of the series: every output as NAME-COUNT.EXT. 0, or -1 with err. */
+static int series_write(void *ctx, const render_result_t *res, char *err, size_t errlen)
+{
+    series_ctx_t *c = ctx;
+    const render_job_t *j = c->j;
+    const uint64_t n = res->stats.photons_emitted;
+    char names[MAX_OUTPUTS + 1][4200], list[4096] = "";
+    for (int k = 0; k <= j->nout; k++) {
+        const char *path = k < j->nout ? j->outs[k] : j->stats_path;
+        if (!path) continue;
+        if (cli_series_name(path, n, names[k], sizeof names[k])) {
+            snprintf(err, errlen, "%s: the name with -%llu is too long", path, (unsigned long long)n);
+            return -1;
+        }
+        const int bad = k < j->nout ? write_image(names[k], j->scene_path, c->opt, res, err, errlen)
+                                    : stats_json_write(names[k], j->scene_path, c->opt, &res->stats, 0, err, errlen);
+        if (bad) return -1;
+        wrote_add(list, sizeof list, names[k]);
+    }
+    c->written++;
+    if (c->opt->progress) fprintf(stderr, "\npree render: %llu photons: wrote %s\n", (unsigned long long)n, list);
+    return 0;
+}
+
 /* Render the job: the exit status. */
 static int render_job(render_options_t *opt_in, render_job_t *jp)
 {
@@ -320,6 +363,13 @@ static int render_job(render_options_t *opt_in, render_job_t *jp)
         return 1;
     }
     catch_signals();
+    series_ctx_t sc = {.j = &j, .opt = &opt};
+    if (j.series.npoints) {
+        opt.write_at = j.series.points;
+        opt.write_at_n = j.series.npoints;
+        opt.snapshot = series_write;
+        opt.snapshot_ctx = &sc;
+    }
     render_result_t res;
     char wrote[4096] = "";
     int rc = render_run(&scene, &opt, &res, err, sizeof err);
@@ -349,7 +399,8 @@ static int render_job(render_options_t *opt_in, render_job_t *jp)
                     res.stats.upd.accepted, res.stats.sec_total);
         /* The last line: every file this render wrote. */
         if (opt.progress && render_dist_rank() == 0)
-            fprintf(stderr, "pree render: wrote %s\n", *wrote ? wrote : "nothing");
+            fprintf(stderr, "pree render: wrote %s%s\n", *wrote ? wrote : "nothing",
+                    sc.written ? "; the series above" : "");
     }
     render_result_free(&res);
     scene_free(&scene);
@@ -376,6 +427,7 @@ int pree_cmd_render(int argc, char **argv)
         opt.checkpoint_note = note;
         status = -1;
     }
+    if (status < 0 && cli_series_points(&j.series, render_emitted(opt.photons))) status = 2;
     if (status < 0) {
         if (opt.progress && render_emitted(opt.photons) != opt.photons)
             fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",

@@ -280,6 +280,60 @@ static int radiance_pree(const render_session_t *s, radiance_pree_t *pree, uint3
     return *made ? 0 : -1;
 }
 
+/* The radiance of res->hp (in address order) for `photons` photons into res->rgb, and the
+ * hashes: 0, or -1 with err. */
+static int evaluate(render_session_t *s, uint64_t photons, char *err, size_t errlen)
+{
+    render_result_t *res = s->res;
+    render_stats_t *st = &res->stats;
+    double t = omp_get_wtime();
+    radiance_pree_t pree;
+    uint32_t *made;
+    const int rad = radiance_pree(s, &pree, &made) ? -1
+                  : radiance_evaluate_preu(&res->hp, s->opt.precision, &pree, photons, s->skip, res->rgb, s->npix,
+                                           &st->radiance_skipped);
+    free(made);
+    if (rad) {
+        snprintf(err, errlen, "out of memory in radiance evaluation");
+        return -1;
+    }
+    st->sec_radiance = omp_get_wtime() - t;
+    if (s->opt.precision == PRECISION_FP32 && render_fp32_result_check(res, err, errlen)) return -1;
+    render_hash_results(res, s->opt.precision);
+    return 0;
+}
+
+/* The counters the statistics report at the end of the photon pass (or at a series' point). */
+static void pass_totals(render_session_t *s)
+{
+    render_stats_t *st = &s->res->stats;
+    if (s->nranks <= 1) st->upd = render_session_update_totals(s);   /* MPI: render_round_close's sums */
+    st->photon_hits_no_cell = s->bb->no_cell;
+    st->photon_hits += s->bb->no_cell;
+    st->photons_emitted = s->res->hp.n ? s->done_photons : s->emitted_target;
+}
+
+int render_session_snapshot(render_session_t *s, char *err, size_t errlen)
+{
+    render_result_t *res = s->res;
+    const render_stats_t keep = res->stats;
+    pass_totals(s);
+    if (hp_order_restore(&res->hp, s->perm)) {
+        snprintf(err, errlen, "out of memory for hit points");
+        return -1;
+    }
+    int rc = evaluate(s, res->stats.photons_emitted, err, errlen);
+    res->stats.sec_total = omp_get_wtime() - s->t_start;
+    res->stats.peak_rss_kb = render_peak_rss_kb();
+    if (rc == 0 && s->opt.snapshot) rc = s->opt.snapshot(s->opt.snapshot_ctx, res, err, errlen);
+    if (hp_order_apply(&res->hp, s->perm) && rc == 0) {
+        snprintf(err, errlen, "out of memory for hit points");
+        rc = -1;
+    }
+    res->stats = keep;
+    return rc;
+}
+
 int render_close(render_session_t *s, char *err, size_t errlen)
 {
     render_result_t *res = s->res;
@@ -287,8 +341,8 @@ int render_close(render_session_t *s, char *err, size_t errlen)
     int rc = -1;
     if (s->failed) goto done;
     if (s->interrupted && !s->done_photons) { snprintf(err, errlen, STOP_MESSAGE " during the first photon block"); goto done; }
-    st->upd = render_session_update_totals(s);
     if (s->nranks > 1) {
+        st->upd = render_session_update_totals(s);
         render_round_close(s);
         if (s->rank) {   /* rank 0 evaluates and writes */
             rc = s->interrupted ? 1 : 0;
@@ -296,26 +350,9 @@ int render_close(render_session_t *s, char *err, size_t errlen)
         }
     }
     free_photon_pass(s);
-    st->photon_hits_no_cell = s->bb->no_cell;
-    st->photon_hits += s->bb->no_cell;
-    st->photons_emitted = res->hp.n ? s->done_photons : s->emitted_target;
+    pass_totals(s);
     if (hp_order_restore(&res->hp, s->perm)) { snprintf(err, errlen, "out of memory for hit points"); goto done; }
-
-    /* Radiance evaluation. */
-    double t = omp_get_wtime();
-    radiance_pree_t pree;
-    uint32_t *made;
-    const int rad = radiance_pree(s, &pree, &made) ? -1
-                  : radiance_evaluate_preu(&res->hp, s->opt.precision, &pree, st->photons_emitted, s->skip, res->rgb,
-                                           s->npix, &st->radiance_skipped);
-    free(made);
-    if (rad) {
-        snprintf(err, errlen, "out of memory in radiance evaluation");
-        goto done;
-    }
-    st->sec_radiance = omp_get_wtime() - t;
-    if (s->opt.precision == PRECISION_FP32 && render_fp32_result_check(res, err, errlen)) goto done;
-    render_hash_results(res, s->opt.precision);
+    if (evaluate(s, st->photons_emitted, err, errlen)) goto done;
     rc = s->interrupted ? 1 : 0;
 done:
     st->sec_total = omp_get_wtime() - s->t_start;

@@ -33,6 +33,8 @@ typedef enum { HP_LAYOUT_SPATIAL = 0, HP_LAYOUT_PIXEL = 1 } hp_layout_t;
 #define RENDER_PHOTON_BLOCK 32000u            /* photons traced and applied together */
 #define RENDER_CHECKPOINT_EVERY (32ull * RENDER_PHOTON_BLOCK)
 
+typedef struct render_result render_result_t;
+
 typedef struct {
     int width, height;
     uint64_t photons;        /* requested; emitted = max(photons / 1000, 1) * 1000 */
@@ -59,6 +61,14 @@ typedef struct {
     uint64_t checkpoint_every; /* 0: RENDER_CHECKPOINT_EVERY */
     const char *checkpoint_note; /* text the checkpoint carries, not read by the engine (the
                               * command line's options: cli/cli_resume.c); NULL: none */
+    /* render_run: a convergence series. At each photon count write_at[k] (ascending, whole
+     * thousands) the photon pass stops on a block boundary and calls snapshot with the image,
+     * hashes and statistics of the photons done: the bits a render of that many photons gives.
+     * snapshot returns 0, or -1 with err to stop the render. */
+    const uint64_t *write_at;
+    int write_at_n;
+    int (*snapshot)(void *ctx, const render_result_t *res, char *err, size_t errlen);
+    void *snapshot_ctx;
     const char *resume;      /* render_open: continue from this checkpoint */
     uint64_t max_memory;     /* bytes the render may hold (mem_check.h); 0: RLIMIT_AS and MemAvailable */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
@@ -108,12 +118,12 @@ typedef struct {
     unsigned long long mpi_bytes_sent, mpi_kept, mpi_kept_foreign;
 } render_stats_t;
 
-typedef struct {
+struct render_result {
     int width, height;
     double *rgb;             /* linear radiance, 3 per pixel, top row first */
     hitpoints_t hp;          /* final hit-point state */
     render_stats_t stats;
-} render_result_t;
+};
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen);

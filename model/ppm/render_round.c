@@ -32,9 +32,9 @@ int render_round_open(render_session_t *s, char *err, size_t errlen)
     s->rank = s->opt.one_rank ? 0 : render_dist_rank();
     s->res->stats.mpi_ranks = s->nranks;
     if (s->nranks < 2) return 0;
-    if (s->photon_major || s->opt.checkpoint || s->opt.resume || s->opt.time_limit > 0) {
-        snprintf(err, errlen, "under MPI with %d ranks: --scan photon, --checkpoint, --resume, --time-limit and "
-                 "recording operations are not supported", s->nranks);
+    if (s->photon_major || s->opt.checkpoint || s->opt.resume || s->opt.time_limit > 0 || s->opt.write_at_n) {
+        snprintf(err, errlen, "under MPI with %d ranks: --scan photon, --checkpoint, --resume, --time-limit, "
+                 "--write-at/--write-every and recording operations are not supported", s->nranks);
         return -1;
     }
     const size_t n = s->res->hp.n, N = (size_t)s->nranks;

@@ -58,9 +58,10 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
                char *err, size_t errlen)
 {
     if (opt->estimator == ESTIMATOR_PM) {
-        if (opt->checkpoint || opt->resume || opt->time_limit > 0) {
+        if (opt->checkpoint || opt->resume || opt->time_limit > 0 || opt->write_at_n) {
             memset(res, 0, sizeof *res);
-            snprintf(err, errlen, "--checkpoint, --resume and --time-limit apply to the PPM estimator only");
+            snprintf(err, errlen, "--checkpoint, --resume, --time-limit and --write-at/--write-every apply to the PPM "
+                     "estimator only");
             return -1;
         }
         if (render_dist_size() > 1) {
@@ -73,8 +74,16 @@ int render_run(const scene_t *scene, const render_options_t *opt, render_result_
     render_session_t *s = render_open(scene, opt, res, err, errlen);
     if (!s) return -1;
     const uint64_t every = render_checkpoint_every(opt);
+    while (s->next_write < opt->write_at_n && opt->write_at[s->next_write] <= s->done_photons) s->next_write++;
     while (render_step(s, err, errlen) > 0) {
         const int more = s->done_photons < s->emitted_target;
+        if (s->next_write < opt->write_at_n && s->done_photons == opt->write_at[s->next_write]) {
+            s->next_write++;
+            if (render_session_snapshot(s, err, errlen)) {
+                s->failed = 1;
+                break;
+            }
+        }
         if (opt->checkpoint && more && s->done_photons - s->last_checkpoint >= every && session_checkpoint(s, err, errlen)) {
             s->failed = 1;
             break;

@@ -51,6 +51,7 @@ struct render_session {
     update_stats_t *ust;
     update_ops_t ops;
     uint64_t emitted_target, done_photons, last_checkpoint;
+    int next_write;          /* the convergence series' next point (opt.write_at[next_write]) */
     uint64_t blocks;         /* blocks updated: the grid is re-filtered after blocks 1, 2, 4, 8, ... */
     int refilter_due;        /* recording the PREE's operations: such a point passed, the caller's
                               * re-filter (render_refilter_from) not yet made */
@@ -109,6 +110,17 @@ static inline uint64_t render_checkpoint_every(const render_options_t *opt)
 
 /* The update counters summed over the threads. */
 update_stats_t render_session_update_totals(const render_session_t *s);
+
+/* Where the photon pass stops next: the series' next point, or the end (render_step.c). */
+static inline uint64_t render_stop_at(const render_session_t *s)
+{
+    return s->next_write < s->opt.write_at_n && s->opt.write_at[s->next_write] < s->emitted_target
+         ? s->opt.write_at[s->next_write] : s->emitted_target;
+}
+
+/* The convergence series' point reached (render.c): the image and statistics of the photons
+ * done handed to opt.snapshot, the state left as it was. 0, or -1 with err. */
+int render_session_snapshot(render_session_t *s, char *err, size_t errlen);
 
 /* Continue from opt.resume (render_open, after the grid): 0, or -1 with err. */
 int render_session_resume(render_session_t *s, char *err, size_t errlen);

@@ -228,13 +228,14 @@ static int step_batch(render_session_t *s, char *err, size_t errlen)
     render_stats_t *st = &s->res->stats;
     if (s->interrupted || s->done_photons >= s->emitted_target || !s->res->hp.n) return 0;
     const unsigned want = batch_blocks(s);
+    const uint64_t stop = render_stop_at(s);   /* blocks end there (a series' point): same bits */
     uint64_t count[SCREEN_BLOCKS_MAX], next = s->done_photons;
     unsigned n = 0;
     int stopped = 0;
     update_ops_clear(&s->ops);
     double t = omp_get_wtime();
-    while (n < want && next < s->emitted_target) {
-        count[n] = s->emitted_target - next;
+    while (n < want && next < stop) {
+        count[n] = stop - next;
         if (count[n] > PHOTON_BLOCK) count[n] = PHOTON_BLOCK;
         char block_name[32];   /* fault injection: "block1" is this run's first block */
         snprintf(block_name, sizeof block_name, "block%llu",
