@@ -344,19 +344,58 @@ static int series_write(void *ctx, const render_result_t *res, char *err, size_t
     return 0;
 }
 
+static int given(const render_job_t *j, const char *name)
+{
+    for (int k = 0; k < j->ngiven; k++)
+        if (!strcmp(j->given[k], name)) return 1;
+    return 0;
+}
+
+/* What depends on the scene: a pbrt file's Film resolution and photon count where the command
+ * line gives none, then the checkpoint's note, the series' points and the rounding note. -1 to
+ * go on, else the exit status. */
+static int prepare_job(render_options_t *opt, render_job_t *j, const scene_t *scene)
+{
+    static char note[CHECKPOINT_NOTE_MAX];
+    if (scene->film_width && !given(j, "--width")) opt->width = scene->film_width;
+    if (scene->film_height && !given(j, "--height")) opt->height = scene->film_height;
+    if (scene->film_photons && !given(j, "--photons")) opt->photons = scene->film_photons;
+    if ((uint64_t)opt->width * (uint64_t)opt->height > 64ull * 1024 * 1024) {
+        fprintf(stderr, "pree render: %dx%d is more than 64 Mpixels\n", opt->width, opt->height);
+        return 2;
+    }
+    if (opt->photons > 10000000000ULL) {
+        fprintf(stderr, "pree render: %llu photons is more than 1e10 (give --photons)\n", (unsigned long long)opt->photons);
+        return 2;
+    }
+    if (opt->checkpoint) {
+        if (job_note(opt, j, note, sizeof note)) return 2;
+        opt->checkpoint_note = note;
+    }
+    if (cli_series_points(&j->series, render_emitted(opt->photons))) return 2;
+    if (opt->progress && render_emitted(opt->photons) != opt->photons)
+        fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",
+                (unsigned long long)opt->photons, (unsigned long long)render_emitted(opt->photons));
+    return -1;
+}
+
 /* Render the job: the exit status. */
 static int render_job(render_options_t *opt_in, render_job_t *jp)
 {
     render_options_t opt = *opt_in;
-    const render_job_t j = *jp;
     char err[1024];
     int status;
-    if (check_outputs(&j)) return 1;
+    if (check_outputs(jp)) return 1;
     scene_t scene;
-    if (scene_load(j.scene_path, &scene, err, sizeof err)) {
+    if (scene_load(jp->scene_path, &scene, err, sizeof err)) {
         fprintf(stderr, "pree render: %s\n", err);
         return 1;
     }
+    if ((status = prepare_job(&opt, jp, &scene)) >= 0) {
+        scene_free(&scene);
+        return status;
+    }
+    const render_job_t j = *jp;
     if (opt.checkpoint && checkpoint_probe(opt.checkpoint, err, sizeof err)) {
         fprintf(stderr, "pree render: %s\n", err);
         scene_free(&scene);
@@ -411,7 +450,6 @@ int pree_cmd_render(int argc, char **argv)
 {
     const render_options_t defaults = {.width = 320, .height = 240, .photons = 768000, .precision = PRECISION_DOUBLE,
                                        .grid = GRID_CELLS, .preu = 4, .progress = 1, .interrupt = &interrupted};
-    static char note[CHECKPOINT_NOTE_MAX];
     static render_job_t j;
     render_options_t opt = defaults;
     int status = parse_args(argc, argv, &opt, &j), rargc = 0;
@@ -423,17 +461,7 @@ int pree_cmd_render(int argc, char **argv)
             status = parse_args(rargc, rargv, &opt, &j);
         }
     }
-    if (status < 0 && opt.checkpoint && (status = job_note(&opt, &j, note, sizeof note)) == 0) {
-        opt.checkpoint_note = note;
-        status = -1;
-    }
-    if (status < 0 && cli_series_points(&j.series, render_emitted(opt.photons))) status = 2;
-    if (status < 0) {
-        if (opt.progress && render_emitted(opt.photons) != opt.photons)
-            fprintf(stderr, "pree render: --photons %llu renders %llu photons (whole batches of 1000)\n",
-                    (unsigned long long)opt.photons, (unsigned long long)render_emitted(opt.photons));
-        status = render_job(&opt, &j);
-    }
+    if (status < 0) status = render_job(&opt, &j);
     if (rargv) cli_resume_free(rargc, rargv);
     return status;
 }

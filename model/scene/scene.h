@@ -1,7 +1,7 @@
 /* scene.h: the scene description: camera, materials, analytic spheres, triangle meshes and
  * lights, as read from a PREE scene file (format: docs/scene_format.md).
  *
- * API: scene_load() parses a file; on error it returns -1 with a one-line message
+ * API: scene_load() parses a file (a pbrt-v4 file when its name ends in .pbrt: scene_pbrt.h); on error it returns -1 with a one-line message
  * "FILE:LINE: what" in err and leaves *out untouched. scene_free() releases everything. */
 #ifndef PREE_SCENE_H
 #define PREE_SCENE_H
@@ -82,6 +82,9 @@ typedef struct {
                             * = 1e-4, smallppm's; scale it with the scene, `epsilon E`) */
     /* What the scene contains, so that the engine can skip what it does not need. */
     int has_mirror, has_glass, has_diffuse;
+    /* A pbrt-v4 file's Film resolution and sppm photon count (0: none), the render's defaults. */
+    int film_width, film_height;
+    uint64_t film_photons;
 } scene_t;
 
 int scene_load(const char *path, scene_t *out, char *err, size_t errlen);

@@ -10,6 +10,7 @@
 #include <string.h>
 #include "scene.h"
 #include "mesh_load.h"
+#include "scene_pbrt.h"
 #include "mesh_light.h"
 #include "file_in.h"
 #include "text_escape.h"
@@ -27,18 +28,13 @@ typedef struct {
 
 static int fail(parse_ctx_t *pc, const char *fmt, ...)
 {
-    char msg[384];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(msg, sizeof msg, fmt, ap);
+    text_error_at(pc->err, pc->errlen, pc->file, pc->line, fmt, ap);   /* line 0: the whole file */
     va_end(ap);
-    char safe[sizeof msg * 4];
-    text_escape(msg, safe, sizeof safe);   /* the scene's bytes never reach the terminal raw */
-    snprintf(pc->err, pc->errlen, "%s:%d: %s", pc->file, pc->line, safe);
     return -1;
 }
 
-/* A directive that may appear once: fail when it was given before (first on *seen). */
 static int once(parse_ctx_t *pc, int *seen, const char *what)
 {
     if (*seen) return fail(pc, "%s is given twice (first on line %d)", what, *seen);
@@ -354,13 +350,21 @@ static int scene_validate(parse_ctx_t *pc, scene_t *s)
 int scene_load(const char *path, scene_t *out, char *err, size_t errlen)
 {
     parse_ctx_t pc = {path, 0, err, errlen, 0, 0, 0};
-    FILE *f = file_in_open(path, PREE_INPUT_MAX_BYTES, err, errlen);
-    if (!f) return -1;
     scene_t s;
     memset(&s, 0, sizeof s);
     snprintf(s.path, sizeof s.path, "%s", path);
     s.max_depth = 20;
     s.epsilon = 1e-4;   /* TRACER_EPSILON: the reference program's */
+    const size_t plen = strlen(path);
+    if (plen > 5 && !strcmp(path + plen - 5, ".pbrt")) {
+        int rc = scene_pbrt_load(path, &s, &s.film_width, &s.film_height, &s.film_photons, err, errlen);
+        if (rc == 0) rc = scene_validate(&pc, &s);   /* errors name the file alone (line 0) */
+        if (rc) { scene_free(&s); return -1; }
+        *out = s;
+        return 0;
+    }
+    FILE *f = file_in_open(path, PREE_INPUT_MAX_BYTES, err, errlen);
+    if (!f) return -1;
     char *line = NULL;
     size_t cap = 0;
     ssize_t got;

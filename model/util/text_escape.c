@@ -44,3 +44,12 @@ char *text_escape(const char *src, char *dst, size_t cap)
     dst[o] = '\0';
     return dst;
 }
+
+void text_error_at(char *err, size_t errlen, const char *file, int line, const char *fmt, va_list ap)
+{
+    char msg[1024], safe[sizeof msg * 4];
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    text_escape(msg, safe, sizeof safe);   /* an input's bytes never reach the terminal raw */
+    if (line) snprintf(err, errlen, "%s:%d: %s", file, line, safe);
+    else snprintf(err, errlen, "%s: %s", file, safe);
+}

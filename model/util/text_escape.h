@@ -5,10 +5,15 @@
 #ifndef PREE_TEXT_ESCAPE_H
 #define PREE_TEXT_ESCAPE_H
 
+#include <stdarg.h>
 #include <stddef.h>
 
 /* Copy src to dst (cap bytes, always terminated when cap > 0), escaping as above; a sequence
  * that does not fit whole is dropped. Returns dst. */
 char *text_escape(const char *src, char *dst, size_t cap);
+
+/* An error message "FILE:LINE: message" (line 0: "FILE: message") into err[errlen], the message
+ * formatted from fmt and ap and escaped as above. */
+void text_error_at(char *err, size_t errlen, const char *file, int line, const char *fmt, va_list ap);
 
 #endif
