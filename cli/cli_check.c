@@ -2,6 +2,7 @@
  * (values, camera rays for the image size) and report what a render would need (hit points,
  * memory, triangles, lights) without building the BVH or tracing a ray. Exit 0 when a render
  * could start, 1 when it could not (the one-line reason on stderr), 2 on a usage error. */
+#include <math.h>
 #include <stdio.h>
 #include "cli.h"
 #include "cli_options.h"
@@ -30,6 +31,38 @@ static void report(const char *path, const scene_t *s, const render_options_t *o
            area, s->max_depth, opt->width, opt->height);
     printf("hit_points_estimate %llu (one a pixel; mirrors and glass may add more)\n", pix);
     printf("memory_estimate_bytes %llu (%.2f GiB)\n", (unsigned long long)mem, (double)mem / (1u << 30));
+    /* Each material as the engine takes it (an MTL material as the MTL rule classified it). */
+    static const char *const kinds[] = {"diffuse", "mirror", "glass"};
+    for (int i = 0; i < s->num_materials; i++) {
+        const material_t *m = &s->materials[i];
+        printf("material %s %s %.6g %.6g %.6g", m->name, kinds[m->kind], m->colour.x, m->colour.y, m->colour.z);
+        if (m->kind == MAT_GLASS) printf(" ior %.6g", m->ior);
+        putchar('\n');
+    }
+    /* Each light: where, which way an area light faces (its triangles' area-weighted normal;
+     * "mixed" when they do not agree), its flux and its share of the photons (photon i comes
+     * from light i mod L) and of the total flux. */
+    double total = 0;
+    for (int l = 0; l < s->num_lights; l++) total += s->lights[l].flux.x + s->lights[l].flux.y + s->lights[l].flux.z;
+    for (int l = 0; l < s->num_lights; l++) {
+        const light_t *L = &s->lights[l];
+        const double f = L->flux.x + L->flux.y + L->flux.z;
+        if (L->kind == LIGHT_POINT) {
+            printf("light %d point at %.6g %.6g %.6g", l, L->position.x, L->position.y, L->position.z);
+        } else {
+            vec3 n = v3(0, 0, 0);
+            for (size_t t = 0; t < L->num_tris; t++) {
+                const double a = 0.5 * sqrt(v3_dot(v3_cross(L->tris[t].e1, L->tris[t].e2), v3_cross(L->tris[t].e1, L->tris[t].e2)));
+                n = v3_add(n, v3_scale(L->tris[t].n, a));
+            }
+            const double len = sqrt(v3_dot(n, n));
+            printf("light %d area %zu triangle%s area %.6g ", l, L->num_tris, L->num_tris == 1 ? "" : "s", L->area);
+            if (len > 0.99 * L->area) printf("facing %.4g %.4g %.4g", n.x / len, n.y / len, n.z / len);
+            else printf("facing mixed");
+        }
+        printf(" flux %.6g %.6g %.6g photons 1/%d flux_share %.4g\n", L->flux.x, L->flux.y, L->flux.z, s->num_lights,
+               total > 0 ? f / total : 0.0);
+    }
 }
 
 enum { OPT_MAX_MEMORY = CLI_OWN };

@@ -108,8 +108,10 @@ static int mtl_scan(const char *path, const mesh_blob_t *b, names_t *names, char
     lines_t L;
     memset(&L, 0, sizeof L);
     L.b = b;
-    int too_long, have = 0;
+    int too_long, have = 0, tex = 0, tex_line = 0;
+    char tex_key[32] = "";
     static const char *colours[] = {"Ka", "Kd", "Ks", "Ke", "Tf"};
+    static const char *textures[] = {"bump", "disp", "decal", "refl", "norm"};
     static const char *scalars[] = {"Ni", "Ns", "d", "Tr"};
     while (next_line(&L, &too_long)) {
         if (too_long) return fail(err, errlen, path, L.line, "line too long");
@@ -124,7 +126,12 @@ static int mtl_scan(const char *path, const mesh_blob_t *b, names_t *names, char
         int is_colour = 0, is_scalar = 0;
         for (size_t i = 0; i < sizeof colours / sizeof *colours; i++) is_colour |= !strcmp(k, colours[i]);
         for (size_t i = 0; i < sizeof scalars / sizeof *scalars; i++) is_scalar |= !strcmp(k, scalars[i]);
-        int is_illum = !strcmp(k, "illum");
+        int is_illum = !strcmp(k, "illum"), is_tex = !strncmp(k, "map_", 4);
+        for (size_t i = 0; i < sizeof textures / sizeof *textures; i++) is_tex |= !strcmp(k, textures[i]);
+        if (is_tex && !tex++) {
+            tex_line = L.line;
+            snprintf(tex_key, sizeof tex_key, "%s", k);
+        }
         if (!is_colour && !is_scalar && !is_illum) continue;
         if (!have) return fail(err, errlen, path, L.line, "'%s' before any 'newmtl'", k);
         if (is_colour) {
@@ -139,6 +146,9 @@ static int mtl_scan(const char *path, const mesh_blob_t *b, names_t *names, char
                 return fail(err, errlen, path, L.line, "'illum' needs an integer 0..10");
         }
     }
+    if (tex)   /* never silent: the image differs from a textured renderer's */
+        fprintf(stderr, "pree: warning: %s:%d: '%s': %d texture line%s ignored (PREE uses the constant colours Kd, "
+                "Ks, Ke and Tf)\n", path, tex_line, tex_key, tex, tex > 1 ? "s" : "");
     return 0;
 }
 

@@ -15,7 +15,21 @@ expect_eq "cornell3 memory estimate" "$(awk '$1=="memory_estimate_bytes"{print $
 "$PREE" check "$ROOT/scenes/cornell-teapot" > tp.txt 2>/dev/null || fail "check cornell-teapot"
 [ "$(awk '$1=="triangles"{print $2}' tp.txt)" -gt 1000 ] || fail "cornell-teapot: no mesh triangles: $(cat tp.txt)"
 echo "ok: cornell-teapot: $(awk '$1=="triangles"' tp.txt)"
+expect_eq "cornell3 glass as the engine takes it" "$(grep '^material glass ' c3.txt)" "material glass glass 0.999 0.999 0.999 ior 1.5"
+expect_eq "cornell3 light" "$(grep '^light 0 ' c3.txt)" \
+  "light 0 point at 50 60 85 flux 31415.9 31415.9 31415.9 photons 1/1 flux_share 1"
+"$PREE" check "$ROOT/scenes/examples/room.scene" > room.txt || fail "check room.scene"
+expect_eq "room: two lights facing down, half the photons each" "$(grep -c '^light [01] area 1 triangle area 0.125 facing 0 -1 0 .* photons 1/2 flux_share 0.5$' room.txt)" 2
+"$PREE" check "$ROOT/scenes/examples/mesh.scene" > mesh.txt || fail "check mesh.scene"
+expect_eq "mesh: the MTL rule's classes" "$(grep -c '^material alcove.obj:\(wall diffuse\|blue diffuse\|polished mirror\|panel_light diffuse\) ' mesh.txt)" 4
 [ -z "$(ls -A | grep -v '\.txt$')" ] || fail "pree check wrote a file: $(ls -A)"
+# An MTL texture is ignored, never silently: one warning naming the file, line and key.
+printf 'newmtl m\nKd 0.5 0.5 0.5\nmap_Kd missing.png\nmap_Ks missing.png\n' > t.mtl
+printf 'mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl m\nf 1 2 3\n' > t.obj
+printf 'camera position 0 0 5 lookat 0 0 0 up 0 1 0 fov 40\nmesh t.obj\nlight point 0 0 3 intensity 1 1 1\n' > t.scene.txt
+"$PREE" check t.scene.txt > /dev/null 2> tex.txt || fail "check t.scene.txt: $(cat tex.txt)"
+expect_eq "texture warning" "$(cat tex.txt)" \
+  "pree: warning: t.mtl:3: 'map_Kd': 2 texture lines ignored (PREE uses the constant colours Kd, Ks, Ke and Tf)"
 
 expect_fail() {   # expect_fail NAME PATTERN ARGS...: exit 1, one stderr line matching PATTERN
   local name=$1 pat=$2; shift 2
