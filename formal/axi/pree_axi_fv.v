@@ -20,7 +20,8 @@ module pree_axi_fv #(
   parameter RingAW   = 2,
   parameter CountW   = 6,   // the wrapper's running counts: narrow, so that they wrap
   parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
-  parameter Acct     = 0    // 1: the candidate accounting's invariants (job formal/axi_acct)
+  parameter Acct     = 0,   // 1: the candidate accounting's invariants (job formal/axi_acct)
+  parameter CoverWrap = 0   // 1: cover photons_done_o wrapping (job formal/axi_narrow: CountW 4)
 ) (
   input wire aclk,
   input wire aresetn,
@@ -104,6 +105,8 @@ module pree_axi_fv #(
   (* keep *) wire [CountW-1:0] f_t_wr_cnt, f_t_cum_in, f_t_given, f_t_ret, f_t_taken, f_t_done;
   (* keep *) wire        f_t_all_idle, f_t_rst_n;
   (* keep *) wire [PhFifoAW:0] f_t_phf_wp, f_t_phf_rp;
+  (* keep *) wire [1:0]  f_t_irq;                  // IRQ_STATUS: {command done, batch done}
+  (* keep *) wire        f_t_cmd_done;
   // Acct only (axi_acct/taps_acct.ys, after memory_map): the wrapper's copy of photons_done_o,
   // the ring of in-flight photons' candidate ends and the photon FIFO's ends.
   (* keep *) wire [CountW-1:0] f_t_wdone;
@@ -194,7 +197,18 @@ module pree_axi_fv #(
     cover (f_phf_n == (1 << PhFifoAW));                          // photon FIFO full
     cover (f_used == (1 << IdxAW));                              // index table full
     cover (s_axil_bvalid && s_axil_rvalid);                      // a write and a read answered
+    cover (irq_o && f_t_irq[0]);                                 // a batch-done interrupt
+    cover (f_t_state == 3'd5 && f_t_cmd_done);                   // a radiance pass ends
   end
+
+  // photons_done_o wraps: from 2^CountW - 1 to 0 (with CountW 4, 16 photons from reset).
+  reg f_done_top_q = 1'b0;
+  always @(posedge aclk) f_done_top_q <= f_t_done == {CountW{1'b1}};
+  generate
+    if (CoverWrap != 0) begin : g_cover_wrap
+      always @* if (aresetn && f_t_rst_n) cover (f_done_top_q && f_t_done == {CountW{1'b0}});
+    end
+  endgenerate
 
 endmodule
 
