@@ -74,12 +74,22 @@ module pree_fp32_add #(
   localparam ALIGN_MASK = (seam_regs(2) != 0) && (seam_regs(3) != 0);
 
   // ---------------------------------------------------------------- entry: seam 0, the check
-  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  // A Stages value outside its range, or PipeFast other than 0 or 1, stops elaboration (Verilator,
+  // Icarus, Yosys) with a module named after the problem, however the unit is instantiated.
+  generate
+    if (Stages < 1 || Stages > MAX_STAGES) begin : g_bad_stages
+      pree_fp32_add_stages_is_1_to_7 u_fail ();
+    end
+    if (PipeFast < 0 || PipeFast > 1) begin : g_bad_pipefast
+      pree_fp32_add_pipefast_is_0_or_1 u_fail ();
+    end
+  endgenerate
+
+  // InRegs operand registers before A1 (pree_fp32_entry, which refuses InRegs other than 0, 1).
   wire        valid0, sub0;
   wire [31:0] a0, b0;
 
-  pree_fp32_entry #(.Unit("pree_fp32_add"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
-                    .Min(1), .Max(MAX_STAGES), .Width(65)) u_entry (
+  pree_fp32_entry #(.InRegs(InRegs), .Width(65)) u_entry (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({sub_i, a_i, b_i}),
     .valid_o (valid0), .q_o ({sub0, a0, b0})
   );

@@ -87,12 +87,22 @@ module pree_fp32_div #(
   endfunction
 
   // ---------------------------------------------------------------- entry: seam 0, the check
-  // InRegs operand registers before A1 (pree_fp32_entry); the parameters checked in simulation.
+  // A Stages value outside its range, or PipeFast other than 0 or 1, stops elaboration (Verilator,
+  // Icarus, Yosys) with a module named after the problem, however the unit is instantiated.
+  generate
+    if (Stages < MIN_STAGES || Stages > MAX_STAGES) begin : g_bad_stages
+      pree_fp32_div_stages_is_2_to_31 u_fail ();
+    end
+    if (PipeFast < 0 || PipeFast > 1) begin : g_bad_pipefast
+      pree_fp32_div_pipefast_is_0_or_1 u_fail ();
+    end
+  endgenerate
+
+  // InRegs operand registers before A1 (pree_fp32_entry, which refuses InRegs other than 0, 1).
   wire        valid0;
   wire [31:0] a0, b0;
 
-  pree_fp32_entry #(.Unit("pree_fp32_div"), .Stages(Stages), .InRegs(InRegs), .PipeFast(PipeFast),
-                    .Min(MIN_STAGES), .Max(MAX_STAGES), .Width(64)) u_entry (
+  pree_fp32_entry #(.InRegs(InRegs), .Width(64)) u_entry (
     .clk_i (clk_i), .rst_ni (rst_ni), .valid_i (valid_i), .d_i ({a_i, b_i}),
     .valid_o (valid0), .q_o ({a0, b0})
   );
