@@ -84,6 +84,8 @@ static void render_usage(FILE *f)
         "                         options, outputs are in FILE); with --photons N, extended to N; other\n"
         "                         outputs may be given, options that change the bits may not. The\n"
         "                         same bits as an uninterrupted render, for any --threads\n"
+        "  --light-sampling S     uniform (default: photon i from light i mod L) or power (each light\n"
+        "                         with probability its share of the total flux)\n"
         "  --write-every N        a convergence series: also write every output at N, 2N, ... photons\n"
         "  --write-at N,N,...     and/or at these counts (100k, 1.5M: whole thousands), each NAME.EXT as\n"
         "                         NAME-COUNT.EXT with the bits of a render of COUNT photons\n"
@@ -98,7 +100,8 @@ static void render_usage(FILE *f)
 }
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
-       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES, OPT_WRITE_EVERY, OPT_WRITE_AT };
+       OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES, OPT_WRITE_EVERY, OPT_WRITE_AT,
+       OPT_LIGHT_SAMPLING };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -116,6 +119,7 @@ static const struct option render_longopts[] = {
     {"prees", required_argument, NULL, OPT_PREES},
     {"write-every", required_argument, NULL, OPT_WRITE_EVERY},
     {"write-at", required_argument, NULL, OPT_WRITE_AT},
+    {"light-sampling", required_argument, NULL, OPT_LIGHT_SAMPLING},
     {NULL, 0, NULL, 0}
 };
 
@@ -130,6 +134,7 @@ typedef struct {
     const char *given_names[48];
     int ngiven;
     cli_series_t series;    /* --write-every, --write-at */
+    int light_power;        /* --light-sampling power */
 } render_job_t;
 
 /* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
@@ -180,6 +185,12 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             break;
         case OPT_TIME_LIMIT: if (cli_real(&a, 0, 1, 1e9, &opt->time_limit)) return 2; break;
         case OPT_PREES: if (cli_int(&a, 1, 1024, &v)) return 2; opt->prees = (int)v; break;
+        case OPT_LIGHT_SAMPLING: {
+            static const char *const names[] = {"uniform", "power"};
+            if ((k = cli_keyword(&a, names, 2)) < 0) return 2;
+            j->light_power = k;
+            break;
+        }
         case OPT_WRITE_EVERY:
         case OPT_WRITE_AT: if (cli_series_option(&a, id == OPT_WRITE_EVERY, &j->series)) return 2; break;
         default:
@@ -214,7 +225,8 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
 static int job_note(const render_options_t *opt, const render_job_t *j, char *note, size_t len)
 {
     static char series[16 * CLI_SERIES_MAX + 64];
-    cli_series_note(&j->series, series, sizeof series);
+    const int n = snprintf(series, sizeof series, "--light-sampling %s\n", j->light_power ? "power" : "uniform");
+    cli_series_note(&j->series, series + n, sizeof series - (size_t)n);
     const cli_resume_job_t rj = {.scene = j->scene_path, .stats = j->stats_path, .outs = j->outs, .nout = j->nout,
                                  .series = series};
     return cli_resume_note(opt, &rj, note, len);
@@ -354,9 +366,14 @@ static int given(const render_job_t *j, const char *name)
 /* What depends on the scene: a pbrt file's Film resolution and photon count where the command
  * line gives none, then the checkpoint's note, the series' points and the rounding note. -1 to
  * go on, else the exit status. */
-static int prepare_job(render_options_t *opt, render_job_t *j, const scene_t *scene)
+static int prepare_job(render_options_t *opt, render_job_t *j, scene_t *scene)
 {
     static char note[CHECKPOINT_NOTE_MAX];
+    char err[1024];
+    if (j->light_power && scene_light_power(scene, err, sizeof err)) {
+        fprintf(stderr, "pree render: %s\n", err);
+        return 1;
+    }
     if (scene->film_width && !given(j, "--width")) opt->width = scene->film_width;
     if (scene->film_height && !given(j, "--height")) opt->height = scene->film_height;
     if (scene->film_photons && !given(j, "--photons")) opt->photons = scene->film_photons;

@@ -41,6 +41,7 @@ static uint64_t scene_hash(uint64_t f, const scene_t *sc)
         HASH(f, l->kind); HASH(f, l->position); HASH(f, l->flux); HASH(f, l->area);
         if (l->num_tris) HASH_N(f, l->tris, l->num_tris);
     }
+    if (sc->light_cdf) HASH_N(f, sc->light_cdf, (size_t)sc->num_lights);
     HASH(f, sc->max_depth);
     HASH(f, sc->epsilon);
     return f;

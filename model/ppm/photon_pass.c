@@ -71,16 +71,43 @@ static int photon_segment(photon_ctx_t *c, vec3 o, vec3 d, int depth, vec3 flux)
 #define AREA_DIM_TRI 59
 #define AREA_DIM_POS 60
 
-int photon_trace(const scene_t *scene, const tracer_t *tr, uint64_t i, photon_hits_t *out)
+/* The light of photon i, its photon's flux, and the number that picks an area light's triangle:
+ * light i mod L with L times its flux (uniform), or by power (scene->light_cdf): u = H(59, i)
+ * picks the light with probability p (its share of the flux), the flux divided by p, and u
+ * rescaled within the light's share picks the triangle. */
+static const light_t *pick_light(const scene_t *scene, uint64_t i, vec3 *flux, double *u_tri)
 {
     const int nl = scene->num_lights;
-    const light_t *light = &scene->lights[i % (uint64_t)nl];
-    vec3 flux = nl == 1 ? light->flux : v3_scale(light->flux, (double)nl);
+    if (!scene->light_cdf || nl == 1) {
+        const light_t *light = &scene->lights[i % (uint64_t)nl];
+        *flux = nl == 1 ? light->flux : v3_scale(light->flux, (double)nl);
+        *u_tri = light->kind == LIGHT_AREA ? halton(AREA_DIM_TRI, (long long)i) : 0.0;
+        return light;
+    }
+    const double *cdf = scene->light_cdf, u = halton(AREA_DIM_TRI, (long long)i);
+    int lo = 0, hi = nl - 1;
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (u < cdf[mid]) hi = mid;
+        else lo = mid + 1;
+    }
+    const double below = lo ? cdf[lo - 1] : 0.0, p = cdf[lo] - below;
+    const double r = (u - below) / p;
+    *u_tri = r < 1.0 ? r : 0x1.fffffffffffffp-1;
+    *flux = v3_scale(scene->lights[lo].flux, 1.0 / p);
+    return &scene->lights[lo];
+}
+
+int photon_trace(const scene_t *scene, const tracer_t *tr, uint64_t i, photon_hits_t *out)
+{
+    vec3 flux;
+    double u_tri;
+    const light_t *light = pick_light(scene, i, &flux, &u_tri);
     photon_ctx_t c = {scene, tr, out, i};
     if (light->kind == LIGHT_AREA) {
         /* Uniform over the area, cosine-weighted about the front normal. */
         vec3 o, d;
-        mesh_light_sample(light, halton(AREA_DIM_TRI, (long long)i), halton(AREA_DIM_POS, (long long)i),
+        mesh_light_sample(light, u_tri, halton(AREA_DIM_POS, (long long)i),
                           halton(0, (long long)i), halton(1, (long long)i), &o, &d);
         return photon_segment(&c, o, d, 0, flux);
     }

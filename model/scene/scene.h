@@ -85,6 +85,9 @@ typedef struct {
     /* A pbrt-v4 file's Film resolution and sppm photon count (0: none), the render's defaults. */
     int film_width, film_height;
     uint64_t film_photons;
+    /* Photon emission: NULL, photon i from light i mod L (uniform: every light the same share);
+     * else by power, the lights' cumulative shares of the total flux (scene_light_power). */
+    double *light_cdf;
 } scene_t;
 
 int scene_load(const char *path, scene_t *out, char *err, size_t errlen);
@@ -93,6 +96,10 @@ void scene_free(scene_t *scene);
 /* Add a material, returning its index, or -1 if the name exists (err filled). */
 int scene_add_material(scene_t *scene, const material_t *m, char *err, size_t errlen);
 int scene_find_material(const scene_t *scene, const char *name);
+/* Emit photons by light power (light_cdf, docs/scene_format.md "Photon emission"): 0, or -1
+ * with err when the lights carry no flux. */
+int scene_light_power(scene_t *s, char *err, size_t errlen);
+
 /* Free the materials and their index (scene_free calls it). */
 void scene_materials_free(scene_t *scene);
 

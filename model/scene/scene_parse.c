@@ -401,6 +401,7 @@ void scene_free(scene_t *s)
     for (int i = 0; i < s->num_meshes; i++) mesh_free(&s->meshes[i]);
     free(s->meshes);
     scene_materials_free(s);
+    free(s->light_cdf);
     free(s->spheres);
     for (int i = 0; i < s->num_lights; i++) free(s->lights[i].tris);
     free(s->lights);

@@ -13,7 +13,7 @@ while read -r name hashes; do
   [ "$(json "$TMP/$name.json" photon_hits)" -gt 1000 ] || fail "$name: almost no photon reaches a diffuse surface"
   expect_eq "$name image/state hashes" "$(json "$TMP/$name.json" image_hash)/$(json "$TMP/$name.json" state_hash)" "$hashes"
 done <<'LIST'
-room 93704bdabfc93a36/eea3ded996dd90eb
+room 8c57d794ad86c8f4/a75dabb2c8d4338c
 mesh 166600a133a04844/70a0fb00dfc453b4
 caustics 92bd103be5cddae2/354758e09d683cea
 LIST
