@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Run time against error: cornell3 rendered with 768,000 x 2^k photons (k = 0..6) in both
-# precisions, each compared with a long double-precision reference render (512x the photons, 8x the longest).
-# Prints a table (photons, precision, wall seconds, CPU seconds, RMSE on linear radiance, SSIM of the 8-bit
-# images) and draws out/bench/convergence.png with gnuplot. The reference's photons are disjoint
-# from the renders' (--photon-offset).
+# Run time against error: cornell3 at 768,000 x 2^k photons (k = 0..6) in both precisions, each
+# precision one render writing a convergence series (--write-at: each point has the bits of a
+# render of that count; its seconds, wall and CPU, are the render's so far, from its statistics),
+# each point compared with a long double-precision reference render (512x the photons, 8x the
+# longest). Prints a table (photons, precision, wall seconds, CPU seconds, RMSE on linear radiance,
+# SSIM of the 8-bit images) and draws out/bench/convergence.png with gnuplot. The reference's
+# photons are disjoint from the renders' (--photon-offset).
 # Usage: bench-convergence.sh PREE OUTDIR [--quick|--plot-only]   (--quick: 96x72, for testing the
 # script; --plot-only: redraw the plot from OUTDIR/convergence.txt)
 set -euo pipefail
@@ -25,21 +27,21 @@ tab="$out/convergence.txt"
 if [ "$quick" = --plot-only ]; then W=320; H=240; base=768000; refmul=512; fi
 [ "$quick" = --plot-only ] || {
 printf '%-12s %-9s %9s %9s %12s %10s %10s\n' photons precision seconds cpu_s rmse_linear ssim_8bit psnr_8bit | tee "$tab"
+points=$(for k in $(seq 0 $steps); do echo $((base << k)); done | paste -sd,)
 for prec in double fp32; do
+  "$pree" render $scene --width $W --height $H --photons $((base << steps)) --precision $prec --write-at "$points" \
+      --out "$out/conv-$prec.exr" --out "$out/conv-$prec.png" --stats "$out/conv-$prec.json" --quiet
   for k in $(seq 0 $steps); do
     n=$((base << k)); f="$out/conv-$prec-$n"
-    /usr/bin/time -f '%U %S' -o "$f.cpu" "$pree" render $scene --width $W --height $H --photons $n --precision $prec \
-        --out "$f.exr" --out "$f.png" --stats "$f.json" --quiet
-    cpu=$(awk '{print $1 + $2}' "$f.cpu")
-    sec=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["seconds"]["total"])' "$f.json")
+    read -r sec cpu <<<"$(python3 -c 'import json,sys; s=json.load(open(sys.argv[1]))["seconds"]; print(s["total"], s["cpu"])' "$f.json")"
     rmse=$("$pree" compare "$ref.exr" "$f.exr" | awk '$1=="rmse"{print $2}')
     read -r ssim psnr <<<"$("$pree" compare "$ref.png" "$f.png" | awk '$1=="ssim"{s=$2} $1=="psnr_db"{p=$2} END{print s, p}')"
     printf '%-12s %-9s %9.3f %9.2f %12.6g %10.6f %10.3f\n' $n $prec $sec $cpu $rmse $ssim $psnr | tee -a "$tab"
   done
 done
 }
-# Plotted against CPU seconds (user + sys of the render): on a shared machine wall time measures
-# the other load as much as the engine.
+# Plotted against CPU seconds (all threads of the render so far): on a shared machine wall time
+# measures the other load as much as the engine.
 awk 'NR>1 && $2=="double"{print $4, $5, $6}' "$tab" > "$out/conv-double.dat"
 awk 'NR>1 && $2=="fp32"{print $4, $5, $6}' "$tab" > "$out/conv-fp32.dat"
 gnuplot <<GP

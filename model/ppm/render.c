@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <time.h>
 #include <unistd.h>
 #include "hp_order.h"
 #include "grid_refilter.h"
@@ -205,6 +206,13 @@ static int open_grid(render_session_t *s, const char **phase, char *err, size_t 
     return 0;
 }
 
+/* The process's CPU time in seconds (every thread's). */
+static double cpu_seconds(void)
+{
+    struct timespec t;
+    return clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) ? 0.0 : (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                               char *err, size_t errlen)
 {
@@ -216,6 +224,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->res = res;
     render_stats_t *st = &res->stats;
     s->t_start = omp_get_wtime();
+    s->cpu_start = cpu_seconds();
     const char *phase = "set-up";
     if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
         snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
@@ -324,6 +333,7 @@ int render_session_snapshot(render_session_t *s, char *err, size_t errlen)
     }
     int rc = evaluate(s, res->stats.photons_emitted, err, errlen);
     res->stats.sec_total = omp_get_wtime() - s->t_start;
+    res->stats.sec_cpu = cpu_seconds() - s->cpu_start;
     res->stats.peak_rss_kb = render_peak_rss_kb();
     if (rc == 0 && s->opt.snapshot) rc = s->opt.snapshot(s->opt.snapshot_ctx, res, err, errlen);
     if (hp_order_apply(&res->hp, s->perm) && rc == 0) {
@@ -356,6 +366,7 @@ int render_close(render_session_t *s, char *err, size_t errlen)
     rc = s->interrupted ? 1 : 0;
 done:
     st->sec_total = omp_get_wtime() - s->t_start;
+    st->sec_cpu = cpu_seconds() - s->cpu_start;
     session_free(s);
     st->peak_rss_kb = render_peak_rss_kb();
     if (st->hit_points) st->peak_bytes_per_hit_point = 1024.0 * (double)st->peak_rss_kb / (double)st->hit_points;

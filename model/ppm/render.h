@@ -100,6 +100,7 @@ typedef struct {
     size_t hit_point_bytes;           /* bytes of the hit-point arrays per hit point */
     size_t grid_entry_bytes;          /* bytes per grid entry */
     double sec_bvh, sec_eye, sec_grid, sec_trace, sec_update, sec_refilter, sec_radiance, sec_total;
+    double sec_cpu;          /* the process's CPU seconds (all threads) since the render began */
     long peak_rss_kb;
     int threads;
     /* What the scene holds (the engine builds only what it needs). */

@@ -32,7 +32,7 @@ struct render_session {
     const scene_t *scene;
     render_options_t opt;
     render_result_t *res;
-    double t_start, t_photons;
+    double t_start, t_photons, cpu_start;   /* cpu_start: the process's CPU seconds at render_open */
     int T, skip, photon_major, interrupted, last_decile;
     unsigned screen_blocks;  /* blocks a screening batch takes at most (1 .. SCREEN_BLOCKS_MAX) */
     int screen_forced;       /* screen_blocks set by PREE_SCREEN_BLOCKS: no memory rule */

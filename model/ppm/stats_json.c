@@ -26,7 +26,7 @@ static const json_field_t contents[] = {
 static const json_field_t seconds[] = {
     SK(sec_bvh, JF_REAL, "bvh"), SK(sec_eye, JF_REAL, "eye"), SK(sec_grid, JF_REAL, "grid"),
     SK(sec_trace, JF_REAL, "trace"), SK(sec_update, JF_REAL, "update"), SK(sec_refilter, JF_REAL, "refilter"), SK(sec_radiance, JF_REAL, "radiance"),
-    SK(sec_total, JF_REAL, "total"),
+    SK(sec_total, JF_REAL, "total"), SK(sec_cpu, JF_REAL, "cpu"),
 };
 
 #define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
