@@ -175,6 +175,11 @@ static int open_grid(render_session_t *s, const char **phase, char *err, size_t 
     render_stats_t *st = &res->stats;
     const double t = step_begin(phase, "grid build", "grid");
     st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    for (size_t i = 0; i < res->hp.n; i++) {   /* fp32 holds positions to about |x| 2^-24 */
+        const hp_hot_t *p = &res->hp.hot[i];
+        const double m = fmax(fabs(p->px), fmax(fabs(p->py), fabs(p->pz)));
+        if (m > st->hp_coord_max) st->hp_coord_max = m;
+    }
     if (res->hp.n && !(st->r0 > 0)) {   /* e.g. a 1x1 image: one hit point, a box of size 0 */
         snprintf(err, errlen, "the %zu hit point(s) lie at one place, so the initial radius (from their "
                  "bounding box) is 0: use a larger image", res->hp.n);

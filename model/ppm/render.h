@@ -93,6 +93,7 @@ typedef struct {
     unsigned long long radiance_skipped;
     unsigned long long hit_points_saturated; /* stable datapath: w or T stopped at WIDE_MAX */
     double r0, r_safe;
+    double hp_coord_max;     /* the largest |coordinate| of a hit point (binary32 resolves about 2^-24 of it) */
     size_t grid_entries;
     size_t grid_entries_final;        /* after the last re-filter against the current radii */
     unsigned long long grid_refilters;

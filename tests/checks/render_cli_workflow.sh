@@ -30,4 +30,17 @@ grep -q -- '--out /proc/x.png: cannot create a temporary file' p.txt || fail "/p
 [ ! -e b.png ] || fail "/proc output: the other image was written"
 awk -v t="$took" 'BEGIN { exit !(t < 2) }' || fail "/proc output refused after $took s (after rendering?)"
 echo "ok: /proc output refused in $took s"
+# fp32 far from the origin: one warning naming the binary32 step against the initial radius.
+far() {  # far X: a floor of two triangles about x = X, seen from above
+  printf 'camera position %s 1 3 lookat %s 0 0 up 0 1 0 fov 40\nmaterial w diffuse .7 .7 .7\n' "$1" "$1"
+  printf 'triangle %s 0 -2 %s 0 -2 %s 0 2 w\n' "$(($1 - 2))" "$(($1 + 2))" "$(($1 + 2))"
+  printf 'triangle %s 0 -2 %s 0 2 %s 0 2 w\nlight point %s 2 0 intensity 1 1 1\n' "$(($1 - 2))" "$(($1 + 2))" "$(($1 - 2))" "$1"
+}
+far 0 > near.scene; far 20000 > far.scene
+run "$PREE" render near.scene --width 32 --height 24 --photons 2000 --precision fp32 --out n.png --quiet 2>w0.txt
+[ ! -s w0.txt ] || fail "a warning at the origin: $(cat w0.txt)"
+run "$PREE" render far.scene --width 32 --height 24 --photons 2000 --precision fp32 --out f.png --quiet 2>w1.txt
+grep -q "far.scene: hit points lie up to 200[0-9.]* from the origin, where one binary32 step (0.00195312) is .*% of the initial radius" w1.txt \
+  || fail "no translation warning: $(cat w1.txt)"
+echo "ok: $(cat w1.txt)"
 echo "render_cli_workflow: ok"
