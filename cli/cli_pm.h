@@ -6,7 +6,8 @@
 #include "cli_options.h"
 
 enum { CLI_PM_ESTIMATOR = 0x180, CLI_PM_K, CLI_PM_MAX_RADIUS, CLI_PM_SEARCH, CLI_PM_BUNDLE, CLI_PM_TASK,
-       CLI_PM_SCHEDULE };
+       CLI_PM_SCHEDULE, CLI_PM_KERNEL, CLI_PM_BENCH,
+       CLI_PM_BENCH_ORACLE };
 
 #define CLI_PM_LONGOPTS                                                                \
     {"estimator", required_argument, NULL, CLI_PM_ESTIMATOR},                          \
@@ -15,7 +16,10 @@ enum { CLI_PM_ESTIMATOR = 0x180, CLI_PM_K, CLI_PM_MAX_RADIUS, CLI_PM_SEARCH, CLI
     {"knn-search", required_argument, NULL, CLI_PM_SEARCH},                            \
     {"cluster-bundle", required_argument, NULL, CLI_PM_BUNDLE},                        \
     {"task-photons", required_argument, NULL, CLI_PM_TASK},                            \
-    {"task-schedule", required_argument, NULL, CLI_PM_SCHEDULE}
+    {"task-schedule", required_argument, NULL, CLI_PM_SCHEDULE},                      \
+    {"knn-kernel", required_argument, NULL, CLI_PM_KERNEL},                            \
+    {"knn-bench", required_argument, NULL, CLI_PM_BENCH},                              \
+    {"knn-bench-oracle", required_argument, NULL, CLI_PM_BENCH_ORACLE}
 
 /* Apply one of CLI_PM_LONGOPTS: 0 taken, 1 not one of them, 2 a bad value (printed). */
 int cli_pm_option(cli_args_t *a, int id, render_options_t *opt);

@@ -1,10 +1,11 @@
-/* kdtree.h: a balanced kd-tree over 3-D points (the photon map's positions), with range queries.
+/* kdtree.h: a balanced kd-tree over 3-D points (the photon map's positions), with range queries
+ * that give runs of tree positions.
  *
  * The tree is implicit: build permutes the points so that each node of [lo, hi) splits at
  * mid = (lo + hi) / 2 on the axis of the widest extent of its points, with points ordered by
  * (coordinate, original index) so the tree and every query's order are the same on any
  * machine and thread count. Ranges of KD_LEAF points or fewer are leaves. Queries walk nodes in
- * a fixed order and report points as their original indices. */
+ * a fixed order and report tree positions (index[] maps them to original indices). */
 #ifndef PREE_KDTREE_H
 #define PREE_KDTREE_H
 
@@ -24,9 +25,13 @@ typedef struct {
 int kdtree_build(kdtree_t *t, const double *pts, size_t stride, size_t n);
 void kdtree_free(kdtree_t *t);
 
-/* Every point within distance r of q (d^2 <= r^2): appended to *out (grown as needed, *cap its
- * capacity) as tree positions, in the walk's fixed order. Returns the count appended, or
- * (size_t)-1 when out of memory. */
-size_t kdtree_range(const kdtree_t *t, const double q[3], double r, uint32_t **out, size_t *n, size_t *cap);
+/* A run of tree positions [lo, hi). */
+typedef struct { uint32_t lo, hi; } kd_range_t;
+
+/* The tree positions the same walk visits around q with radius r, as runs in increasing order,
+ * adjacent runs merged (*n of them in *out, *cap its capacity): whole leaves and the split
+ * points within r of q's side, a superset of the points within r (d^2 <= r^2) that a vector
+ * kernel streams through without a gather. 0, or -1 when out of memory. */
+int kdtree_runs(const kdtree_t *t, const double q[3], double r, kd_range_t **out, size_t *n, size_t *cap);
 
 #endif

@@ -1,56 +1,60 @@
-/* knn_clustered.h: paper 002's factorized k-NN search for one cluster of up to 16 shading
- * points (--knn-search clustered, the default of --estimator pm).
+/* knn_clustered.h: paper 002's clustered k-NN search for one cluster of up to 16 shading points
+ * (--knn-search clustered, the default of --estimator pm), on the photon tree (photon_tree.h).
  *
- * 1. One range query in the photon kd-tree per cluster: all photons within R0 = r0 + the
- *    farthest member's distance from the centre. That scope holds every photon within
- *    b_i = R0 - d_i of member i (d_i: its distance from the centre), and b_i >= r0.
- * 2. A distance matrix, one photon against the 16 members at a time (16 lanes; AVX2 where the
- *    processor has it, the same bits from the portable path): d2, or +inf where the photon fails
- *    member i's normal test or lies beyond b_i.
- * 3. Dense scope (at least K_c = (R0 / r0)^2 k photons): per member, a histogram of d2 over
- *    [0, b_i^2] in KNN_BINS ranges; the range holding the k-th photon is split again, at most
- *    KNN_ITERS times; then an exact selection inside it. Sparse scope (the paper's hybrid): the
- *    exact selection directly, within r_i = b_i = r0 + distance - d_i.
- * The scope's r0 above starts as a guess of the k-th distance (the thread's last cluster's, with a
- * margin); when a member's k-th neighbour is not certain inside the guessed scope, the cluster
- * is searched again with the full r0 + distance. The guess changes the work, never the result.
- * Either way the result is the k nearest within b_i in (d2, photon) order: the same set as the
- * naive search's within r0 wherever member i has k photons within r0. */
+ * 1. A bound b for the cluster: the thread's guess of the k-th distance (the last cluster's
+ *    largest, with a margin), at most r0.
+ * 2. One walk of the tree for the whole cluster: the runs of tree positions within b + far of
+ *    the centre (far: the farthest member's distance), which hold every photon within b of
+ *    every member. Adaptive: a cluster whose members lie farther than KNN_SPREAD_MAX b from its
+ *    centre (sparse shading points, where one shared scope would hold many photons no member
+ *    needs) gives each member a scope of its own, the runs within b of it.
+ * 3. Per member, the vector kernel (knn_kernel.h) streams through the runs and compresses the
+ *    positions that pass the float prefilter within the member's own bound (the last member's
+ *    k-th distance with a margin, at most b; b again when that holds fewer than k); each is
+ *    rechecked in double (the oracle's expression order) against the bound and the normal
+ *    test; a linear-time selection (knn_select_buckets) keeps the k nearest, sorted.
+ * 4. A member with fewer than k within b < r0 is not certain: it alone is searched again with the
+ *    single-pass search within r0.
+ * Either way member j's result is the k nearest within r0 in (d2, photon) order: the oracle's. */
 #ifndef PREE_KNN_CLUSTERED_H
 #define PREE_KNN_CLUSTERED_H
 
 #include <stddef.h>
 #include <stdint.h>
 #include "hitpoints.h"
-#include "kdtree.h"
+#include "knn_kdtree.h"
+#include "knn_kernel.h"
 #include "knn_select.h"
-#include "photon_map.h"
+#include "photon_tree.h"
 
-#define KNN_BINS 16
-#define KNN_ITERS 3
-#define KNN_LANES 16
+#define KNN_LANES 16          /* shading points a cluster at most (cluster.h's CLUSTER_MAX) */
+#define KNN_MARGIN 1.25       /* the bound: this times the last cluster's largest k-th distance */
+#define KNN_LANE_MARGIN 1.05  /* a member's own bound: this times the last member's k-th distance */
+#define KNN_SPREAD_MAX 2.0    /* clusters spread wider than this times the bound: point by point */
 
 typedef struct {
-    uint32_t *scope;     /* tree positions in the cluster's scope */
-    size_t scope_n, scope_cap;
-    double *d2;          /* scope_n x KNN_LANES */
-    size_t d2_cap;
+    kd_range_t *runs;    /* the cluster's scope as runs of tree positions */
+    size_t runs_n, runs_cap;
+    uint32_t *pos;       /* the kernel's output */
+    size_t pos_cap;
     knn_cand_t *cand;    /* one member's candidates */
     size_t cand_cap;
-    double guess;        /* the scope radius to try first: the last cluster's k-th distance, with a
-                          * margin (0: r0) */
+    double guess;        /* the bound to try: the last cluster's k-th distance with a margin (0: r0) */
+    double lane_guess;   /* a member's own bound to try: the last member's k-th distance with a
+                          * margin (0: the cluster's) */
+    knn_buckets_t buckets;
 } knn_scratch_t;
 
 typedef struct {
-    unsigned long long clusters, sparse, scope_photons, distance_tests;
-    unsigned long long widened;   /* clusters whose guessed scope left a result uncertain */
+    unsigned long long clusters, per_point, widened, fallback, scope_photons;
+    knn_work_t work;
 } knn_cluster_stats_t;
 
 /* The members' neighbours: for member j (0..m), out + j * k holds counts[j] of them, in
- * (d2, photon) order, and bound2[j] = b_j^2. 0, or -1 when out of memory. */
-int knn_cluster(const kdtree_t *t, const photon_map_t *map, const hitpoints_t *h, const uint32_t *members,
-                int m, double r0, size_t k, double cos_min, knn_scratch_t *s, knn_cand_t *out, size_t *counts,
-                double *bound2, knn_cluster_stats_t *st);
+ * (d2, photon) order. 0, or -1 when out of memory. */
+int knn_cluster(const photon_tree_t *t, knn_kernel_fn kernel, const hitpoints_t *h, const uint32_t *members, int m,
+                double r0, size_t k, double cos_min, knn_scratch_t *s, knn_cand_t *out, size_t *counts,
+                knn_cluster_stats_t *st);
 void knn_scratch_free(knn_scratch_t *s);
 
 #endif

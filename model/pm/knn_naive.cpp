@@ -5,11 +5,14 @@
 #include "knn_naive.h"
 
 namespace {
+// The calling thread's coordinate reads (three a distance) and candidates sorted.
+thread_local unsigned long long coords_read, sorted;
+
 // nanoflann's dataset interface over the photon map.
 struct map_source {
     const photon_map_t *map;
     size_t kdtree_get_point_count() const { return map->n; }
-    double kdtree_get_pt(size_t i, size_t dim) const { return map->p[i].x[dim]; }
+    double kdtree_get_pt(size_t i, size_t dim) const { coords_read++; return map->p[i].x[dim]; }
     template <class B> bool kdtree_get_bbox(B &) const { return false; }
 };
 using tree_t = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, map_source>, map_source, 3, size_t>;
@@ -26,6 +29,7 @@ extern "C" knn_naive_t *knn_naive_new(const photon_map_t *map)
     try {
         knn_naive *s = new knn_naive(map);
         if (map->n) s->tree.buildIndex();
+        coords_read = 0;   // the build's reads are not the queries'
         return s;
     } catch (const std::bad_alloc &) {
         return nullptr;
@@ -33,6 +37,13 @@ extern "C" knn_naive_t *knn_naive_new(const photon_map_t *map)
 }
 
 extern "C" void knn_naive_free(knn_naive_t *s) { delete s; }
+
+extern "C" void knn_naive_work(unsigned long long *distance_tests, unsigned long long *selection)
+{
+    *distance_tests += coords_read / 3;
+    *selection += sorted;
+    coords_read = sorted = 0;
+}
 
 extern "C" size_t knn_naive_query(const knn_naive_t *s, const double q[3], const double n[3], double cos_min,
                                   size_t k, double r2max, knn_cand_t *out)
@@ -56,9 +67,10 @@ extern "C" size_t knn_naive_query(const knn_naive_t *s, const double q[3], const
                 if (d2[i] > r2max) continue;
                 const float *pn = m->p[idx[i]].n;
                 if (!(n[0] * pn[0] + n[1] * pn[1] + n[2] * pn[2] > cos_min)) continue;
-                pass.push_back(knn_cand_t{d2[i], (uint32_t)idx[i]});
+                pass.push_back(knn_cand_t{d2[i], (uint32_t)idx[i], 0});
             }
             size_t c = knn_select(pass.data(), pass.size(), k);
+            sorted += pass.size();
             double last = got ? d2[got - 1] : 0;
             if (got < want || want == m->n || last > r2max || (c == k && last > pass[k - 1].d2)) {
                 for (size_t i = 0; i < c; i++) out[i] = pass[i];

@@ -1,4 +1,4 @@
-/* knn_naive.h: the oracle k-NN search (--knn-search naive): per shading point, the k nearest
+/* knn_naive.h: the test oracle's k-NN search (--knn-search naive): per shading point, the k nearest
  * photons within the maximum radius that pass the normal test, through nanoflann's kd-tree and
  * its k-nearest result set (Debian's libnanoflann-dev), not the project's own tree: code the
  * project did not write checks the clustered search. C++ only because nanoflann is a C++
@@ -22,6 +22,9 @@ void knn_naive_free(knn_naive_t *s);
  * order, into out[0..k); returns their count, or (size_t)-1 when out of memory. Thread-safe. */
 size_t knn_naive_query(const knn_naive_t *s, const double q[3], const double n[3], double cos_min,
                        size_t k, double r2max, knn_cand_t *out);
+/* The calling thread's work since its last call: points whose distance nanoflann computed in
+ * queries, and candidates sorted (every round); both counters then restart from zero. */
+void knn_naive_work(unsigned long long *distance_tests, unsigned long long *selection);
 #ifdef __cplusplus
 }
 #endif

@@ -1,31 +1,11 @@
-/* pm_estimate.c: the photon-map radiance estimate at every hit point (see pm_estimate.h). */
+/* pm_estimate.c: the photon-map radiance estimate at every hit point, and --knn-bench (see
+ * pm_estimate.h). */
 #include <omp.h>
 #include <time.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
-#include "cluster.h"
-#include "kdtree.h"
-#include "knn_clustered.h"
-#include "knn_naive.h"
-#include "pm_estimate.h"
-#include "update.h"
-
-/* Hit point i's radiance from its neighbours c[0..count) (in (d2, photon) order), r2 the
- * squared radius when fewer than k were found. */
-static void estimate(const hitpoints_t *h, size_t i, const photon_map_t *map, const knn_cand_t *c, size_t count,
-                     size_t k, double r2_short, double *L)
-{
-    double f[3] = {0, 0, 0};
-    for (size_t j = 0; j < count; j++)
-        for (int a = 0; a < 3; a++) f[a] += map->p[c[j].photon].flux[a];
-    const double r2 = count == k ? c[k - 1].d2 : r2_short;
-    const double s = count && r2 > 0 ? 1.0 / ((PREE_PI * r2) * (double)map->emitted) : 0.0;
-    const vec3 w = h->weight[i];
-    L[3 * i + 0] = w.x * (f[0] * (1. / PREE_PI)) * s;
-    L[3 * i + 1] = w.y * (f[1] * (1. / PREE_PI)) * s;
-    L[3 * i + 2] = w.z * (f[2] * (1. / PREE_PI)) * s;
-}
+#include "fnv1a.h"
+#include "pm_search.h"
 
 double pm_cpu_now(void)
 {
@@ -34,95 +14,78 @@ double pm_cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
-static int search_naive(const hitpoints_t *h, const photon_map_t *map, const pm_estimate_opts_t *o, double *L,
-                        pm_stats_t *st)
+/* The queries' share of the search seconds: the estimates' CPU time left out. */
+static void query_share(pm_stats_t *st)
 {
-    knn_naive_t *nv = knn_naive_new(map);
-    if (!nv) return -1;
-    int failed = 0;
-    unsigned long long found = 0, short_k = 0;
-#pragma omp parallel num_threads(o->threads) reduction(| : failed) reduction(+ : found, short_k)
-    {
-        knn_cand_t *c = malloc(o->k * sizeof *c);
-        if (!c) failed = 1;
-#pragma omp for schedule(dynamic, 256)
-        for (size_t i = 0; i < h->n; i++) {
-            if (failed) continue;
-            const double q[3] = {h->hot[i].px, h->hot[i].py, h->hot[i].pz};
-            const double n[3] = {h->hot[i].nx, h->hot[i].ny, h->hot[i].nz};
-            size_t got = knn_naive_query(nv, q, n, UPDATE_NORMAL_COS, o->k, o->r0 * o->r0, c);
-            if (got == (size_t)-1) { failed = 1; continue; }
-            estimate(h, i, map, c, got, o->k, o->r0 * o->r0, L);
-            found += got;
-            short_k += got < o->k;
-        }
-        free(c);
-    }
-    knn_naive_free(nv);
-    st->neighbours = found;
-    st->short_of_k = short_k;
-    return failed ? -1 : 0;
+    st->cpu_query = st->cpu_search - st->cpu_estimate;
+    st->sec_query = st->cpu_search > 0 ? st->sec_search * st->cpu_query / st->cpu_search : st->sec_search;
 }
 
-static int search_clustered(const hitpoints_t *h, const photon_map_t *map, const pm_estimate_opts_t *o, double *L,
-                            pm_stats_t *st)
+/* Every method on the same trees, repetitions interleaved (each round runs the three, starting
+ * one further each round, so a shared machine's changing load falls on all alike); the oracle
+ * only in the first o->bench_oracle_reps rounds when that is set (it is slow at large k). st's
+ * counters are o->search's last run's, L the last run's. 0; -3 when the radiance of the methods
+ * run differs in any bit. */
+static int bench(pm_searches_t *s, const hitpoints_t *h, const photon_map_t *map, const pm_estimate_opts_t *o,
+                 double *L, pm_stats_t *st)
 {
-    double t = omp_get_wtime(), c0 = pm_cpu_now();
-    clusters_t cl;
-    cluster_opts_t co = {o->bundle, 1.0, o->threads};
-    if (cluster_build(h, &co, &cl)) return -1;
-    st->coherent_fraction = cluster_coherent_fraction(h, &cl);
-    st->sec_cluster = omp_get_wtime() - t;
-    st->cpu_cluster = pm_cpu_now() - c0;
-    kdtree_t tree;
-    if (kdtree_build(&tree, map->p[0].x, sizeof *map->p / sizeof(double), map->n)) { clusters_free(&cl); return -1; }
-    int failed = 0;
-    unsigned long long found = 0, short_k = 0;
-    knn_cluster_stats_t total = {0, 0, 0, 0, 0};
-#pragma omp parallel num_threads(o->threads) reduction(| : failed) reduction(+ : found, short_k)
-    {
-        knn_scratch_t s = {0};
-        knn_cluster_stats_t cs = {0, 0, 0, 0, 0};
-        knn_cand_t *out = malloc(KNN_LANES * o->k * sizeof *out);
-        size_t counts[KNN_LANES];
-        double b2[KNN_LANES];
-        if (!out) failed = 1;
-#pragma omp for schedule(dynamic, 16)
-        for (size_t c = 0; c < cl.count; c++) {
-            if (failed) continue;
-            const uint32_t *mem = cl.member + cl.start[c];
-            const int m = (int)(cl.start[c + 1] - cl.start[c]);
-            if (knn_cluster(&tree, map, h, mem, m, o->r0, o->k, UPDATE_NORMAL_COS, &s, out, counts, b2, &cs)) {
-                failed = 1;
-                continue;
-            }
-            for (int j = 0; j < m; j++) {
-                estimate(h, mem[j], map, out + (size_t)j * o->k, counts[j], o->k, b2[j], L);
-                found += counts[j];
-                short_k += counts[j] < o->k;
-            }
-        }
-#pragma omp critical
-        {
-            total.clusters += cs.clusters;
-            total.sparse += cs.sparse;
-            total.scope_photons += cs.scope_photons;
-            total.distance_tests += cs.distance_tests;
-            total.widened += cs.widened;
-        }
-        knn_scratch_free(&s);
-        free(out);
+    int reps[3] = {o->bench_reps, o->bench_reps, o->bench_reps};
+    if (o->bench_oracle_reps >= 0 && o->bench_oracle_reps < o->bench_reps)
+        reps[KNN_NAIVE] = o->search == KNN_NAIVE && o->bench_oracle_reps == 0 ? 1 : o->bench_oracle_reps;
+    for (int m = 0; m < 3; m++) {
+        if (!reps[m]) continue;
+        int rc = pm_search_prepare(s, (knn_search_t)m, h, map, o, st, &st->bench[m].sec_tree, &st->bench[m].cpu_tree);
+        if (rc) return rc;
     }
-    kdtree_free(&tree);
-    clusters_free(&cl);
-    st->clusters = total.clusters;
-    st->clusters_sparse = total.sparse;
-    st->scope_photons = total.scope_photons;
-    st->distance_tests = total.distance_tests;
-    st->clusters_widened = total.widened;
-    st->neighbours = found;
-    st->short_of_k = short_k;
-    return failed ? -1 : 0;
+    st->bench[KNN_KDTREE].sec_tree = st->bench[KNN_CLUSTERED].sec_tree;   /* one photon tree, built once */
+    st->bench[KNN_KDTREE].cpu_tree = st->bench[KNN_CLUSTERED].cpu_tree;
+    st->sec_tree = st->bench[o->search].sec_tree;
+    st->cpu_tree = st->bench[o->search].cpu_tree;
+    st->bench_reps = o->bench_reps;
+    pm_stats_t keep = *st;
+    for (int rep = 0; rep < o->bench_reps; rep++)
+        for (int j = 0; j < 3; j++) {
+            const int m = (rep + j) % 3;
+            if (rep >= reps[m]) continue;
+            pm_stats_t run = *st;
+            pm_method_stats_t *b = &st->bench[m];
+            double t = omp_get_wtime(), c = pm_cpu_now();
+            memset(L, 0, 3 * h->n * sizeof *L);
+            if (pm_search_run(s, (knn_search_t)m, h, map, o, L, &run)) return -1;
+            pm_lap(&t, &c, &run.sec_search, &run.cpu_search);
+            query_share(&run);
+            b->sec[rep] = run.sec_query;
+            b->cpu[rep] = run.cpu_query;
+            b->distance_tests = run.distance_tests;
+            b->kernel_tests = run.kernel_tests;
+            b->selection = run.selection;
+            b->clusters_sparse = run.clusters_sparse;
+            b->widened = run.widened;
+            b->fallback = run.fallback;
+            b->state_hash = fnv1a(FNV1A_BASIS, L, 3 * h->n * sizeof *L);
+            b->runs = rep + 1;
+            if (m == (int)o->search) keep = run;
+        }
+    for (int m = 0; m < 3; m++) keep.bench[m] = st->bench[m];
+    keep.bench_reps = st->bench_reps;
+    *st = keep;
+    for (int m = 0; m < 3; m++)
+        if (st->bench[m].runs && st->bench[m].state_hash != st->bench[o->search].state_hash) return -3;
+    return 0;
+}
+
+/* The search: its tree (and clusters) built and timed apart from the queries. */
+static int search(pm_searches_t *s, const hitpoints_t *h, const photon_map_t *map, const pm_estimate_opts_t *o,
+                  double *L, pm_stats_t *st)
+{
+    if (o->bench_reps > 0) return bench(s, h, map, o, L, st);
+    int rc = pm_search_prepare(s, o->search, h, map, o, st, &st->sec_tree, &st->cpu_tree);
+    if (rc) return rc;
+    double t = omp_get_wtime(), c = pm_cpu_now();
+    rc = pm_search_run(s, o->search, h, map, o, L, st);
+    pm_lap(&t, &c, &st->sec_search, &st->cpu_search);
+    query_share(st);
+    return rc;
 }
 
 int pm_estimate(const hitpoints_t *h, const photon_map_t *map, const pm_estimate_opts_t *o, double *L,
@@ -133,10 +96,16 @@ int pm_estimate(const hitpoints_t *h, const photon_map_t *map, const pm_estimate
     st->max_radius = o->r0;
     st->photons_stored = map->n;
     if (h->n == 0 || map->n == 0) return 0;
-    double t = omp_get_wtime(), c0 = pm_cpu_now();
-    int rc = o->search == KNN_NAIVE ? search_naive(h, map, o, L, st) : search_clustered(h, map, o, L, st);
-    st->sec_search = omp_get_wtime() - t - st->sec_cluster;
-    st->cpu_search = pm_cpu_now() - c0 - st->cpu_cluster;
-    if (rc) snprintf(err, errlen, "out of memory in the photon-map search");
-    return rc;
+    pm_searches_t s = {0};
+    const int rc = search(&s, h, map, o, L, st);
+    pm_search_release(&s);
+    if (rc == -3)
+        snprintf(err, errlen, "--knn-bench: the searches' radiance differs (clustered %016llx, naive %016llx, kdtree %016llx)",
+                 (unsigned long long)st->bench[0].state_hash, (unsigned long long)st->bench[1].state_hash,
+                 (unsigned long long)st->bench[2].state_hash);
+    else if (rc == -2)
+        snprintf(err, errlen, "--knn-kernel %s: this processor does not have it", knn_kernel_name((knn_kernel_id_t)st->kernel));
+    else if (rc)
+        snprintf(err, errlen, "out of memory in the photon-map search");
+    return rc ? -1 : 0;
 }

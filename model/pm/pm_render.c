@@ -72,8 +72,11 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
     if (rc >= 0) {
         pm_estimate_opts_t eo = {opt->knn_k > 0 ? (size_t)opt->knn_k : 50, opt->max_radius > 0 ? opt->max_radius : st->r0,
                                  opt->knn_search, opt->cluster_bundle > 0 ? (size_t)opt->cluster_bundle : 2000,
-                                 st->threads};
-        phase(opt, eo.search == KNN_NAIVE ? "search (naive: nanoflann)" : "search (clustered)");
+                                 st->threads, opt->knn_kernel, opt->knn_bench,
+                                 opt->knn_bench_oracle < 0 ? 0 : opt->knn_bench_oracle ? opt->knn_bench_oracle : -1};
+        static const char *const what[] = {"search (clustered)", "search (naive: nanoflann, the oracle)",
+                                           "search (kdtree: single pass)"};
+        phase(opt, what[eo.search]);
         t = omp_get_wtime();
         if (pm_estimate(&res->hp, &map, &eo, L, &st->pm, err, errlen)) rc = -1;
         st->sec_update = omp_get_wtime() - t;

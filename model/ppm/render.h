@@ -24,7 +24,7 @@
 
 typedef enum { SCAN_BUCKET = 0, SCAN_PHOTON = 1 } update_scan_t;
 typedef enum { ESTIMATOR_PPM = 0, ESTIMATOR_PM = 1 } estimator_t;
-typedef enum { KNN_CLUSTERED = 0, KNN_NAIVE = 1 } knn_search_t;
+typedef enum { KNN_CLUSTERED = 0, KNN_NAIVE = 1, KNN_KDTREE = 2 } knn_search_t;
 /* Where the PREE holds the hit points, which sets its radiance pass's order (docs/pree_top.md,
  * "Hit-point layout"): address a holds the a-th hit point of the spatial order of one part
  * (render_hp_address of a photon pass on one thread) or of the eye pass's order. */
@@ -80,7 +80,10 @@ typedef struct {
     estimator_t estimator;   /* ESTIMATOR_PPM (default) or ESTIMATOR_PM */
     int knn_k;               /* 0: 50 */
     double max_radius;       /* 0: the PPM initial radius */
-    knn_search_t knn_search; /* KNN_CLUSTERED (default) or KNN_NAIVE (the oracle) */
+    knn_search_t knn_search; /* KNN_CLUSTERED (default), KNN_KDTREE (single pass) or KNN_NAIVE (the oracle) */
+    int knn_kernel;          /* the clustered search's prefilter path (knn_kernel_id_t; 0: the widest) */
+    int knn_bench;           /* > 0: run every search this many times, interleaved, on the same trees */
+    int knn_bench_oracle;    /* ... the oracle only this many (0: as many; -1: none) */
     int cluster_bundle;      /* 0: 2000 shading points a bundle */
     int task_photons;        /* photons per tracing task unit (0: 1000) */
     int task_static;         /* 1: static shares instead of the shared task queue */

@@ -1,5 +1,7 @@
 /* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
+#include <stdio.h>
 #include "json_file.h"
+#include "knn_kernel.h"
 #include "stats_json.h"
 
 #define S(member, kind) JSON_FIELD(render_stats_t, member, kind)
@@ -33,10 +35,45 @@ static const json_field_t seconds[] = {
 #define P(member, kind) JSON_FIELD_AS(render_stats_t, pm.member, kind, #member)
 static const json_field_t pm_fields[] = {
     P(photons_stored, JF_U64), P(k, JF_U64), P(max_radius, JF_REAL), P(clusters, JF_U64),
-    P(clusters_sparse, JF_U64), P(clusters_widened, JF_U64), P(scope_photons, JF_U64), P(distance_tests, JF_U64), P(neighbours, JF_U64),
-    P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_cluster, JF_REAL),
-    P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL),
+    P(clusters_sparse, JF_U64), P(widened, JF_U64), P(fallback, JF_U64), P(scope_photons, JF_U64), P(kernel_tests, JF_U64),
+    P(distance_tests, JF_U64), P(selection, JF_U64), P(neighbours, JF_U64),
+    P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_tree, JF_REAL),
+    P(sec_cluster, JF_REAL), P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_tree, JF_REAL),
+    P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL), P(cpu_estimate, JF_REAL), P(cpu_query, JF_REAL),
+    P(sec_query, JF_REAL),
 };
+
+/* --knn-bench: each method's tree build, query seconds of every repetition, work and hash. */
+static json_t *pm_bench_json(const pm_stats_t *st)
+{
+    static const char *const names[] = {"clustered", "naive", "kdtree"};
+    json_t *o = json_object();
+    json_set_u64(o, "reps", (uint64_t)st->bench_reps);
+    for (int m = 0; m < 3; m++) {
+        const pm_method_stats_t *b = &st->bench[m];
+        if (!b->runs) continue;
+        json_t *j = json_object(), *sec = json_array(), *cpu = json_array();
+        char hash[17];
+        for (int r = 0; r < b->runs; r++) {
+            json_array_append_new(sec, json_real(b->sec[r]));
+            json_array_append_new(cpu, json_real(b->cpu[r]));
+        }
+        json_set_real(j, "sec_tree", b->sec_tree);
+        json_set_real(j, "cpu_tree", b->cpu_tree);
+        json_object_set_new(j, "sec_query", sec);
+        json_object_set_new(j, "cpu_query", cpu);
+        json_set_u64(j, "distance_tests", b->distance_tests);
+        json_set_u64(j, "kernel_tests", b->kernel_tests);
+        json_set_u64(j, "selection", b->selection);
+        json_set_u64(j, "clusters_sparse", b->clusters_sparse);
+        json_set_u64(j, "widened", b->widened);
+        json_set_u64(j, "fallback", b->fallback);
+        snprintf(hash, sizeof hash, "%016llx", (unsigned long long)b->state_hash);
+        json_set_str(j, "state_hash", hash);
+        json_object_set_new(o, names[m], j);
+    }
+    return o;
+}
 
 const char *stats_grid_name(grid_kind_t g)
 {
@@ -75,7 +112,16 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_object_set_new(o, "seconds", json_fields(st, seconds, N(seconds)));
     if (opt->estimator == ESTIMATOR_PM) {
         json_t *pm = json_fields(st, pm_fields, N(pm_fields));
-        json_set_str(pm, "knn_search", opt->knn_search == KNN_NAIVE ? "naive" : "clustered");
+        static const char *const searches[] = {"clustered", "naive", "kdtree"};
+        json_set_str(pm, "knn_search", searches[opt->knn_search]);
+        if (opt->knn_search == KNN_CLUSTERED || st->pm.bench_reps) {
+            json_t *calls = json_object();
+            for (int i = KNN_KERNEL_SCALAR; i <= KNN_KERNEL_AVX512; i++)
+                json_set_u64(calls, knn_kernel_name((knn_kernel_id_t)i), st->pm.kernel_calls[i]);
+            json_set_str(pm, "kernel", knn_kernel_name(st->pm.kernel));
+            json_object_set_new(pm, "kernel_calls", calls);
+        }
+        if (st->pm.bench_reps) json_object_set_new(pm, "bench", pm_bench_json(&st->pm));
         json_object_set_new(o, "pm", pm);
     }
     json_set_str(o, "estimator", opt->estimator == ESTIMATOR_PM ? "pm" : "ppm");
