@@ -56,7 +56,11 @@ rtl=0
 if "$pree" cosim --help >/dev/null 2>&1; then
   echo "== RTL co-simulation: the Verilated PREE (4 PREUs) does every hit-point update and the radiance pass"
   echo "   (a few minutes: about 10.5 million operations through the RTL)"
-  "$pree" cosim "$scene" "${size[@]}" --out "$out/$name-rtl.png" --stats "$out/$name-rtl.json"
+  # The double render's own size and photons (a pbrt file's Film and sppm settings included).
+  read -r w h n <<<"$(python3 -c 'import json, sys; d = json.load(open(sys.argv[1]))
+print(d["width"], d["height"], d["photons_emitted"])' "$out/$name-double.json")"
+  "$pree" cosim "$scene" "${size[@]}" --width "$w" --height "$h" --photons "$n" --out "$out/$name-rtl.png" \
+      --stats "$out/$name-rtl.json"
   echo "== RTL against double (8-bit PNG)"
   compare_to_double rtl png
   rtl=1
