@@ -22,7 +22,7 @@ extern "C" {
 #define PREE_AXI_REGS__VERSION__MAJOR_bm 0xff0000
 #define PREE_AXI_REGS__VERSION__MAJOR_bp 16
 #define PREE_AXI_REGS__VERSION__MAJOR_bw 8
-#define PREE_AXI_REGS__VERSION__MAJOR_reset 0x1
+#define PREE_AXI_REGS__VERSION__MAJOR_reset 0x2
 
 // reg - pree_axi_regs.CONFIG0
 #define PREE_AXI_REGS__CONFIG0__NUM_PREU_bm 0xff

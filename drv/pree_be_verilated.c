@@ -22,7 +22,7 @@ typedef struct {
 typedef struct {
     cosim_rtl_t *rtl;
     cosim_axi_in_t *in;
-    int preu, state_words;
+    int preu, state_words, ppc;   /* ppc: photon slots a beat */
     double gap;
     uint64_t rng, cycles;
     wqueue_t q[3];            /* PREE_STREAM_HP, _PH, _CAND */
@@ -103,10 +103,12 @@ static void offer(vl_t *v)
     cosim_axi_in_t *in = v->in;
     wqueue_t *q = &v->q[PREE_STREAM_PH];
     if (!in->ph_valid && avail(q) && !gap(v)) {
-        const uint32_t *w = q->w + q->head;
-        memcpy(in->ph.pos, w, sizeof in->ph.pos);
-        memcpy(in->ph.phi, w + 3, sizeof in->ph.phi);
-        in->ph_n = w[6];
+        for (int s = 0; s < v->ppc; s++) {
+            const uint32_t *w = q->w + q->head + (size_t)s * PREE_PH_SLOT_WORDS;
+            memcpy(in->ph[s].pos, w, sizeof in->ph[s].pos);
+            memcpy(in->ph[s].phi, w + 3, sizeof in->ph[s].phi);
+            in->ph_n[s] = w[6];
+        }
         in->ph_last = v->last_head < v->nlast && v->ph_last[v->last_head] == v->ph_beats;
         in->ph_valid = 1;
     }
@@ -148,7 +150,7 @@ static const cosim_axi_out_t *cycle(vl_t *v)
     v->cycles++;
     if (o->fired & AXI_PH) {
         in->ph_valid = 0;
-        v->q[PREE_STREAM_PH].head += PREE_PH_SLOT_WORDS;
+        v->q[PREE_STREAM_PH].head += (size_t)v->ppc * PREE_PH_SLOT_WORDS;
         if (in->ph_last) v->last_head++;
         v->ph_beats++;
     }
@@ -201,7 +203,7 @@ static int submit(void *ctx, int stream, const uint32_t *words, size_t n, unsign
     vl_t *v = ctx;
     if (v->broken) return -1;
     const unsigned want = stream == PREE_STREAM_HP ? (unsigned)v->state_words + 7
-                        : stream == PREE_STREAM_PH ? PREE_PH_SLOT_WORDS : (unsigned)v->preu;
+                        : stream == PREE_STREAM_PH ? (unsigned)v->ppc * PREE_PH_SLOT_WORDS : (unsigned)v->preu;
     if (stream < 0 || stream > 2 || beat_words != want || (stream != PREE_STREAM_CAND && n % want)) {
         snprintf(v->err, sizeof v->err, "stream %d: beats of %u words, this pree_axi takes %u", stream, beat_words, want);
         return -1;
@@ -273,6 +275,7 @@ int pree_be_verilated_open(pree_backend_t *be, int preu, int datapath, double ga
     v->in = cosim_axi_in(v->rtl);
     v->preu = preu;
     v->state_words = datapath ? 10 : 5;
+    v->ppc = cosim_rtl_ppc(v->rtl);
     v->gap = gap_p;
     v->rng = seed * 2862933555777941757ull + 3037000493ull;
     *be = (pree_backend_t){.ctx = v, .reg_read = reg_read, .reg_write = reg_write, .submit = submit,

@@ -125,8 +125,8 @@ int pree_open(pree_drv_t **out, const pree_backend_t *be)
     *out = d;
     uint32_t v, c0, c1;
     int rc = rd(d, OFF(VERSION), &v);
-    if (!rc && GET(v, VERSION, MAJOR) != 1)
-        rc = fail(d, PREE_E_VERSION, "VERSION 0x%08x: not a pree_axi of major version 1", v);
+    if (!rc && GET(v, VERSION, MAJOR) != 2)
+        rc = fail(d, PREE_E_VERSION, "VERSION 0x%08x: not a pree_axi of major version 2 (256-bit photon slots)", v);
     if (!rc) rc = rd(d, OFF(CONFIG0), &c0);
     if (!rc) rc = rd(d, OFF(CONFIG1), &c1);
     if (rc) return rc;
@@ -209,7 +209,7 @@ size_t pree_pack_photons(const pree_config_t *cfg, const pree_photon_t *ph, size
 {
     const size_t slots = cfg->photons_per_cycle, beat = slots * PREE_PH_SLOT_WORDS;
     const size_t beats = (n + slots - 1) / slots;
-    memset(words, 0, beats * beat * sizeof *words);   /* empty slots: N^P = 0 */
+    memset(words, 0, beats * beat * sizeof *words);   /* empty slots: N^P = 0; reserved words 0 */
     for (size_t i = 0; i < n; i++) {
         uint32_t *w = words + (i / slots) * beat + (i % slots) * PREE_PH_SLOT_WORDS;
         memcpy(w, ph[i].pos, sizeof ph[i].pos);

@@ -7,7 +7,7 @@
  * through Xilinx AXI DMA engines).
  *
  * Sequence (the driver checks STATUS.IDLE before every command and ERR after every wait):
- *   pree_open(&d, &be)                     VERSION 1.x, CONFIG0/1 read into pree_config()
+ *   pree_open(&d, &be)                     VERSION 2.x, CONFIG0/1 read into pree_config()
  *   pree_set_constants(d, &c)              NE, ALPHA, KAPPA, N_HIT (binary32 bits; N_HIT a count)
  *   pree_load_hit_points(d, 0, hp, n)      s_axis_hp from HP_PTR = first
  *   pree_counters_enable(d, 1)
@@ -30,7 +30,7 @@ enum {
     PREE_OK = 0,
     PREE_E_ARG = -1,       /* a bad argument (size, count, a photon with too many candidates) */
     PREE_E_IO = -2,        /* the back end failed (its message is in pree_error) */
-    PREE_E_VERSION = -3,   /* VERSION is not 1.x: not a pree_axi, or an incompatible one */
+    PREE_E_VERSION = -3,   /* VERSION is not 2.x: not a pree_axi, or an incompatible one */
     PREE_E_BUSY = -4,      /* a command or a constant while STATUS.IDLE is 0 */
     PREE_E_HW = -5,        /* the ERR register is set (CMD_REFUSED, PH_TOO_BIG) */
     PREE_E_TIMEOUT = -6,   /* no interrupt in time */
@@ -138,7 +138,7 @@ int pree_check_err(pree_drv_t *d);
 
 /* The photon stream's beat layout (one place): photons packed into beats of
  * photons_per_cycle slots at the slot pitch; an unused slot is empty (N^P = 0). */
-#define PREE_PH_SLOT_WORDS 7   /* 224-bit slots: pos x y z, phi r g b, N^P */
+#define PREE_PH_SLOT_WORDS 8   /* 256-bit slots: pos x y z, phi r g b, N^P, reserved (0) */
 size_t pree_pack_photons(const pree_config_t *cfg, const pree_photon_t *ph, size_t n, uint32_t *words);
 
 #ifdef __cplusplus

@@ -2,7 +2,9 @@
  * docs/integration.md): the cosim_drv.h API on a Verilated pree_axi (cosim_axi_rtl.h), linked
  * into build/pree-cosim-axi-<d><n> in place of cosim_drv.c.
  *
- * Hit points go in on s_axis_hp, photons on s_axis_ph and their candidates, concatenated, on
+ * Hit points go in on s_axis_hp, photons on s_axis_ph (PhotonsPerCycle slots a beat: with the
+ * scheduler, one group of its model's photons a beat, the group it took in one cycle; without it,
+ * consecutive photons) and their candidates, concatenated, on
  * s_axis_cand; results come back on m_axis after a command (CMD register). With a gap
  * probability P (--gap), every stream is throttled at random: a beat is offered in a cycle with
  * probability 1 - P (and, once offered, held until taken, as AXI4-Stream requires), m_axis and
@@ -27,13 +29,15 @@ enum { R_VERSION = 0x000, R_CONFIG0 = 0x004, R_STATUS = 0x018, R_CTRL = 0x010, R
 enum { CMD_RAD = 1, CMD_HP_READ = 2, CMD_PX_CLEAR = 3, CMD_PX_READ = 4 };
 enum { IRQ_BATCH = 1, IRQ_CMD = 2 };
 
-#define PQ_CAP     256u               /* queued photons (power of two) */
+#define PQ_CAP     1024u              /* queued photons (power of two) */
 #define CQ_CAP     (1u << 16)         /* queued candidates (power of two) */
 #define MAX_CAND   2048u              /* candidates of one photon (the wrapper: 4096 - NumPreu) */
 #define HP_BLOCK   256u               /* hit points read back per command */
 #define WAIT_LIMIT 10000000u
 
-typedef struct { preu_photon_t ph; uint32_t n; int last; } photon_entry_t;
+/* A queued photon; first: it starts a scheduler group (the photons the model took in one cycle,
+ * which go in one beat). */
+typedef struct { preu_photon_t ph; uint32_t n; int last, first; } photon_entry_t;
 
 struct cosim_drv {
     cosim_rtl_t *rtl;
@@ -46,6 +50,10 @@ struct cosim_drv {
     uint32_t cq[CQ_CAP];
     uint64_t cq_head, cq_tail;
     uint32_t cand_take;                /* candidates in the beat on offer */
+    int ppc;                           /* photon slots a beat (the wrapper's PhotonsPerCycle) */
+    int ph_take;                       /* photons in the beat on offer */
+    int flowing;                       /* a photon beat offered since the stream (re)started */
+    uint64_t lead_from;                /* cq_head then: the candidates' lead counts from it */
     uint32_t alpha, kappa;
     int started, hung;
     /* m_axis receiver: expected beats of the running read command. */
@@ -115,22 +123,60 @@ static void offer_cand(cosim_drv_t *d)
     d->cand_take = k;
 }
 
+/* Photons for the next beat: up to PhotonsPerCycle queued ones, a batch's last one ending it;
+ * scheduled, exactly the next group, once it is complete (the next group has begun, or the
+ * batch ends). 0: none yet. */
+static int beat_count(const cosim_drv_t *d)
+{
+    const uint64_t avail = d->pq_tail - d->pq_head;
+    int k = 0;
+    while (k < d->ppc && (uint64_t)k < avail) {
+        const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)k) & (PQ_CAP - 1)];
+        if (d->sched && k > 0 && p->first) return k;
+        k++;
+        if (p->last) return k;
+    }
+    if (d->sched && k < d->ppc && (uint64_t)k == avail) return 0;   /* more of the group may follow */
+    return k;
+}
+
+/* Offer the next photon beat: its slots in photon order, the rest empty (N^P = 0); tlast with
+ * the batch's last photon. Held until taken. A scheduled stream starts once the candidate
+ * stream has a lead (COSIM_LEAD_ENTRIES, or every queued candidate taken): the candidates then
+ * stay ahead of the photons that need them (both move at the PREUs' rate), so each beat enters
+ * the engine whole, in the cycle the scheduler's model took its group. */
+static void offer_ph(cosim_drv_t *d)
+{
+    cosim_axi_in_t *in = d->in;
+    if (in->ph_valid || gap(d)) return;
+    if (d->sched && !d->flowing && d->cq_head != d->cq_tail &&
+        d->cq_head - d->lead_from < COSIM_LEAD_ENTRIES(d->opt.preu))
+        return;
+    const int k = beat_count(d);
+    if (k == 0) return;
+    memset(in->ph, 0, sizeof in->ph);
+    memset(in->ph_n, 0, sizeof in->ph_n);
+    for (int s = 0; s < k; s++) {
+        const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)s) & (PQ_CAP - 1)];
+        in->ph[s] = p->ph;
+        in->ph_n[s] = p->n;
+        in->ph_last = p->last;
+    }
+    in->ph_valid = 1;
+    d->ph_take = k;
+    d->flowing = 1;
+}
+
 /* One clock cycle: offers on the input streams, readiness on the outputs, the edge, and the
  * bookkeeping of whatever moved. */
 static const cosim_axi_out_t *cycle(cosim_drv_t *d)
 {
     cosim_axi_in_t *in = d->in;
-    if (!in->ph_valid && d->pq_head != d->pq_tail && !gap(d)) {
-        const photon_entry_t *p = &d->pq[d->pq_head & (PQ_CAP - 1)];
-        in->ph = p->ph;
-        in->ph_n = p->n;
-        in->ph_last = p->last;
-        in->ph_valid = 1;
-    }
+    offer_ph(d);
     offer_cand(d);
     in->m_ready = !gap(d);
     const cosim_axi_out_t *o = cosim_axi_tick(d->rtl);
-    if (o->fired & AXI_PH) { in->ph_valid = 0; d->pq_head++; }
+    if (o->fired & AXI_PH) { in->ph_valid = 0; d->pq_head += (uint64_t)d->ph_take; }
     if (o->fired & AXI_CAND) { in->cand_valid = 0; d->cq_head += d->cand_take; }
     if (o->fired & AXI_M) receive(d, o);
     d->irq = o->irq;
@@ -212,17 +258,18 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
     d->in = cosim_axi_in(rtl);
     d->opt = *opt;
     d->rng = opt->seed * 2862933555777941757ull + 3037000493ull;
+    d->ppc = cosim_rtl_ppc(rtl);
     if (opt->schedule) {
         cosim_sched_opts_t so = {.preu = opt->preu, .hp_bank_w = opt->hp_bank_w,
                                  .win = cosim_rtl_update_window(rtl),
                                  .reg_flow = cosim_rtl_reg_flow(rtl),
-                                 .reorder = opt->reorder, .window = opt->window};
+                                 .reorder = opt->reorder, .window = opt->window, .ppc = d->ppc};
         d->sched = cosim_sched_new(&so, emit, d);
         if (!d->sched) { free(d); return NULL; }
     }
-    /* The build: version 1.x, the PREU count and datapath asked for (CONFIG0). */
+    /* The build: version 2.x, the PREU count and datapath asked for (CONFIG0). */
     const uint32_t ver = lite_read(d, R_VERSION), c0 = lite_read(d, R_CONFIG0);
-    if (ver >> 16 != 1 || (c0 & 0xff) != (uint32_t)opt->preu || (c0 >> 31) != (uint32_t)(opt->datapath != 0))
+    if (ver >> 16 != 2 || (c0 & 0xff) != (uint32_t)opt->preu || (c0 >> 31) != (uint32_t)(opt->datapath != 0))
         fail(d, "pree_axi: VERSION or CONFIG0 does not match the build");
     d->alpha = cosim_rtl_in(rtl)->alpha;
     d->kappa = cosim_rtl_in(rtl)->kappa;
@@ -273,7 +320,7 @@ void cosim_drv_load_hp(cosim_drv_t *d, const preu_hpw_t *hp, const int32_t *pixe
 }
 
 /* Queue one photon and its candidates (in stream order); clock while the queues are long. */
-static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int last)
+static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int last, int first)
 {
     uint64_t guard = 0;
     while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->cq_tail - d->cq_head + n > CQ_CAP) && !d->hung) {
@@ -285,10 +332,11 @@ static void send(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, u
     pe->ph = *ph;
     pe->n = n;
     pe->last = last;
+    pe->first = first;
     for (uint32_t k = 0; k < n; k++) d->cq[d->cq_tail++ & (CQ_CAP - 1)] = hps[k];
     d->ops += n;
     d->cand_sent += n;
-    d->ph_sent++;
+    d->ph_sent += n > 0;   /* PH_IN counts photons, not empty slots */
 }
 
 static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32_t n, int first, uint64_t cycle,
@@ -296,8 +344,7 @@ static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32
 {
     (void)cycle;   /* the wrapper's latency is not the top's: no lag is tracked */
     cosim_drv_t *d = user;
-    (void)first;   /* one photon a cycle through the wrapper: every group is one photon */
-    send(d, ph, hps, n, 0);
+    send(d, ph, hps, n, 0, first);   /* a group goes in one beat */
     *p = (uint32_t)(-(int64_t)d->cand_sent) & ((1u << COSIM_IDXAW) - 1);   /* pree_axi's p_k */
     return d->hung ? -1 : 0;
 }
@@ -306,7 +353,7 @@ int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hp
 {
     const int r = cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, d->err, sizeof d->err);
     if (r < 0) return -1;
-    if (r == 1) send(d, ph, hps, (uint32_t)n, 0);
+    if (r == 1) send(d, ph, hps, (uint32_t)n, 0, 1);
     return d->hung ? -1 : 0;
 }
 
@@ -317,17 +364,19 @@ int cosim_drv_sched_stats(const cosim_drv_t *d, cosim_sched_stats_t *st)
     return 0;
 }
 
-/* Everything queued, then a photon with N^P = 0 and TLAST (dropped by the wrapper) closes the
- * batch: its interrupt comes once every photon is applied. */
+/* Everything queued, then a beat of empty slots (N^P = 0, dropped by the wrapper) with TLAST
+ * closes the batch: its interrupt comes once every photon is applied. */
 int cosim_drv_barrier(cosim_drv_t *d)
 {
     if (d->hung) return -1;
     if (d->sched && cosim_sched_flush(d->sched)) return fail(d, "photon scheduler: out of memory");
     preu_photon_t none = {0};
-    send(d, &none, NULL, 0, 1);
+    send(d, &none, NULL, 0, 1, 1);
     if (wait_irq(d, IRQ_BATCH)) return -1;
     lite_write(d, R_CTRL, 0);
     d->started = 0;   /* the next photon starts the counters again */
+    d->flowing = 0;   /* and the next photons wait for the candidates' lead */
+    d->lead_from = d->cq_head;
     d->blk_n = 0;     /* hit points read back before are stale */
     if (!(lite_read(d, R_STATUS) & 1)) return fail(d, "batch interrupt before STATUS.idle");
     return 0;

@@ -1,5 +1,5 @@
 // cosim_axi_rtl.cpp: the Verilated pree_axi behind cosim_axi_rtl.h (one model per program: the
-// make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_PF, AXI_HPB). C++ only because Verilator's
+// make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_PF, AXI_HPB, AXI_PPC). C++ only because Verilator's
 // models are C++ classes. Every field of the wrapper's streams sits on a 32-bit boundary, so the
 // wide ports are filled and read a word at a time. Clocked by the benches' harness
 // (tb/lib/vharness.h) with the wrapper's aclk and aresetn.
@@ -51,11 +51,14 @@ struct cosim_rtl {
         t.s_axil_araddr = a.araddr;
         t.s_axil_arvalid = a.arvalid;
         t.s_axil_rready = a.rready;
-        for (int c = 0; c < 3; c++) {
-            t.s_axis_ph_tdata[c] = a.ph.pos[c];
-            t.s_axis_ph_tdata[3 + c] = a.ph.phi[c];
+        for (int s = 0; s < AXI_PPC; s++) {   // 256-bit slots: pos, phi, N^P, a reserved 0
+            for (int c = 0; c < 3; c++) {
+                t.s_axis_ph_tdata[8 * s + c] = a.ph[s].pos[c];
+                t.s_axis_ph_tdata[8 * s + 3 + c] = a.ph[s].phi[c];
+            }
+            t.s_axis_ph_tdata[8 * s + 6] = a.ph_n[s];
+            t.s_axis_ph_tdata[8 * s + 7] = 0;
         }
-        t.s_axis_ph_tdata[6] = a.ph_n;
         t.s_axis_ph_tlast = a.ph_last;
         t.s_axis_ph_tvalid = a.ph_valid;
         uint64_t keep = 0;
@@ -136,9 +139,9 @@ int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
 int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_PF ? (AXI_DP ? 53 : 49) : (AXI_DP ? 13 : 11); }
 // ... and PipeFast 1's registered flow (A's offer register, B's queue) with PipeFast 1.
 int cosim_rtl_reg_flow(cosim_rtl_t *) { return AXI_PF ? 1 : 0; }
-// The wrapper drives pree_top's photon port one photon a cycle (PhotonsPerCycle 1); --model-only
-// is for the pree_top programs.
-int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
+// The wrapper's PhotonsPerCycle (photon slots a beat, passed to its pree_top); --model-only is
+// for the pree_top programs.
+int cosim_rtl_ppc(cosim_rtl_t *) { return AXI_PPC; }
 int cosim_rtl_radiance_depth(cosim_rtl_t *) { return AXI_PF ? 64 : 12; }   // RAD_LAT
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }

@@ -5,7 +5,9 @@
  * of cosim_in_t only alpha and kappa are read (by the AXI driver, host/cosim_axi.c).
  *
  * API
- *   cosim_axi_in(r)    the AXI inputs applied at the next tick (they hold until changed)
+ *   cosim_axi_in(r)    the AXI inputs applied at the next tick (they hold until changed); the
+ *                      photon beat's slots beyond the model's PhotonsPerCycle (cosim_rtl_ppc)
+ *                      are not read
  *   cosim_axi_tick(r)  apply the inputs, settle with the clock low, note every handshake
  *                      (valid and ready both high) and the data it carried, then one rising edge;
  *                      returns the notes of that edge */
@@ -27,9 +29,9 @@ enum { AXI_AW = 1, AXI_W = 2, AXI_B = 4, AXI_AR = 8, AXI_R = 16, AXI_PH = 32, AX
 typedef struct {
     int awvalid, wvalid, bready, arvalid, rready;     /* AXI4-Lite */
     uint32_t awaddr, wdata, araddr;
-    int ph_valid, ph_last;                            /* s_axis_ph */
-    preu_photon_t ph;
-    uint32_t ph_n;
+    int ph_valid, ph_last;                            /* s_axis_ph: slot s, N^P 0 empty */
+    preu_photon_t ph[COSIM_MAX_PPC];
+    uint32_t ph_n[COSIM_MAX_PPC];
     int cand_valid;                                   /* s_axis_cand: lane j when keep bit j */
     uint32_t cand_keep, cand[COSIM_MAX_PREU];
     int hp_valid;                                     /* s_axis_hp */

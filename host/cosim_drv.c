@@ -11,10 +11,6 @@
 #define IDX_DEPTH (1u << COSIM_IDXAW)
 #define IQ_CAP    (2u * IDX_DEPTH)     /* queued index writes (power of two) */
 #define PQ_CAP    1024u                /* queued photons (power of two) */
-/* The load port's lead, in index entries: the first photon waits until this many (or every
- * queued one) are written, and the host keeps this many unwritten queued (docs/pree_top.md,
- * "Host protocol": what AFTSO-HpUOC buffers comes out of the lead). */
-#define LEAD_ENTRIES(np) (64u * (uint32_t)(np))
 #define AQ_CAP    (2u * IDX_DEPTH)     /* allocated, unretired photons (power of two) */
 #define MAX_CAND  (IDX_DEPTH / 2)      /* candidates of one photon */
 
@@ -196,12 +192,12 @@ static void pump(cosim_drv_t *d)
     int k = 0;
     if (d->pq_head != d->pq_tail) {
         int gap = d->opt.gap > 0 && (double)next_rand(d) / 2147483648.0 < d->opt.gap;
-        /* Scheduled stream: the first photon waits until LEAD_ENTRIES are written (or every
+        /* Scheduled stream: the first photon waits until COSIM_LEAD_ENTRIES are written (or every
          * queued one), so that the load port (NumPreu entries a cycle, the RTL's rate at full
          * utilization) starts with a lead and the RTL then takes each group in the cycle the
          * scheduler's model took it (a constant offset). */
         int lead = !d->sched || d->started || d->iq_head == d->iq_tail ||
-                   d->iq_head - d->lead_from >= LEAD_ENTRIES(np);
+                   d->iq_head - d->lead_from >= COSIM_LEAD_ENTRIES(np);
         k = lead && !gap ? offer_count(d) : 0;
         for (int j = 0; j < d->ppc; j++) {
             const photon_entry_t *p = &d->pq[(d->pq_head + (uint64_t)j) & (PQ_CAP - 1)];
@@ -283,7 +279,7 @@ static uint64_t send(cosim_drv_t *d, const preu_photon_t *ph, size_t n, int firs
     d->ops += n;
     d->in->cnt_en = 1;
     guard = 0;
-    while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= LEAD_ENTRIES(np)) &&
+    while ((d->pq_tail - d->pq_head >= PQ_CAP / 2 || d->iq_tail - d->iq_head >= COSIM_LEAD_ENTRIES(np)) &&
            !stuck(d, &guard, "waiting for the PREE to take queued photons"))
         pump(d);
     return p;

@@ -10,8 +10,9 @@
 #   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
 #                      pree_axi (d: p paper, s stable; n PREUs; f: PipeFast 1), built only when
 #                      asked (the regression builds axi-p4: tests/checks/axi_cosim.sh)
-#   make sim-axi-wide  the wrapper with 8 PREUs against the model (tb/axi/axi_cosim_wide.sh; its
-#                      model takes about 15 minutes to build, so it is outside `make test`)
+#   make sim-axi-wide  the wrapper with 8 PREUs (two photons a beat) against the model
+#                      (tb/axi/axi_cosim_wide.sh; its model takes about 15 minutes to build, so it
+#                      is outside `make test`)
 #   make sim-axi-full  the whole-frame rows through the wrapper beside pree_top alone
 #                      (tb/axi/axi_cosim_full.sh): AXI_FULL_TAGS (default p4 p8 p16 p4f p8f p16f
 #                      s4 s4f), AXI_FULL_OPTS (default the whole frame, cornell3 320x240 / 768k
@@ -21,7 +22,11 @@
 
 AXI_DIR    := $(BUILD)/axi
 AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
-AXI_MDIR    = $(AXI_DIR)/vl_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))
+AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
+# The quick builds (flavour q): the same models compiled with g++ -O0, for short co-simulations
+# in `make test` (the C++ of a model compiles many times faster; the RTL's cycles are the same,
+# the simulation slower). axi_prog FLAVOUR TAG: the program's path.
+axi_prog    = $(if $(1),$(AXI_DIR)/quick,$(BUILD))/pree-cosim-axi-$(2)
 SYNTH_AXI_PREUS ?= 4
 
 TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
@@ -35,27 +40,30 @@ sim-axi-full: $(BUILD)/pree $(foreach t,$(AXI_FULL_TAGS),$(BUILD)/pree-cosim-axi
 	@AXI_FULL_OPTS="$(AXI_FULL_OPTS)" bash tb/axi/axi_cosim_full.sh $(AXI_DIR)/full $(AXI_FULL_TAGS)
 
 # The wrapper's models take the co-simulation's pree_top parameters (PipeFast included: d = pf,
-# sf) but one photon a beat (PhotonsPerCycle 1: the wide intake is pree_top's port, not yet the
-# wrapper's). $(1): PREU count, $(2): p, s, pf or sf; the tag (p4, s8f, ...) names the model
-# directory, its class and its program (build/pree-cosim-axi-p4f: `pree cosim --axi --pipe-fast`).
+# sf; PhotonsPerCycle NumPreu / 4, photon slots a beat). $(1): PREU count, $(2): p, s, pf or sf,
+# $(3): the flavour (empty, or q: g++ -O0); the tag (p4, s8f, ...) names the model directory,
+# its class and its program (build/pree-cosim-axi-p4f: `pree cosim --axi --pipe-fast`;
+# build/axi/quick/pree-cosim-axi-p8 the quick build).
 define AXI_VL_RULE
-$(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(filter-out -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,$(1),$(2))) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "$(if $(3),OPT_FAST=-O0 OPT_SLOW=-O0,OPT_FAST=-O2 OPT_SLOW=-O1)" \
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
-$(HOST_DIR)/cosim_axi_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a
+$(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
+	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2),$(3)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
 	  -DAXI_MODEL_H='"Vpree_axi_$(call cosim_tag,$(1),$(2)).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(findstring s,$(2)),1,0) \
-	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -c $$< -o $$@
-$(BUILD)/pree-cosim-axi-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
-                          $(HOST_DIR)/cosim_axi_rtl_$(call cosim_tag,$(1),$(2)).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
-                          $(call AXI_MDIR,$(1),$(2))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
+	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -DAXI_PPC=$(COSIM_PPC_$(1)) -c $$< -o $$@
+$(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
+                          $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
+                          $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
+	@mkdir -p $$(@D)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d)))))
+$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),))))
+$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),q))))
 
 $(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)

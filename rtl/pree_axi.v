@@ -2,8 +2,12 @@
 // map, stream formats, timing diagrams, a worked host sequence).
 //
 //   s_axil_*      AXI4-Lite slave (pree_axil_slave): control, status, constants, counters.
-//   s_axis_ph_*   photons, one a beat: {N^P (32-bit slot), phi b g r, pos z y x}. TLAST marks the
-//                 last photon of a batch (interrupt "batch done" once all of it is applied).
+//   s_axis_ph_*   photons, PhotonsPerCycle 256-bit slots a beat, slot s in tdata[256s +: 256]:
+//                 {reserved (32 bits, write 0), N^P (32-bit slot), phi b g r, pos z y x}; slot 0
+//                 holds the oldest photon, a slot with N^P = 0 is empty (dropped) and may sit
+//                 anywhere. TLAST: the beat's last photon (its last non-empty slot) ends a batch
+//                 (interrupt "batch done" once all of it is applied); a beat of empty slots with
+//                 TLAST ends the batch at the photons before it.
 //   s_axis_cand_* the photons' candidate hit-point addresses, concatenated in photon order, up to
 //                 NumPreu a beat (lane j = tdata[32j +: 32], present when tkeep[4j +: 4] is all
 //                 ones; photon boundaries need not align with beats).
@@ -25,27 +29,30 @@
 // s = S_k .. S_k + N_k - 1, has p_k = -(S_k + N_k) and AFTSO-HpUOC reads its entries in stream
 // order; any NumPreu consecutive candidates lie in distinct index banks (no stage-A conflict and
 // a conflict-free load port). A photon is offered to pree_top once all its candidates are written
-// (registered count), and an entry is overwritten only after pree_top has counted its photon
-// done (photons_done_o; a ring of the in-flight photons' candidate ends; the candidates retired
+// (registered count): the head beat's photons go, in slot order, in the cycles their candidates
+// are written (those not yet given as empty slots), so a beat whose photons' candidates together
+// exceed the table never waits for itself. An entry is overwritten only after pree_top has
+// counted its photon done (photons_done_o; a ring of the in-flight photons' candidate ends; the candidates retired
 // follow each move of photons_done_o, never its value, which wraps to 0). Every running count
 // (photons and candidates) is CountW bits and wraps; the wrapper compares them only as
-// differences modulo 2^CountW, which its parameter check keeps below 2^(CountW-1). Photons with
-// N^P = 0 are dropped here. The mode (update / radiance) is the command engine's: radiance only
+// differences modulo 2^CountW, which its parameter check keeps below 2^(CountW-1). Slots with
+// N^P = 0 are dropped here (a beat of them only ends a batch). The mode (update / radiance) is the command engine's: radiance only
 // while CMD 1 runs. Streams and commands never overlap: streams move only while no command runs,
 // and a command starts only when everything is idle.
 //
 // Parameters: those of pree_top a user chooses (NumPreu, the memory sizes, CntW, Datapath,
 // PipeFast and the PREU units' Stages; CtrW is the register map's 48), checked together at
-// elaboration (a missing module named after the problem), and PhotonsPerCycle (photons a
-// beat on s_axis_ph; the wrapper takes 1 only: pree_top's wide intake, up to 8 a cycle, is not
-// carried through it yet, so 8 and 16 PREUs reach about 64% and 33% utilization through the
-// wrapper against 99.98% in pree_top alone), PhFifoAW (log2 of the photon FIFO depth), RingAW (log2 of the in-flight
-// photon ring: at most 2^RingAW - 1 photons between pree_top's intake and photons_done_o),
-// CountW (bits of the running counts: photons in, given and done, candidates in and retired;
-// they wrap, and every comparison between them is modulo 2^CountW; PH_IN, PH_DONE and CAND_IN
-// read them zero-extended; at least IdxAW + PhFifoAW + 1 and more than RingAW, so that the
-// distances compared stay below 2^(CountW-1); 32 unless a simulation or a proof wants to reach
-// the wrap-around in a few hundred photons).
+// elaboration (a missing module named after the problem), and PhotonsPerCycle (photon slots a
+// beat on s_axis_ph, 1 to 8, passed to pree_top: its wide intake; NumPreu / 4 lets 8 and 16
+// PREUs reach pree_top's own utilization), PhFifoAW (log2 of the photon FIFO depth, in beats),
+// RingAW (log2 of the in-flight photon ring: a give waits while 2^RingAW - PhotonsPerCycle
+// photons are between pree_top's intake and photons_done_o; default 4 + log2 PhotonsPerCycle,
+// more than twice PhotonsPerCycle entries), CountW (bits of the running counts: photons in,
+// given and done, candidates in and retired; they wrap, and every comparison between them is
+// modulo 2^CountW; PH_IN, PH_DONE and CAND_IN read them zero-extended; at least IdxAW +
+// PhFifoAW + log2 PhotonsPerCycle + 1 and more than RingAW, so that the distances compared stay
+// below 2^(CountW-1); 32 unless a simulation or a proof wants to reach the wrap-around in a few
+// hundred photons).
 `default_nettype none
 
 module pree_axi #(
@@ -66,7 +73,7 @@ module pree_axi #(
   parameter WaccStages = 0,
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
-  parameter RingAW   = 4,
+  parameter RingAW   = 4 + $clog2(PhotonsPerCycle),
   parameter CountW   = 32,
   parameter StateW   = (Datapath != 0) ? 320 : 160,   // do not override: set by Datapath
   parameter HpRecW   = 32 + 192 + StateW               // do not override: hit-point record bits
@@ -92,7 +99,7 @@ module pree_axi #(
   output wire                       s_axil_rvalid,
   input  wire                       s_axil_rready,
   // Photons.
-  input  wire [PhotonsPerCycle*224-1:0] s_axis_ph_tdata,
+  input  wire [PhotonsPerCycle*256-1:0] s_axis_ph_tdata,
   input  wire                       s_axis_ph_tlast,
   input  wire                       s_axis_ph_tvalid,
   output wire                       s_axis_ph_tready,
@@ -115,23 +122,30 @@ module pree_axi #(
 );
 
   // RTL version: major.minor.patch in bits 23:16, 15:8, 7:0 (VERSION register, docs).
-  localparam [31:0] PREE_VERSION = 32'h0001_0000;
+  localparam [31:0] PREE_VERSION = 32'h0002_0000;
   localparam CtrW     = 48;
   localparam NCNT     = 7 + NumPreu;
+  localparam P        = PhotonsPerCycle;
   localparam PH_DEPTH = 1 << PhFifoAW;
   localparam RING     = 1 << RingAW;
   localparam [31:0] IDX_ROOM = (32'd1 << IdxAW) - NumPreu;   // free entries a beat needs
   localparam [CountW-1:0] ROOM = IDX_ROOM[CountW-1:0];
+  localparam [31:0] FLY_LIM = RING - P;                      // photons in flight before a give
+  localparam [CountW-1:0] FLY = FLY_LIM[CountW-1:0];
 
   generate
-    if (PhotonsPerCycle != 1) begin : g_bad_ppc
-      pree_axi_photons_per_cycle_needs_the_wide_intake u_fail ();
+    if (PhotonsPerCycle < 1 || PhotonsPerCycle > 8) begin : g_bad_ppc
+      pree_axi_photons_per_cycle_is_1_to_8 u_fail ();
+    end
+    if ((1 << RingAW) <= 2 * PhotonsPerCycle) begin : g_bad_ringaw
+      pree_axi_ring_holds_more_than_twice_photons_per_cycle u_fail ();
     end
     if (PxAW > 31 || HpAW > 31 || CntW > 31) begin : g_bad_widths
       pree_axi_addresses_and_counts_fit_32_bit_slots u_fail ();
     end
-    if (CountW > 32 || CountW < IdxAW + PhFifoAW + 1 || CountW <= RingAW) begin : g_bad_countw
-      pree_axi_countw_is_32_at_most_and_idxaw_plus_phfifoaw_plus_1_at_least u_fail ();
+    if (CountW > 32 || CountW < IdxAW + PhFifoAW + $clog2(PhotonsPerCycle) + 1 ||
+        CountW <= RingAW) begin : g_bad_countw
+      pree_axi_countw_is_32_at_most_and_idxaw_plus_phfifoaw_plus_log2_ppc_plus_1_at_least u_fail ();
     end
     if (Datapath < 0 || Datapath > 1) begin : g_bad_datapath
       pree_axi_datapath_is_0_paper_or_1_stable u_fail ();
@@ -316,65 +330,115 @@ module pree_axi #(
   assign irq_o = |(irq_q & irq_en_q);
 
   // ===============================================================================================
-  // Photon FIFO: {data, N^P, candidate end S_k + N_k}.
-  reg  [191:0]      phf_data_q [0:PH_DEPTH-1];
-  reg  [CntW-1:0]   phf_n_q    [0:PH_DEPTH-1];
-  reg  [CountW-1:0] phf_end_q  [0:PH_DEPTH-1];
-  reg  [PhFifoAW:0] phf_wp_q, phf_rp_q;
+  // Photon FIFO, one entry a beat with a non-empty slot: {data, N^P, candidate end S_k + N_k}
+  // per slot (an empty slot keeps the end before it). The head beat's photons are given to
+  // pree_top, in slot order, as soon as their candidates are written (gone_q: those given), so a
+  // beat whose photons' candidates together exceed the index table never waits for itself.
+  reg  [P*192-1:0]     phf_data_q [0:PH_DEPTH-1];
+  reg  [P*CntW-1:0]    phf_n_q    [0:PH_DEPTH-1];
+  reg  [P*CountW-1:0]  phf_end_q  [0:PH_DEPTH-1];
+  reg  [PhFifoAW:0]    phf_wp_q, phf_rp_q;
+  reg  [P-1:0]         gone_q;             // the head beat's slots given to pree_top
   reg  [CountW-1:0] ring_q [0:RING-1];     // candidate end of photon g mod RING, given to pree_top
   reg  [CountW-1:0] given_q, ret_q;        // photons given; candidates retired
   reg  [CountW-1:0] done_q;                // photons_done_o as ret_q last followed it
   wire [PhFifoAW-1:0] rp = phf_rp_q[PhFifoAW-1:0];
+  wire [PhFifoAW-1:0] wp = phf_wp_q[PhFifoAW-1:0];
   wire phf_empty = phf_wp_q == phf_rp_q;
   wire phf_full  = phf_wp_q == {~phf_rp_q[PhFifoAW], phf_rp_q[PhFifoAW-1:0]};
-
-  wire [CntW-1:0] ph_in_n = s_axis_ph_tdata[192 +: CntW];
-  wire            ph_take = s_axis_ph_tvalid && s_axis_ph_tready;
-  wire            ph_push = ph_take && ph_in_n != {CntW{1'b0}};
-  wire [CntW+CountW-1:0] ph_in_nx = {{CountW{1'b0}}, ph_in_n};
-  wire [CountW-1:0] ph_n_c = ph_in_nx[CountW-1:0];   // N^P as a count (at most ROOM unless ph_big)
+  wire ph_take = s_axis_ph_tvalid && s_axis_ph_tready;
   assign s_axis_ph_tready = rst_n && !phf_full && state_q == S_IDLE;
-  assign ph_big = ph_take && {{(32-CntW){1'b0}}, ph_in_n} > IDX_ROOM;
 
-  // Distances between the running counts, modulo 2^CountW (the parameter check keeps them below
-  // 2^(CountW-1)): the head photon's candidates are all written when its end is not ahead of the
-  // candidates written.
-  wire [CountW-1:0] head_end = phf_end_q[rp];
-  wire [CountW-1:0] head_ahead = wr_cnt_q - head_end;
-  wire        head_written = !head_ahead[CountW-1];
+  // The beat on s_axis_ph: its slots' N^P, which are photons (N^P > 0), their ends.
+  reg  [P*192-1:0]    in_data;
+  reg  [P*CntW-1:0]   in_n;
+  reg  [P*CountW-1:0] in_end;
+  reg  [P-1:0]        in_full;              // the slot holds a photon
+  reg  [CountW-1:0]   in_sum;               // the beat's candidates
+  reg  [CountW-1:0]   in_cnt;               // the beat's photons
+  reg                 in_big;               // a slot's N^P above the index table's room
+  reg  [CntW-1:0]     in_nx_top;            // the zero extension's top (unused)
+  always @* begin : ph_slots
+    integer s;
+    reg [CntW+CountW-1:0] nx;
+    in_sum = {CountW{1'b0}}; in_cnt = {CountW{1'b0}}; in_big = 1'b0; in_nx_top = {CntW{1'b0}};
+    for (s = 0; s < P; s = s + 1) begin
+      in_data[s*192 +: 192] = s_axis_ph_tdata[256*s +: 192];
+      in_n[s*CntW +: CntW] = s_axis_ph_tdata[256*s + 192 +: CntW];
+      nx = {{CountW{1'b0}}, s_axis_ph_tdata[256*s + 192 +: CntW]};
+      in_full[s] = s_axis_ph_tdata[256*s + 192 +: CntW] != {CntW{1'b0}};
+      in_big = in_big || {{(32-CntW){1'b0}}, s_axis_ph_tdata[256*s + 192 +: CntW]} > IDX_ROOM;
+      in_sum = in_sum + nx[CountW-1:0];      // N^P as a count (at most ROOM unless ph_big)
+      in_nx_top = in_nx_top | nx[CntW+CountW-1:CountW];
+      in_end[s*CountW +: CountW] = cum_in_q + in_sum;
+      in_cnt = in_cnt + {{(CountW-1){1'b0}}, in_full[s]};
+    end
+  end
+  wire ph_push = ph_take && |in_full;
+  assign ph_big = ph_take && in_big;
+
+  // The head beat: the slots still to give, those whose candidates are all written (an end not
+  // ahead of the candidates written; distances modulo 2^CountW, kept below 2^(CountW-1) by the
+  // parameter check) and, in slot order, where each given one goes in the ring.
+  wire [P*CountW-1:0] head_end = phf_end_q[rp];
+  wire [P*CntW-1:0]   head_n   = phf_n_q[rp];
+  reg  [P-1:0]        todo, give, left;      // to give; given in this offer; left after it
+  reg  [P*CntW-1:0]   give_n;                // N^P to pree_top: 0 in the slots not given
+  reg  [P*IdxAW-1:0]  give_p;                // p_k = -(S_k + N_k)
+  reg  [P*RingAW-1:0] ring_wa;
+  reg  [CountW-1:0]   give_cnt;
+  always @* begin : head_slots
+    integer s;
+    reg [CountW-1:0] ahead;
+    give_cnt = {CountW{1'b0}};
+    for (s = 0; s < P; s = s + 1) begin
+      ahead = wr_cnt_q - head_end[s*CountW +: CountW];
+      todo[s] = head_n[s*CntW +: CntW] != {CntW{1'b0}} && !gone_q[s];
+      give[s] = todo[s] && !ahead[CountW-1];
+      left[s] = todo[s] && ahead[CountW-1];
+      give_n[s*CntW +: CntW] = give[s] ? head_n[s*CntW +: CntW] : {CntW{1'b0}};
+      give_p[s*IdxAW +: IdxAW] = -head_end[s*CountW +: IdxAW];
+      ring_wa[s*RingAW +: RingAW] = given_q[RingAW-1:0] + give_cnt[RingAW-1:0];
+      give_cnt = give_cnt + {{(CountW-1){1'b0}}, give[s]};
+    end
+  end
+
   wire [CountW-1:0] in_flight = given_q - core_done;
   wire        core_ready;
-  wire        core_valid = !phf_empty && head_written && in_flight < RING - 1 && state_q == S_IDLE;
+  wire        core_valid = !phf_empty && |give && in_flight < FLY && state_q == S_IDLE;
   wire        core_take = core_valid && core_ready;
+  wire        head_pop = core_take && !(|left);
   wire [RingAW-1:0] last_done = core_done[RingAW-1:0] - {{(RingAW-1){1'b0}}, 1'b1};
-  wire [IdxAW-1:0]  head_p    = -head_end[IdxAW-1:0];   // p_k = -(S_k + N_k)
 
   always @(posedge aclk or negedge rst_n) begin
     if (!rst_n) begin
-      phf_wp_q <= {(PhFifoAW+1){1'b0}}; phf_rp_q <= {(PhFifoAW+1){1'b0}};
+      phf_wp_q <= {(PhFifoAW+1){1'b0}}; phf_rp_q <= {(PhFifoAW+1){1'b0}}; gone_q <= {P{1'b0}};
       cum_in_q <= {CountW{1'b0}}; ph_in_q <= {CountW{1'b0}}; given_q <= {CountW{1'b0}};
       ret_q <= {CountW{1'b0}}; done_q <= {CountW{1'b0}}; batch_q <= 1'b0;
     end else begin
       if (ph_push) phf_wp_q <= phf_wp_q + 1'b1;
-      if (ph_push) cum_in_q <= cum_in_q + ph_n_c;
-      if (ph_take) ph_in_q <= ph_in_q + 1'b1;
-      if (core_take) phf_rp_q <= phf_rp_q + 1'b1;
-      if (core_take) given_q <= given_q + 1'b1;
+      if (ph_push) cum_in_q <= cum_in_q + in_sum;
+      if (ph_take) ph_in_q <= ph_in_q + in_cnt;
+      if (head_pop) phf_rp_q <= phf_rp_q + 1'b1;
+      if (core_take) gone_q <= head_pop ? {P{1'b0}} : gone_q | give;
+      if (core_take) given_q <= given_q + give_cnt;
       // Candidates retired: the end of the last photon done, followed whenever photons_done_o
-      // moves (never from its value: it returns to 0 when it wraps).
+      // moves, by one photon or several (never from its value: it returns to 0 when it wraps).
       done_q <= core_done;
       if (core_done != done_q) ret_q <= ring_q[last_done];
       batch_q <= (batch_q && !batch_done) || (ph_take && s_axis_ph_tlast);
     end
   end
 
-  always @(posedge aclk) begin
+  always @(posedge aclk) begin : ph_store
+    integer s;
     if (ph_push) begin
-      phf_data_q[phf_wp_q[PhFifoAW-1:0]] <= s_axis_ph_tdata[191:0];
-      phf_n_q[phf_wp_q[PhFifoAW-1:0]]    <= ph_in_n;
-      phf_end_q[phf_wp_q[PhFifoAW-1:0]]  <= cum_in_q + ph_n_c;
+      phf_data_q[wp] <= in_data;
+      phf_n_q[wp]   <= in_n;
+      phf_end_q[wp] <= in_end;
     end
-    if (core_take) ring_q[given_q[RingAW-1:0]] <= head_end;
+    for (s = 0; s < P; s = s + 1)
+      if (core_take && give[s]) ring_q[ring_wa[s*RingAW +: RingAW]] <= head_end[s*CountW +: CountW];
   end
 
   // ===============================================================================================
@@ -513,13 +577,13 @@ module pree_axi #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
     .PxBankW(PxBankW), .CntW(CntW), .Datapath(Datapath), .CtrW(CtrW), .PipeFast(PipeFast),
     .AddStages(AddStages), .MulStages(MulStages), .SqrStages(SqrStages), .DivStages(DivStages),
-    .U2fStages(U2fStages), .WaccStages(WaccStages), .CountW(CountW)
+    .U2fStages(U2fStages), .WaccStages(WaccStages), .PhotonsPerCycle(P), .CountW(CountW)
   ) u_top (
     .clk_i(aclk), .rst_ni(rst_n),
     .mode_i(mode_q), .cnt_en_i(cnt_en_q), .ne_i(ne_q), .alpha_i(alpha_q), .kappa_i(kappa_q),
     .rad_start_i(state_q == S_RAD_START), .n_hit_i(n_hit), .idle_o(core_idle),
     .ph_valid_i(core_valid), .ph_ready_o(core_ready), .ph_data_i(phf_data_q[rp]),
-    .ph_paddr_i(head_p), .ph_n_i(phf_n_q[rp]), .photons_done_o(core_done),
+    .ph_paddr_i(give_p), .ph_n_i(give_n), .photons_done_o(core_done),
     .idx_we_i(idx_we), .idx_addr_i(idx_addr), .idx_data_i(idx_data),
     .hp_we_i(hp_take), .hp_re_i(issue && state_q == S_HP_READ), .hp_addr_i(hp_a[HpAW-1:0]),
     .hp_wdata_i(s_axis_hp_tdata[PxAW+191+StateW:0]), .hp_rdata_o(hp_rdata),
@@ -527,15 +591,18 @@ module pree_axi #(
     .px_wdata_i(96'd0), .px_rdata_o(px_rdata), .cnt_o(cnt));
 
   // Bits the engine does not use: the slots' upper bits, the byte offsets, the counts' tops.
-  wire unused_bits = ^{s_axis_ph_tdata[223:192+CntW], s_axis_hp_tdata[HpRecW-1:PxAW+192+StateW],
+  wire unused_bits = ^{ph_unused, in_nx_top, s_axis_hp_tdata[HpRecW-1:PxAW+192+StateW],
                        wr_addr[1:0], rd_addr[1:0], n_hit_q[31:HpAW], hp_a[31:HpAW], px_a[31:PxAW],
                        cand_unused, ph_in_x[31+CountW:32], done_x[31+CountW:32],
-                       cand_in_x[31+CountW:32], ph_in_nx[CntW+CountW-1:CountW], px_new[32:PxAW+1]};
+                       cand_in_x[31+CountW:32], px_new[32:PxAW+1]};
   reg [NumPreu*(32-HpAW)-1:0] cand_unused;
+  reg [P*(64-CntW)-1:0]       ph_unused;   // each slot's N^P top and reserved word
   always @* begin : cand_tops
     integer j;
     for (j = 0; j < NumPreu; j = j + 1)
       cand_unused[j*(32-HpAW) +: 32-HpAW] = s_axis_cand_tdata[32*j+HpAW +: 32-HpAW];
+    for (j = 0; j < P; j = j + 1)
+      ph_unused[j*(64-CntW) +: 64-CntW] = s_axis_ph_tdata[256*j+192+CntW +: 64-CntW];
   end
 
 endmodule

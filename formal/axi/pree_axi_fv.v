@@ -29,7 +29,7 @@ module pree_axi_fv #(
   input wire [31:0] s_axil_wdata, input wire [3:0] s_axil_wstrb, input wire s_axil_wvalid,
   input wire s_axil_bready,
   input wire [11:0] s_axil_araddr, input wire s_axil_arvalid, input wire s_axil_rready,
-  input wire [223:0] s_axis_ph_tdata, input wire s_axis_ph_tlast, input wire s_axis_ph_tvalid,
+  input wire [255:0] s_axis_ph_tdata, input wire s_axis_ph_tlast, input wire s_axis_ph_tvalid,
   input wire [32*NumPreu-1:0] s_axis_cand_tdata, input wire [4*NumPreu-1:0] s_axis_cand_tkeep,
   input wire s_axis_cand_tvalid,
   input wire [32+192+160-1:0] s_axis_hp_tdata, input wire s_axis_hp_tvalid,
@@ -83,7 +83,7 @@ module pree_axi_fv #(
     .f_aw_out_o(f_aw_out), .f_w_out_o(f_w_out), .f_ar_out_o(f_ar_out), .f_wwait_o(f_wwait),
     .f_rwait_o(f_rwait));
 
-  pree_faxis #(.DataW(224), .SrcIsDut(0)) f_ph (
+  pree_faxis #(.DataW(256), .SrcIsDut(0)) f_ph (
     .clk_i(aclk), .rst_ni(aresetn), .tvalid(s_axis_ph_tvalid), .tready(s_axis_ph_tready),
     .tdata(s_axis_ph_tdata), .tlast(s_axis_ph_tlast), .tkeep(1'b1), .tuser(1'b1), .f_stall_o());
   pree_faxis #(.DataW(32*NumPreu), .KeepW(4*NumPreu), .SrcIsDut(0)) f_cand (

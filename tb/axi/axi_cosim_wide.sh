@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The AXI4 wrapper with 8 PREUs against the C model: `pree cosim --axi`
-# (build/pree-cosim-axi-p8; pree_axi takes one photon a beat, so its pree_top runs with
-# PhotonsPerCycle 1) on cornell3 32x24 / 3000 photons, with random back-pressure and gaps on every
+# (build/pree-cosim-axi-p8; two photons a beat, PhotonsPerCycle 2, into its pree_top's wide
+# intake) on cornell3 32x24 / 3000 photons, with random back-pressure and gaps on every
 # stream and AXI4-Lite channel (--gap 0.3) and without: 0 differing words in the final hit-point
 # memory and the image, and the RTL's operation counts equal to those sent ("pass").
 # `make sim-axi-wide` (outside `make test`: the 8-PREU wrapper model takes about 15 minutes to build).

@@ -1,7 +1,7 @@
 // axi_reset_tb: pree_axi (with the real pree_top, small memories) at the end of a reset. A host
 // may start a transfer at the first rising edge after ARESETn rises (AXI4, A3.1.2), while the
 // wrapper's synchronised reset is still low for two more edges. Here every channel starts then:
-// an AXI4-Lite write (IRQ_EN = 3) and read (VERSION), a photon beat (N^P = 0: counted, dropped)
+// an AXI4-Lite write (IRQ_EN = 3) and read (VERSION), a photon beat (N^P = 1: counted, held for its candidate)
 // and a hit-point beat. Each must be taken and answered once: one write response, one read
 // response with the version, then IRQ_EN reads 3, PH_IN 1 and HP_PTR 1. A lost transfer ends
 // the run with $fatal (a response that never comes, or a count short); run with vvp -N.
@@ -30,7 +30,7 @@ module axi_reset_tb;
     .s_axil_bresp(bresp), .s_axil_bvalid(bvalid), .s_axil_bready(bready),
     .s_axil_araddr(araddr), .s_axil_arvalid(arvalid), .s_axil_arready(arready),
     .s_axil_rdata(rdata), .s_axil_rresp(rresp), .s_axil_rvalid(rvalid), .s_axil_rready(rready),
-    .s_axis_ph_tdata(224'd0), .s_axis_ph_tlast(1'b0), .s_axis_ph_tvalid(ph_valid),
+    .s_axis_ph_tdata({64'd1, 192'd0}), .s_axis_ph_tlast(1'b0), .s_axis_ph_tvalid(ph_valid),
     .s_axis_ph_tready(ph_ready),
     .s_axis_cand_tdata({(32*NumPreu){1'b0}}), .s_axis_cand_tkeep({(4*NumPreu){1'b0}}),
     .s_axis_cand_tvalid(1'b0), .s_axis_cand_tready(cand_ready),
@@ -102,7 +102,7 @@ module axi_reset_tb;
     araddr = 12'h000; arvalid = 1'b1; rready = 1'b1;
     ph_valid = 1'b1; hp_valid = 1'b1;
     wait_for(0, 1); wait_for(1, 1); wait_for(2, 1); wait_for(3, 1);
-    if (r_last !== 32'h0001_0000) $fatal(1, "axi_reset_tb: VERSION read %h", r_last);
+    if (r_last !== 32'h0002_0000) $fatal(1, "axi_reset_tb: VERSION read %h", r_last);
     repeat (4) @(posedge aclk);
     if (aw_n != 1 || w_n != 1 || b_n != 1 || ar_n != 1 || r_n != 1)
       $fatal(1, "axi_reset_tb: handshakes aw %0d w %0d b %0d ar %0d r %0d, expected one each",

@@ -25,7 +25,7 @@ module axi_wave_tb;
   wire        awready, wready, bvalid, arready, rvalid;
   wire [1:0]  bresp, rresp;
   wire [31:0] rdata;
-  reg  [223:0] ph_data = 224'd0;
+  reg  [255:0] ph_data = 256'd0;
   reg          ph_last = 1'b0, ph_valid = 1'b0;
   wire         ph_ready;
   reg  [32*NP-1:0] cand_data = {32*NP{1'b0}};

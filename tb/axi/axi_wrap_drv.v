@@ -6,7 +6,8 @@
 // running counts (PH_IN, PH_DONE, CAND_IN modulo 2^CountW), reads every hit point back, runs the
 // radiance pass and reads every pixel; before and after, it checks that a counter's high half
 // read first is 0 and that commands reading hit points never loaded or pixels never cleared are
-// refused (ERR bit 0, no interrupt). The stimulus is a function of the photon number only, so
+// refused (ERR bit 0, no interrupt). Photons go Ppc slots a beat, some slots left empty at random.
+// The stimulus is a function of the photon number only, so
 // two drivers with different seeds send the same data under different back-pressure. Fails
 // ($fatal) when a stream makes no progress for StallLimit cycles (a deadlock) or on a protocol
 // error; results in hp_res / px_res, done_o high at the end.
@@ -17,6 +18,7 @@ module axi_wrap_drv #(
   parameter HpAW       = 8,
   parameter PxAW       = 6,
   parameter CountW     = 32,
+  parameter Ppc        = 1,      // photon slots a beat (the wrapper's PhotonsPerCycle)
   parameter NumPhotons = 600,
   parameter Batch      = 64,
   parameter Seed       = 1,
@@ -39,7 +41,7 @@ module axi_wrap_drv #(
   input  wire [31:0]             rdata,
   input  wire                    rvalid,
   output reg                     rready,
-  output reg  [223:0]            ph_tdata,
+  output reg  [256*Ppc-1:0]      ph_tdata,
   output reg                     ph_tlast,
   output reg                     ph_tvalid,
   input  wire                    ph_tready,
@@ -115,7 +117,7 @@ module axi_wrap_drv #(
   reg [HpRecW-1:0] hp_res [0:NHP-1];
   reg [95:0]       px_res [0:NPX-1];
   reg              go;           // the photon and candidate streams run
-  integer          ph_k, ck, ci, c_sent, c_total, beat_n, rx, rx_n, idle_cnt;
+  integer          ph_k, ph_beat, ck, ci, c_sent, c_total, beat_n, rx, rx_n, idle_cnt;
   integer          ph_end, c_end;  // the current batch's photons and candidates end here
   reg              rx_user;
 
@@ -205,18 +207,30 @@ module axi_wrap_drv #(
     end
   endtask
 
-  // ---- Photons, one a beat; tlast on the last.
+  // ---- Photons, up to Ppc a beat in photon order; with Ppc > 1 a slot is left empty (N^P 0)
+  // at random, and the batch's last photon ends its beat (tlast), the slots after it empty.
   always @(posedge aclk) begin : photons
-    integer n;
+    integer n, s, b;
+    reg fill;
     if (go) begin
       n = ph_k;
-      if (ph_tvalid && ph_tready) n = n + 1;
+      if (ph_tvalid && ph_tready) n = n + ph_beat;
       ph_k <= n;
       if ((!ph_tvalid || ph_tready) && n < ph_end && !gap(0)) begin
+        b = 0;
+        for (s = 0; s < Ppc; s = s + 1) begin
+          fill = n + b < ph_end && !(Ppc > 1 && gap(0));
+          if (fill)
+            ph_tdata[256*s +: 256] <= {32'd0, ph_n(n + b), flux(n + b, 2), flux(n + b, 1),
+                                       flux(n + b, 0), coord(n + b, 2), coord(n + b, 1),
+                                       coord(n + b, 0)};
+          else
+            ph_tdata[256*s +: 256] <= {32'd0, 32'd0, {6{32'h7fc0_0000}}};   // empty: N^P 0
+          if (fill) b = b + 1;
+        end
         ph_tvalid <= 1'b1;
-        ph_tlast  <= n == ph_end - 1;
-        ph_tdata  <= {ph_n(n), flux(n, 2), flux(n, 1), flux(n, 0), coord(n, 2), coord(n, 1),
-                      coord(n, 0)};
+        ph_tlast  <= n + b == ph_end;
+        ph_beat   <= b;
       end else if (ph_tready) begin
         ph_tvalid <= 1'b0;
       end
@@ -283,7 +297,7 @@ module axi_wrap_drv #(
     aresetn = 1'b0; awvalid = 1'b0; wvalid = 1'b0; bready = 1'b0; arvalid = 1'b0;
     rready = 1'b0; ph_tvalid = 1'b0; ph_tlast = 1'b0; cand_tvalid = 1'b0; hp_tvalid = 1'b0;
     m_tready = 1'b0; go = 1'b0; done_o = 1'b0; awaddr = 12'd0; araddr = 12'd0; wdata = 32'd0;
-    ph_tdata = 224'd0; cand_tdata = {32*NumPreu{1'b0}}; cand_tkeep = {4*NumPreu{1'b0}};
+    ph_tdata = {256*Ppc{1'b0}}; ph_beat = 0; cand_tdata = {32*NumPreu{1'b0}}; cand_tkeep = {4*NumPreu{1'b0}};
     hp_tdata = {HpRecW{1'b0}};
     ph_k = 0; ck = 0; ci = 0; c_sent = 0; beat_n = 0; rx = 0; rx_n = 0; rx_user = 1'b0;
     idle_cnt = 0;

@@ -1,9 +1,10 @@
 // axi_wrap_tb: pree_axi through the wrap-around of its running counts. Two wrappers with the
 // real pree_top (by default 2 PREUs, paper datapath, small memories: 64 hit points, a 16-entry
 // index table, 16 pixels) get the same photons, candidates and hit points from two hosts
-// (tb/axi/axi_wrap_drv.v) under different random back-pressure: one with CountW narrow (by
-// default 6, the narrowest these memories allow: the photon and candidate counts wrap every 64),
-// one with CountW 32 (no wrap in this run). The photons come in batches of 2^CountW, each
+// (tb/axi/axi_wrap_drv.v) under different random back-pressure: one with the wide intake (Ppc
+// photon slots a beat, by default 2, some left empty) and CountW narrow (by default 7, the
+// narrowest these memories allow: the photon and candidate counts wrap every 128), one with one
+// photon a beat and CountW 32 (no wrap in this run). The photons come in batches of 2^CountW, each
 // drained before the next (the batch interrupt), so that the narrow wrapper's photon-done count
 // rests at 0 after its wrap, where a wrapper that takes a count of 0 for "nothing retired" stops
 // taking candidates for good. Both must take every photon and
@@ -20,7 +21,8 @@ module axi_wrap_tb;
   parameter PxAW       = 4;
   parameter IdxAW      = 4;
   parameter PhFifoAW   = 1;
-  parameter CountW     = IdxAW + PhFifoAW + 1;   // the narrowest the wrapper takes
+  parameter Ppc        = 2;                      // the narrow wrapper's photon slots a beat
+  parameter CountW     = IdxAW + PhFifoAW + $clog2(Ppc) + 1;   // the narrowest it takes
   parameter NumPhotons = 200;
   localparam HpRecW = 384;
   localparam NHP = 1 << HpAW;
@@ -36,17 +38,19 @@ module axi_wrap_tb;
   generate
     for (g = 0; g < 2; g = g + 1) begin : g_pair
       localparam W = (g == 0) ? CountW : 32;
+      localparam P = (g == 0) ? Ppc : 1;
       wire rstn, awv, awr, wv, wr, bv, br, arv, arr, rv, rr, pl, pv, pr, cv, cr, hv, hr;
       wire mu, ml, mv, mr, irq;
       wire [11:0] awa, ara;
       wire [31:0] wd, rd;
       wire [1:0] bresp, rresp;
-      wire [223:0] pd;
+      wire [256*P-1:0] pd;
       wire [32*NumPreu-1:0] cd;
       wire [4*NumPreu-1:0] ck;
       wire [HpRecW-1:0] hd, md;
       pree_axi #(.NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(2), .IdxAW(IdxAW), .PxAW(PxAW),
-                 .PxBankW(2), .CntW(8), .PhFifoAW(PhFifoAW), .CountW(W)) dut (
+                 .PxBankW(2), .CntW(8), .PhotonsPerCycle(P), .PhFifoAW(PhFifoAW),
+                 .CountW(W)) dut (
         .aclk(aclk), .aresetn(rstn),
         .s_axil_awaddr(awa), .s_axil_awvalid(awv), .s_axil_awready(awr), .s_axil_wdata(wd),
         .s_axil_wstrb(4'hf), .s_axil_wvalid(wv), .s_axil_wready(wr), .s_axil_bresp(bresp),
@@ -57,7 +61,7 @@ module axi_wrap_tb;
         .s_axis_cand_tvalid(cv), .s_axis_cand_tready(cr), .s_axis_hp_tdata(hd),
         .s_axis_hp_tvalid(hv), .s_axis_hp_tready(hr), .m_axis_tdata(md), .m_axis_tuser(mu),
         .m_axis_tlast(ml), .m_axis_tvalid(mv), .m_axis_tready(mr), .irq_o(irq));
-      axi_wrap_drv #(.NumPreu(NumPreu), .HpAW(HpAW), .PxAW(PxAW), .CountW(W),
+      axi_wrap_drv #(.NumPreu(NumPreu), .HpAW(HpAW), .PxAW(PxAW), .CountW(W), .Ppc(P),
                      .NumPhotons(NumPhotons), .Batch(1 << CountW), .Seed(g + 1)) drv (
         .aclk(aclk), .aresetn(rstn), .awaddr(awa), .awvalid(awv), .awready(awr), .wdata(wd),
         .wvalid(wv), .wready(wr), .bvalid(bv), .bready(br), .araddr(ara), .arvalid(arv),

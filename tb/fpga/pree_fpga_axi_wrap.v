@@ -25,7 +25,7 @@ module pree_fpga_axi_wrap #(
   parameter WaccStages = 0,
   parameter PhotonsPerCycle = 1,
   parameter PhFifoAW = 2,
-  parameter RingAW   = 4,
+  parameter RingAW   = 4 + $clog2(PhotonsPerCycle),
   parameter CountW   = 32
 ) (
   input  wire       clk_i,
@@ -38,7 +38,7 @@ module pree_fpga_axi_wrap #(
 );
 
   localparam HpRecW = 32 + 192 + ((Datapath != 0) ? 320 : 160);
-  localparam PhW    = PhotonsPerCycle * 224;
+  localparam PhW    = PhotonsPerCycle * 256;
   localparam ScanW  = 12 + 32 + 4 + 12 + PhW + 36 * NumPreu + HpRecW;
   localparam OutW   = 41 + 3 + HpRecW + 4;
 

@@ -23,7 +23,7 @@ typedef struct {
 } reg_desc_t;
 
 static const reg_desc_t reg_map[] = {
-    {"VERSION", 0x000u, 1, 0, 3, {{"PATCH", 0, 8, REG_RO, 1, 0x0u}, {"MINOR", 8, 8, REG_RO, 1, 0x0u}, {"MAJOR", 16, 8, REG_RO, 1, 0x1u}}},
+    {"VERSION", 0x000u, 1, 0, 3, {{"PATCH", 0, 8, REG_RO, 1, 0x0u}, {"MINOR", 8, 8, REG_RO, 1, 0x0u}, {"MAJOR", 16, 8, REG_RO, 1, 0x2u}}},
     {"CONFIG0", 0x004u, 1, 0, 5, {{"NUM_PREU", 0, 8, REG_RO, 0, 0x0u}, {"HP_AW", 8, 5, REG_RO, 0, 0x0u}, {"PX_AW", 16, 5, REG_RO, 0, 0x0u}, {"IDX_AW", 24, 5, REG_RO, 0, 0x0u}, {"DATAPATH", 31, 1, REG_RO, 0, 0x0u}}},
     {"CONFIG1", 0x008u, 1, 0, 4, {{"HP_BANK_W", 0, 5, REG_RO, 0, 0x0u}, {"PX_BANK_W", 8, 5, REG_RO, 0, 0x0u}, {"CNT_W", 16, 5, REG_RO, 0, 0x0u}, {"PHOTONS_PER_CYCLE", 24, 8, REG_RO, 0, 0x0u}}},
     {"CTRL", 0x010u, 1, 0, 1, {{"CNT_EN", 0, 1, REG_RW, 1, 0x0u}}},

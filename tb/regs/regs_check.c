@@ -153,8 +153,8 @@ static void check_access(void)
 
 static void photon(uint32_t n, int last)
 {
-    const uint32_t w[7] = {0, 0, 0, 0, 0, 0, n};
-    if (be.submit(be.ctx, PREE_STREAM_PH, w, 7, 7, last)) { fprintf(stderr, "regs_check: %s\n", be.error(be.ctx)); exit(1); }
+    const uint32_t w[PREE_PH_SLOT_WORDS] = {0, 0, 0, 0, 0, 0, n, 0};
+    if (be.submit(be.ctx, PREE_STREAM_PH, w, PREE_PH_SLOT_WORDS, PREE_PH_SLOT_WORDS, last)) { fprintf(stderr, "regs_check: %s\n", be.error(be.ctx)); exit(1); }
 }
 
 static void settle(void)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
 # verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths; the wrapper
-# bench's narrow counts; PipeFast 1 and unit stages; out-of-range parameters refused by name); Icarus
+# bench's narrow counts; 2, 4 and 8 photons a beat; PipeFast 1 and unit stages; out-of-range
+# parameters refused by name); Icarus
 # (-g2005) elaborates pree_axi and pree_reset_sync through it.
 # cost: 70 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
@@ -15,15 +16,23 @@ for d in 0 1; do
     run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=$p -GDatapath=$d -f rtl/pree.f
   done
 done
-# The narrowest running counts the wrapper bench uses (tests/checks/axi_wrap.sh).
+# The narrowest running counts the wrapper bench uses (tests/checks/axi_wrap.sh), with one photon
+# a beat and with two.
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=2 -GHpAW=6 -GHpBankW=2 \
   -GIdxAW=4 -GPxAW=4 -GPxBankW=2 -GCntW=8 -GPhFifoAW=1 -GCountW=6 -f rtl/pree.f
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=2 -GHpAW=6 -GHpBankW=2 \
+  -GIdxAW=4 -GPxAW=4 -GPxBankW=2 -GCntW=8 -GPhFifoAW=1 -GCountW=7 -GPhotonsPerCycle=2 -f rtl/pree.f
+# The wide photon intake as the co-simulation builds it (NumPreu / 4 photons a beat), and 8 a beat.
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=8 -GPhotonsPerCycle=2 -f rtl/pree.f
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=16 -GPhotonsPerCycle=4 -GPipeFast=1 -f rtl/pree.f
+run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=16 -GPhotonsPerCycle=8 -GDatapath=1 -f rtl/pree.f
 # The deep PREU pipeline and per-unit stages through the wrapper.
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -f rtl/pree.f
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -GDivStages=18 -GAddStages=3 -f rtl/pree.f
 # A combination out of range stops elaboration with a module named after the problem.
 for bad in "DivStages=1:pree_axi_divstages_is_0_or_2_to_31" "PipeFast=2:pree_axi_pipefast_is_0_or_1" \
-           "HpBankW=10:pree_axi_hpbankw_is_1_to_half_of_hpaw" "PhotonsPerCycle=2:pree_axi_photons_per_cycle"; do
+           "HpBankW=10:pree_axi_hpbankw_is_1_to_half_of_hpaw" "PhotonsPerCycle=9:pree_axi_photons_per_cycle_is_1_to_8" \
+           "RingAW=1:pree_axi_ring_holds_more_than_twice_photons_per_cycle"; do
   if verilator --lint-only -Wall -Irtl --top-module pree_axi -G${bad%%:*} -f rtl/pree.f >"$TMP/bad.log" 2>&1; then
     fail "pree_axi elaborated with ${bad%%:*}"
   fi

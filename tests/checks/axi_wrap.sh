@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # The AXI4 wrapper through the wrap-around of its running counts (tb/axi/axi_wrap_tb.v, Icarus):
-# two pree_axi with the real pree_top, CountW 6 and 32, the same 200 photons in batches of 64
-# (each drained), 932 candidates, random back-pressure: no stall, the counts read modulo
-# 2^CountW, the same hit points and pixels, no X. Then the same bench on a copy of the RTL whose
+# two pree_axi with the real pree_top, one with the wide intake (2 photon slots a beat, some left
+# empty; beats whose candidates exceed the 16-entry index table) and CountW 7, one with a photon
+# a beat and CountW 32, the same 200 photons in batches of 128 (each drained), 932 candidates,
+# random back-pressure: no stall, the counts read modulo 2^CountW, the same hit points and pixels
+# bit for bit, no X. Then the same bench on a copy of the RTL whose
 # wrapper takes a photon-done count of 0 for "nothing retired" (the deadlock this guards
 # against) must stall.
 # cost: 70 (its seconds in a serial run; the runner starts costly checks first)
