@@ -36,7 +36,7 @@ module pree_uart_axi #(
   wire [1:0]            bresp, rresp;
   wire                  awvalid, awready, wvalid, wready, bvalid, bready;
   wire                  arvalid, arready, rvalid, rready;
-  wire [223:0]          ph_tdata;
+  wire [255:0]          ph_tdata;
   wire                  ph_tlast, ph_tvalid, ph_tready;
   wire [32*NumPreu-1:0] cand_tdata;
   wire [4*NumPreu-1:0]  cand_tkeep;

@@ -5,7 +5,7 @@
 //   'W' (0x57)  6 bytes: address (16 bits, the low 12 used), data (32 bits); an AXI4-Lite write
 //               with all byte strobes. Reply 'b' (OKAY) or 'e' (an error response).
 //   'R' (0x52)  2 bytes: address. Reply 'r' or 'e', then the 32 read data bits (4 bytes).
-//   'P' (0x50)  28 bytes: a photon beat of s_axis_ph (224 bits), TLAST low; 'L' (0x4C) the same
+//   'P' (0x50)  32 bytes: a photon beat of s_axis_ph (one 256-bit slot), TLAST low; 'L' (0x4C) the same
 //               with TLAST high. Reply 'a' once the stream has taken it.
 //   'C' (0x43)  4.5 NumPreu bytes: {tkeep (4 NumPreu bits), tdata (32 NumPreu bits)} of
 //               s_axis_cand. Reply 'a'.
@@ -46,7 +46,7 @@ module pree_uart_bridge #(
   input  wire                      m_axil_rvalid,
   output wire                      m_axil_rready,
   // Streams into pree_axi.
-  output wire [223:0]              ph_tdata,
+  output wire [255:0]              ph_tdata,
   output wire                      ph_tlast,
   output wire                      ph_tvalid,
   input  wire                      ph_tready,
@@ -66,7 +66,7 @@ module pree_uart_bridge #(
 );
 
   localparam CandW = 36 * NumPreu;
-  localparam BW0   = (HpRecW > 224) ? HpRecW : 224;
+  localparam BW0   = (HpRecW > 256) ? HpRecW : 256;
   localparam BW    = (CandW > BW0) ? CandW : BW0;      // the payload register
   localparam TW    = 8 + HpRecW;                        // the reply register: a byte + a beat
   localparam [7:0] OP_W = 8'h57, OP_R = 8'h52, OP_P = 8'h50, OP_L = 8'h4c, OP_C = 8'h43,
@@ -83,7 +83,7 @@ module pree_uart_bridge #(
       case (op)
         OP_W:       payload_bytes = 8'd6;
         OP_R:       payload_bytes = 8'd2;
-        OP_P, OP_L: payload_bytes = 8'd28;
+        OP_P, OP_L: payload_bytes = 8'd32;
         OP_C:       payload_bytes = CAND_BYTES;
         OP_H:       payload_bytes = HP_BYTES;
         default:    payload_bytes = 8'd0;
@@ -120,7 +120,7 @@ module pree_uart_bridge #(
   assign m_axil_araddr  = pay_q[11:0];
   assign m_axil_arvalid = exec && is_r && !ar_done_q;
   assign m_axil_rready  = exec && is_r && ar_done_q;
-  assign ph_tdata    = pay_q[223:0];
+  assign ph_tdata    = pay_q[255:0];
   assign ph_tlast    = (op_q == OP_L);
   assign ph_tvalid   = exec && is_p;
   assign cand_tdata  = pay_q[32*NumPreu-1:0];

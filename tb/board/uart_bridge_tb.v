@@ -133,7 +133,7 @@ module uart_bridge_tb;
     repeat (10) @(posedge clk);
     rst_n = 1'b1;
     repeat (10) @(posedge clk);
-    reg_read_expect(16'h000, 32'h0001_0000);                 // VERSION
+    reg_read_expect(16'h000, 32'h0002_0000);                 // VERSION
     send_byte(8'h5a);                                        // unknown
     expect_byte(8'h3f);
     reg_write(16'h040, 32'd0);                               // HP_PTR = 0
@@ -177,7 +177,7 @@ module uart_bridge_tb;
     blocked = 0;
     while (!blocked && i < 8) begin
       send_byte(8'h50);
-      for (j = 27; j >= 0; j = j - 1) send_byte(j == 24 ? 8'h01 : 8'h00);   // N^P = 1
+      for (j = 31; j >= 0; j = j - 1) send_byte(j == 24 ? 8'h01 : 8'h00);   // N^P = 1
       k2 = 0;
       while (rx_n <= rd && k2 < 2000) begin
         @(posedge clk);
