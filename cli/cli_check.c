@@ -79,11 +79,17 @@ int pree_cmd_check(int argc, char **argv)
                             .grid = GRID_CELLS, .preu = 4, .progress = 1};
     const char *scene_path;
     cli_args_t a;
-    cli_begin(&a, argc, argv, "check", check_longopts, &opt, 1);
+    int size_given = 0;
+    cli_begin(&a, argc, argv, "check", check_longopts, NULL, 1);
     for (int id; (id = cli_next(&a)) != 0;) {
         if (id < 0) return 2;
         if (id == CLI_HELP) { check_usage(stdout); return 0; }
-        if (id == OPT_MAX_MEMORY && cli_size(&a, &opt.max_memory)) return 2;
+        if (id == OPT_MAX_MEMORY) {
+            if (cli_size(&a, &opt.max_memory)) return 2;
+        } else if (cli_render_option(&a, id, &opt, 1)) {
+            return 2;
+        }
+        size_given |= id == CLI_WIDTH ? 1 : id == CLI_HEIGHT ? 2 : 0;
     }
     if (!(scene_path = cli_scene(&a))) return 2;
     scene_t scene;
@@ -92,6 +98,9 @@ int pree_cmd_check(int argc, char **argv)
         fprintf(stderr, "pree check: %s\n", err);
         return 1;
     }
+    /* A pbrt file's Film resolution, as pree render takes it. */
+    if (scene.film_width && !(size_given & 1)) opt.width = scene.film_width;
+    if (scene.film_height && !(size_given & 2)) opt.height = scene.film_height;
     unsigned long long tris = 0;
     for (int m = 0; m < scene.num_meshes; m++) tris += (unsigned long long)scene.meshes[m].num_triangles;
     uint64_t mem = mem_estimate_start(tris, (uint64_t)opt.width * (uint64_t)opt.height);
