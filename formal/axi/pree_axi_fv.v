@@ -21,7 +21,9 @@ module pree_axi_fv #(
   parameter CountW   = 6,   // the wrapper's running counts: narrow, so that they wrap
   parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
   parameter Acct     = 0,   // 1: the candidate accounting's invariants (job formal/axi_acct)
-  parameter CoverWrap = 0   // 1: cover photons_done_o wrapping (job formal/axi_narrow: CountW 4)
+  parameter CoverWrap = 0,  // 1: cover photons_done_o wrapping (job formal/axi_narrow: CountW 4)
+  parameter Live     = 0,   // 1: bounded response under a fair host and engine (job formal/axi_live)
+  parameter LiveMax  = 8    // Live: cycles of pending work with no step that fail it
 ) (
   input wire aclk,
   input wire aresetn,
@@ -107,6 +109,8 @@ module pree_axi_fv #(
   (* keep *) wire [PhFifoAW:0] f_t_phf_wp, f_t_phf_rp;
   (* keep *) wire [1:0]  f_t_irq;                  // IRQ_STATUS: {command done, batch done}
   (* keep *) wire        f_t_cmd_done;
+  (* keep *) wire [31:0] f_t_ci;                   // Live: a command's items issued
+  (* keep *) wire        f_t_head_written;         // Live: the FIFO head's candidates all written
   // Acct only (axi_acct/taps_acct.ys, after memory_map): the wrapper's copy of photons_done_o,
   // the ring of in-flight photons' candidate ends and the photon FIFO's ends.
   (* keep *) wire [CountW-1:0] f_t_wdone;
@@ -200,6 +204,43 @@ module pree_axi_fv #(
     cover (irq_o && f_t_irq[0]);                                 // a batch-done interrupt
     cover (f_t_state == 3'd5 && f_t_cmd_done);                   // a radiance pass ends
   end
+
+  // ---------------------------------------------------------------------------------------------
+  // Live: bounded response. While work is pending (a photon offered, a photon in the FIFO or in the
+  // engine, a command running, a result beat waiting), some step happens within LiveMax cycles: a
+  // beat taken on an input stream or sent on m_axis, a photon given to the engine or done, a
+  // candidate entry retired, a command's state or item count moving. Fairness assumed besides the
+  // stub's (a waiting photon taken, the oldest photon done, a pass ended, within 3 or 4 cycles)
+  // and the fair sinks (results and responses taken within StallMax): the host offers a candidate
+  // beat within StallMax cycles whenever the FIFO's head photon still lacks candidates.
+  generate
+    if (Live != 0) begin : g_live
+      reg [CountW-1:0] f_given_q, f_done_q, f_ret_q;
+      reg [2:0]  f_state_q;
+      reg [31:0] f_ci_q;
+      reg [7:0]  f_idle_run, f_owe_run;
+      always @(posedge aclk) begin
+        f_given_q <= f_t_given; f_done_q <= f_t_done; f_ret_q <= f_t_ret;
+        f_state_q <= f_t_state; f_ci_q <= f_t_ci;
+      end
+      wire f_owed   = f_phf_n != 0 && !f_t_head_written;
+      wire f_step   = (s_axis_ph_tvalid && s_axis_ph_tready) ||
+                      (s_axis_cand_tvalid && s_axis_cand_tready) ||
+                      (s_axis_hp_tvalid && s_axis_hp_tready) || (m_axis_tvalid && m_axis_tready) ||
+                      f_t_given != f_given_q || f_t_done != f_done_q || f_t_ret != f_ret_q ||
+                      f_t_state != f_state_q || f_t_ci != f_ci_q;
+      wire f_pend   = s_axis_ph_tvalid || f_phf_n != 0 || f_fly != 0 || f_t_state != 3'd0 ||
+                      m_axis_tvalid;
+      always @(posedge aclk) begin
+        f_idle_run <= (!aresetn || !f_t_rst_n || !f_pend || f_step) ? 8'd0 : f_idle_run + 8'd1;
+        f_owe_run  <= (!aresetn || !f_owed || s_axis_cand_tvalid) ? 8'd0 : f_owe_run + 8'd1;
+      end
+      always @* if (aresetn && f_t_rst_n) begin
+        assume (f_owe_run < StallMax);
+        assert (f_idle_run < LiveMax);
+      end
+    end
+  endgenerate
 
   // photons_done_o wraps: from 2^CountW - 1 to 0 (with CountW 4, 16 photons from reset).
   reg f_done_top_q = 1'b0;
