@@ -110,7 +110,7 @@ module pree_axi_fv #(
   (* keep *) wire [1:0]  f_t_irq;                  // IRQ_STATUS: {command done, batch done}
   (* keep *) wire        f_t_cmd_done;
   (* keep *) wire [31:0] f_t_ci;                   // Live: a command's items issued
-  (* keep *) wire        f_t_head_written;         // Live: the FIFO head's candidates all written
+  (* keep *) wire        f_t_head_left;            // Live: the FIFO head has a photon lacking candidates
   // Acct only (axi_acct/taps_acct.ys, after memory_map): the wrapper's copy of photons_done_o,
   // the ring of in-flight photons' candidate ends and the photon FIFO's ends.
   (* keep *) wire [CountW-1:0] f_t_wdone;
@@ -223,7 +223,7 @@ module pree_axi_fv #(
         f_given_q <= f_t_given; f_done_q <= f_t_done; f_ret_q <= f_t_ret;
         f_state_q <= f_t_state; f_ci_q <= f_t_ci;
       end
-      wire f_owed   = f_phf_n != 0 && !f_t_head_written;
+      wire f_owed   = f_phf_n != 0 && f_t_head_left;
       wire f_step   = (s_axis_ph_tvalid && s_axis_ph_tready) ||
                       (s_axis_cand_tvalid && s_axis_cand_tready) ||
                       (s_axis_hp_tvalid && s_axis_hp_tready) || (m_axis_tvalid && m_axis_tready) ||
