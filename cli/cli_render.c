@@ -18,6 +18,7 @@
 #include "cli_pm.h"
 #include "cli_resume.h"
 #include "cli_series.h"
+#include "cpu_features.h"
 #include "image.h"
 #include "render.h"
 #include "stats_json.h"
@@ -66,6 +67,9 @@ static void render_usage(FILE *f)
         "  --scan S               bucket (default: a block's candidates bucket by bucket, then applied in\n"
         "                         photon order) or photon (photon by photon; the oracle); same bits\n"
         "  --no-skip              disable the skips (zero-weight hit points, empty cells, far candidates)\n"
+        "  --simd L               the vector instructions of the update's screening and the sphere\n"
+        "                         tests: auto (default: the widest the processor has), avx512, avx2\n"
+        "                         or scalar (an absent one is an error); the same bits at every level\n"
         "  --preu P               fp32: the PREE whose radiance pass the image reproduces bit for bit\n"
         "  --pipe-fast            (the order of each pixel's additions, docs/pree_top.md): its PREU count\n"
         "  --layout L             (4, 8 or 16, default 4), its deep PREU pipelines (PipeFast = 1), its\n"
@@ -101,7 +105,7 @@ static void render_usage(FILE *f)
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
        OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES, OPT_WRITE_EVERY, OPT_WRITE_AT,
-       OPT_LIGHT_SAMPLING };
+       OPT_LIGHT_SAMPLING, OPT_SIMD };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -117,6 +121,7 @@ static const struct option render_longopts[] = {
     {"time-limit", required_argument, NULL, OPT_TIME_LIMIT},
     {"max-memory", required_argument, NULL, OPT_MAX_MEMORY},
     {"prees", required_argument, NULL, OPT_PREES},
+    {"simd", required_argument, NULL, OPT_SIMD},
     {"write-every", required_argument, NULL, OPT_WRITE_EVERY},
     {"write-at", required_argument, NULL, OPT_WRITE_AT},
     {"light-sampling", required_argument, NULL, OPT_LIGHT_SAMPLING},
@@ -191,6 +196,12 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             j->light_power = k;
             break;
         }
+        case OPT_SIMD:
+            if (cpu_simd_parse(a.val, &k))
+                return cli_error(&a, "--simd %s: expected auto, avx512, avx2 or scalar", a.val);
+            if (cpu_simd_force(k))
+                return cli_error(&a, "--simd %s: this processor lacks %s", a.val, a.val);
+            break;
         case OPT_WRITE_EVERY:
         case OPT_WRITE_AT: if (cli_series_option(&a, id == OPT_WRITE_EVERY, &j->series)) return 2; break;
         default:

@@ -1,5 +1,6 @@
 /* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
 #include <stdio.h>
+#include "cpu_features.h"
 #include "json_file.h"
 #include "knn_kernel.h"
 #include "stats_json.h"
@@ -96,6 +97,7 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     json_set_str(o, "grid", stats_grid_name(opt->grid));
     json_set_bool(o, "skips", !opt->no_skip && opt->grid == GRID_CELLS);
     json_set_u64(o, "threads", (uint64_t)st->threads);
+    json_set_str(o, "simd", cpu_simd_name(cpu_simd_level()));
     json_set_str(o, "datapath", stats_datapath_name(opt));
     json_set_real(o, "alpha", render_alpha(opt));
     if (opt->precision == PRECISION_FP32) {   /* the PREE whose radiance pass the image reproduces */

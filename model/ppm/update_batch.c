@@ -13,6 +13,7 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#include "cpu_features.h"
 #include "grow.h"
 #include "update_batch.h"
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -128,7 +129,7 @@ int update_batch_prepare(update_batch_t *b, const photon_hits_t *chunks, unsigne
     b->group[ng] = (uint32_t)m;
     b->n_groups = ng;
 #ifdef HAVE_SCREEN_AVX2
-    b->avx2 = !getenv("PREE_NO_AVX2") && __builtin_cpu_supports("avx2");
+    b->avx2 = cpu_simd_level() >= SIMD_AVX2;
 #endif
     /* Gather the hits in key order: independent loads, which the processor overlaps. */
     if (grow_array((void **)&b->sorted, &b->sorted_cap, m, sizeof *b->sorted)) return -1;

@@ -1,6 +1,6 @@
 /* sphere_group.c: all spheres of a small group against one ray, scalar or four at a time. */
 #include <math.h>
-#include <stdlib.h>
+#include "cpu_features.h"
 #include "sphere_group.h"
 
 void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n)
@@ -14,7 +14,7 @@ void sphere_group_init(sphere_group_t *g, const sphere_t *spheres, int n)
         g->rr[i] = real ? spheres[i].radius * spheres[i].radius : -INFINITY;
     }
 #if defined(__x86_64__) && defined(__GNUC__)
-    g->avx2 = __builtin_cpu_supports("avx2") && !getenv("PREE_NO_AVX2");
+    g->avx2 = cpu_simd_level() >= SIMD_AVX2;
 #else
     g->avx2 = 0;
 #endif
