@@ -4,7 +4,8 @@
  *
  * The costs are measured (docs/engine.md, "Memory"): per hit point 148 bytes (cells grid,
  * double), 159 (smallppm), 142 (fp32 paper), 161 (fp32 stable) between 0.6 M and 2.4 M hit points
- * (cornell3, peak resident size; 200 allowed); the photon blocks add about 32 MiB whatever the
+ * (cornell3, peak resident size; 200 allowed), and 12 more for the screening's binary32 prefilter
+ * at a vector level (update_prefilter.h); the photon blocks add about 32 MiB whatever the
  * photon count; the BVH
  * holds 24 to 98 bytes a triangle once built (conference, sibenik), 128 allowed for its build. */
 #ifndef PREE_MEM_CHECK_H

@@ -14,6 +14,7 @@
 #include <time.h>
 #include <unistd.h>
 #include "hp_order.h"
+#include "cpu_features.h"
 #include "grid_refilter.h"
 #include "mem_check.h"
 #include "photon_pass.h"
@@ -75,6 +76,7 @@ static void free_photon_pass(render_session_t *s)
     if (s->bb)
         for (unsigned c = 0; c < TRACE_CHUNKS * SCREEN_BLOCKS_MAX; c++) photon_hits_free(&s->bb->chunk[c]);
     grid_free(&s->grid);
+    update_prefilter_free(&s->prefilter);
     update_batch_free(&s->batch);
     if (s->scratch)
         for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
@@ -202,6 +204,11 @@ static int open_grid(render_session_t *s, const char **phase, char *err, size_t 
     if (res->hp.n && grid_build(&s->grid, opt->grid, &res->hp, st->r0, opt->width, s->photon_major ? s->T : 1,
                                 !s->skip, opt->interrupt, err, errlen))
         return -1;
+    /* The screening's prefilter: bucket-major with the skips, at the chosen vector level. */
+    if (!s->photon_major && s->skip && update_prefilter_build(&s->prefilter, &res->hp, &s->grid, cpu_simd_level())) {
+        snprintf(err, errlen, "out of memory for the grid");
+        return -1;
+    }
     st->r_safe = s->grid.r_safe;
     for (int p = 0; p < s->grid.num_parts; p++) st->grid_entries += s->grid.parts[p].num_entries;
     st->grid_entries_final = st->grid_entries;

@@ -40,6 +40,7 @@ struct render_session {
     size_t grid_dropped_first;   /* grid entries the first block's re-filter dropped */
     size_t npix;
     grid_t grid;
+    update_prefilter_t prefilter;   /* the screening's binary32 prefilter (update_prefilter.h) */
     block_buffers_t *bb;
     tracer_t *tr;
     uint32_t *perm;

@@ -79,6 +79,7 @@ int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, u
      * itself is freed where they do, so the caller passes NULL). */
     s->batch.owner_end = owner == s->owner ? s->owner_end : NULL;
     s->batch.parts = lists;
+    s->batch.prefilter = &s->prefilter;
     for (int p = 0; p < T && !failed; p++) failed |= update_batch_scratch_reset(&s->scratch[p], lists);
     if (failed) return -1;
 #pragma omp parallel num_threads(T) reduction(| : failed)

@@ -27,6 +27,7 @@
 #define RADIX_PARALLEL_MIN 32768   /* keys below which a radix pass runs on one thread */
 #define SCREEN_PREFETCH_GROUPS 2   /* buckets prefetched ahead in the screening */
 #define SCREEN_PREFETCH_MAX 64     /* entries of a bucket prefetched at most */
+#define SCREEN_STAGE_MAX 65536     /* entries a group's prefiltered lists hold at most, all hits together */
 /* The AVX2 screening gathers a hit point's position and normal (hp_hot_t's first six doubles) at
  * the 32-bit signed double index hp * HOT_DOUBLES: up to HOT_GATHER_MAX hit points. */
 #define HOT_DOUBLES (sizeof(hp_hot_t) / sizeof(double))
@@ -165,6 +166,10 @@ void update_batch_scratch_free(update_scratch_t *s)
     free(s->list);
     free(s->sorted);
     free(s->start);
+    for (int k = 0; k < 2; k++) {
+        free(s->stage[k].hp);
+        free(s->stage[k].at);
+    }
     memset(s, 0, sizeof *s);
 }
 
@@ -355,6 +360,17 @@ void update_batch_sorted_at(const update_scratch_t *s, size_t i, uint32_t *hit, 
     *v2 = k->v2;
 }
 
+/* Phase 1 for one hit against candidates e: in AVX2 lanes where chosen, else scalar. */
+static int screen_one(const hitpoints_t *h, double rs2, int skip_radius, precision_t prec, const batch_hit_t *ph,
+                      const grid_cands_t *e, update_stats_t *st, update_scratch_t *s, const update_batch_t *b)
+{
+#ifdef HAVE_SCREEN_AVX2
+    if (b->avx2 && h->n <= HOT_GATHER_MAX) return screen_avx2(h, rs2, skip_radius, ph, prec != PRECISION_DOUBLE, e, st, s, b);
+#endif
+    if (prec != PRECISION_DOUBLE) return screen_fp32(h, rs2, skip_radius, ph, e, st, s, b);
+    return screen_double(h, rs2, skip_radius, ph, e, st, s, b);
+}
+
 /* Ask for the first lines of a bucket's entries: buckets are screened in memory order but
  * far apart, too short for the hardware prefetcher to follow. */
 static void prefetch_cands(const grid_cands_t *c)
@@ -363,12 +379,106 @@ static void prefetch_cands(const grid_cands_t *c)
     for (size_t k = 0; k < n; k += 16) __builtin_prefetch(c->hp + k);
 }
 
+/* The entries of cand that the prefilter keeps for hit ph, into out (cand.count +
+ * PREFILTER_OUT_PAD entries); every entry for a photon beyond the bound's coordinates. */
+static size_t prefilter_hit(const update_prefilter_t *pf, const grid_cands_t *cand, const batch_hit_t *ph, uint32_t *out)
+{
+    if (update_prefilter_covers(pf, ph->x, ph->y, ph->z))
+        return update_prefilter_near(pf, cand->hp, cand->count, ph->x, ph->y, ph->z, out);
+    memcpy(out, cand->hp, cand->count * sizeof *out);
+    return cand->count;
+}
+
+/* Prefilter group `group`'s hits against their bucket into st, and ask for the hit points and
+ * radii of the entries kept, which its exact tests will read; a group of more than
+ * SCREEN_STAGE_MAX entries and hits together is left to be prefiltered hit by hit (st->direct).
+ * 0 or -1 (memory). */
+static int prefilter_group(const update_prefilter_t *pf, const grid_t *g, const update_batch_t *b, size_t group,
+                           const char *radii, size_t radius_size, screen_stage_t *st)
+{
+    const batch_hit_t *sh = b->sorted;
+    const size_t i = b->group[group], end = b->group[group + 1];
+    const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
+    st->count = cand.count;
+    st->direct = cand.count * (end - i) > SCREEN_STAGE_MAX;
+    const size_t cap = st->direct ? cand.count : cand.count * (end - i);
+    if (grow_array((void **)&st->hp, &st->hp_cap, cap + PREFILTER_OUT_PAD + GRID_ENTRY_PAD, sizeof *st->hp) ||
+        grow_array((void **)&st->at, &st->at_cap, end - i + 1, sizeof *st->at))
+        return -1;
+    if (st->direct) return 0;
+    size_t n = 0;
+    st->at[0] = 0;
+    for (size_t j = i; j < end; j++) {
+        uint32_t *out = st->hp + n;
+        const size_t k = prefilter_hit(pf, &cand, &sh[j], out);
+        for (size_t c = 0; c < k; c++) {
+            __builtin_prefetch(&cand.hot[out[c]]);
+            __builtin_prefetch(radii + radius_size * out[c]);
+        }
+        n += k;
+        st->at[j - i + 1] = (uint32_t)n;
+    }
+    memset(st->hp + n, 0, GRID_ENTRY_PAD * sizeof *st->hp);   /* the four-wide loads' padding */
+    return 0;
+}
+
+/* update_batch_screen with the prefilter, as a pipeline over the groups: group + 3's entries and
+ * group + 2's binary32 positions are asked for, group + 1 is prefiltered (asking for the hit
+ * points its lists keep), and group's lists get the exact tests. An entry the prefilter drops is
+ * counted as skipped beyond the safe radius, which is what the exact test would have found. */
+static int screen_prefiltered(const hitpoints_t *h, const grid_t *g, precision_t prec, const update_prefilter_t *pf,
+                              const update_batch_t *b, size_t first, size_t last, update_stats_t *t, update_scratch_t *s)
+{
+    const double rs2 = g->r_safe * g->r_safe;
+    const batch_hit_t *sh = b->sorted;
+    const char *radii = prec == PRECISION_DOUBLE ? (const char *)h->r2 : (const char *)h->r2_f32;
+    const size_t radius_size = prec == PRECISION_DOUBLE ? sizeof *h->r2 : sizeof *h->r2_f32;
+    if (last > b->n_groups) last = b->n_groups;
+    if (first >= last) return 0;
+    if (prefilter_group(pf, g, b, first, radii, radius_size, &s->stage[first & 1])) return -1;
+    for (size_t group = first; group < last; group++) {
+        if (group + 3 < b->n_groups) {
+            const grid_cands_t far = grid_bucket_cands(g, 0, sh[b->group[group + 3]].bucket);
+            prefetch_cands(&far);
+        }
+        if (group + 2 < b->n_groups) {
+            const grid_cands_t next = grid_bucket_cands(g, 0, sh[b->group[group + 2]].bucket);
+            const size_t n = next.count < SCREEN_PREFETCH_MAX ? next.count : SCREEN_PREFETCH_MAX;
+            for (size_t k = 0; k < n; k++) update_prefilter_prefetch(pf, next.hp[k]);
+        }
+        if (group + 1 < last && prefilter_group(pf, g, b, group + 1, radii, radius_size, &s->stage[(group + 1) & 1]))
+            return -1;
+        screen_stage_t *st = &s->stage[group & 1];
+        const size_t i = b->group[group], end = b->group[group + 1];
+        const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
+        t->candidates += cand.count * (end - i);
+        for (size_t j = i; j < end; j++) {
+            grid_cands_t near = {g->hot, st->hp, 0};
+            if (st->direct) {
+                near.count = prefilter_hit(pf, &cand, &sh[j], st->hp);
+                memset(st->hp + near.count, 0, GRID_ENTRY_PAD * sizeof *st->hp);
+            } else {
+                near.hp = st->hp + st->at[j - i];
+                near.count = st->at[j - i + 1] - st->at[j - i];
+            }
+            t->skipped_radius += cand.count - near.count;
+            if (near.count && screen_one(h, rs2, 1, prec, &sh[j], &near, t, s, b)) return -1;
+        }
+    }
+    return 0;
+}
+
 int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec, int skip_radius,
                         const update_batch_t *b, size_t first, size_t last, update_stats_t *st, update_scratch_t *s)
 {
     const double rs2 = g->r_safe * g->r_safe;
     const batch_hit_t *sh = b->sorted;
     update_stats_t t = *st;
+    if (skip_radius && b->prefilter && b->prefilter->xyz) {
+        if (screen_prefiltered(h, g, prec, b->prefilter, b, first, last, &t, s)) return -1;
+        *st = t;
+        return 0;
+    }
     /* The radii the distance test reads: prefetched one bucket ahead. */
     const char *radii = prec == PRECISION_DOUBLE ? (const char *)h->r2 : (const char *)h->r2_f32;
     const size_t radius_size = prec == PRECISION_DOUBLE ? sizeof *h->r2 : sizeof *h->r2_f32;
@@ -391,16 +501,8 @@ int update_batch_screen(const hitpoints_t *h, const grid_t *g, precision_t prec,
         const grid_cands_t cand = grid_bucket_cands(g, 0, sh[i].bucket);
         t.candidates += cand.count * (end - i);
         if (!cand.count) continue;
-        for (size_t j = i; j < end; j++) {
-            int rc;
-#ifdef HAVE_SCREEN_AVX2
-            if (b->avx2 && h->n <= HOT_GATHER_MAX) rc = screen_avx2(h, rs2, skip_radius, &sh[j], prec != PRECISION_DOUBLE, &cand, &t, s, b);
-            else
-#endif
-            if (prec != PRECISION_DOUBLE) rc = screen_fp32(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
-            else rc = screen_double(h, rs2, skip_radius, &sh[j], &cand, &t, s, b);
-            if (rc) return -1;
-        }
+        for (size_t j = i; j < end; j++)
+            if (screen_one(h, rs2, skip_radius, prec, &sh[j], &cand, &t, s, b)) return -1;
     }
     *st = t;
     return 0;

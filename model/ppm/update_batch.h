@@ -4,6 +4,7 @@
 #define PREE_UPDATE_BATCH_H
 
 #include "update.h"
+#include "update_prefilter.h"
 
 /* A hit's position and normal, copied in bucket order so that screening reads in sequence. */
 typedef struct {
@@ -22,6 +23,8 @@ typedef struct {
     const uint16_t *owner;      /* set by the caller: owning part of each hit point (NULL: all 0) */
     const uint32_t *owner_end;  /* or (not NULL) as ranges: part p owns [owner_end[p-1], owner_end[p]) */
     int parts;                  /* with owner_end: the parts */
+    const update_prefilter_t *prefilter;  /* set by the caller: the binary32 prefilter (NULL or none
+                                           * built: the exact tests alone) */
     int avx2;                   /* screen in AVX2 lanes */
 } update_batch_t;
 
@@ -34,6 +37,15 @@ size_t update_batch_kept_bytes(void);
 /* A part's kept candidates from one screening thread. */
 typedef struct { void *v; size_t n, cap; } kept_list_t;
 
+/* The prefilter's lists of one bucket group (update_batch.c): hit k of the group keeps the
+ * entries hp[at[k] .. at[k + 1]) of its bucket's count; with direct, each hit is prefiltered
+ * into hp when screened (a group too large to hold every list). */
+typedef struct {
+    uint32_t *hp, *at;
+    size_t hp_cap, at_cap, count;
+    int direct;
+} screen_stage_t;
+
 /* One thread's working memory, reused from block to block: what it kept while screening (a list
  * per owning part), and, as the applier of part p, that part's candidates grouped by hit. */
 typedef struct {
@@ -41,6 +53,7 @@ typedef struct {
     int num_lists;
     void *sorted;
     uint32_t *start;
+    screen_stage_t stage[2];    /* the prefilter's lists of the group screened and of the next */
     size_t n_sorted, sorted_cap, start_cap;
 } update_scratch_t;
 
