@@ -3,6 +3,7 @@
  * separate multiplies and adds (no fused multiply-add: -ffp-contract=off and the intrinsics
  * below), so the three pass exactly the same photons. */
 #include <immintrin.h>
+#include "cpu_features.h"
 #include "knn_kernel.h"
 
 static unsigned long long calls[4];   /* kernel calls by path (knn_kernel_id_t), every thread */
@@ -91,8 +92,7 @@ static size_t kernel_avx512(const photon_tree_t *t, const kd_range_t *r, size_t 
 
 knn_kernel_fn knn_kernel_get(knn_kernel_id_t id, knn_kernel_id_t *taken)
 {
-    __builtin_cpu_init();
-    const int has512 = __builtin_cpu_supports("avx512f"), has2 = __builtin_cpu_supports("avx2");
+    const int has512 = cpu_simd_supported(SIMD_AVX512), has2 = cpu_simd_supported(SIMD_AVX2);
     if (id == KNN_KERNEL_AUTO) id = has512 ? KNN_KERNEL_AVX512 : has2 ? KNN_KERNEL_AVX2 : KNN_KERNEL_SCALAR;
     *taken = id;
     switch (id) {

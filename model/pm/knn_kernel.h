@@ -7,7 +7,7 @@
  * (the exact test): the prefilter's bounds are widened past the float rounding so no photon
  * the exact test would take is dropped.
  *
- * The path is chosen at run time (__builtin_cpu_supports): the widest the processor has, or
+ * The path is chosen at run time (cpu_features.h: cpu_simd_supported): the widest the processor has, or
  * the one asked for (--knn-kernel). */
 #ifndef PREE_KNN_KERNEL_H
 #define PREE_KNN_KERNEL_H
