@@ -1,4 +1,4 @@
-# Fuzzing (issue 14): libFuzzer harnesses (clang-14, libclang-rt-14-dev) for the scene parser
+# Fuzzing (issue 14): libFuzzer harnesses (clang-14, libclang-rt-14-dev) for the scene parser, the pbrt-v4 reader
 # and the mesh loader, built with AddressSanitizer and UndefinedBehaviorSanitizer from the
 # scene sources alone (no OpenMP, Embree or OpenImageIO in the harness).
 #   make fuzz [FUZZ_TIME=600]  each harness FUZZ_TIME seconds on a working corpus in
@@ -7,7 +7,7 @@
 # The short run inside make test: tests/checks/fuzz_short.sh (30 s a harness).
 FUZZ_CC    ?= clang-14
 FUZZ_DIR   := $(BUILD)/fuzz
-FUZZ_NAMES := scene mesh
+FUZZ_NAMES := scene mesh pbrt
 FUZZ_BINS  := $(FUZZ_NAMES:%=$(FUZZ_DIR)/fuzz_%)
 FUZZ_SRC   := $(wildcard model/scene/*.c) model/util/file_in.c model/util/text_escape.c
 FUZZ_FLAGS := -std=c11 -D_GNU_SOURCE -g -O1 -fsanitize=fuzzer,address,undefined \

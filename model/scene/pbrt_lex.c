@@ -175,9 +175,18 @@ static int value_fits(const pbrt_param_t *pp, const pbrt_tok_t *t)
     return t->kind == PT_NUMBER;
 }
 
+static int params_read(pbrt_lex_t *lx, pbrt_params_t *ps);
+
 int pbrt_params_read(pbrt_lex_t *lx, pbrt_params_t *ps)
 {
     memset(ps, 0, sizeof *ps);
+    const int rc = params_read(lx, ps);
+    if (rc) pbrt_params_free(ps);   /* nothing is left to the caller on an error */
+    return rc;
+}
+
+static int params_read(pbrt_lex_t *lx, pbrt_params_t *ps)
+{
     pbrt_tok_t t;
     for (;;) {
         if (pbrt_lex_peek(lx, &t)) return -1;

@@ -63,7 +63,7 @@ int pbrt_lex_peek(pbrt_lex_t *lx, pbrt_tok_t *t);
 /* Format "FILE:LINE: message" (at: the token where it went wrong) into err; returns -1. */
 int pbrt_fail(pbrt_lex_t *lx, const pbrt_tok_t *at, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
-/* The parameter list after a directive (until the next word): 0, or -1 with err. */
+/* The parameter list after a directive (until the next word): 0, or -1 with err (ps then empty). */
 int pbrt_params_read(pbrt_lex_t *lx, pbrt_params_t *ps);
 void pbrt_params_free(pbrt_params_t *ps);
 /* The parameter NAME (marked used), or NULL. */

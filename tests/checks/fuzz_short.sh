@@ -2,11 +2,11 @@
 # The short fuzz run of make test: each libFuzzer harness (tests/fuzz, make fuzz for long runs)
 # for FUZZ_SHORT seconds (default 30) on a copy of its seed corpus. Fails on any crash, hang
 # (10 s a unit), leak or sanitizer report, naming the input that gave it.
-# cost: 62 (its seconds in a serial run; the runner starts costly checks first)
+# cost: 93 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
 secs=${FUZZ_SHORT:-30}
 export LSAN_OPTIONS=suppressions=$ROOT/tests/lsan.supp:print_suppressions=0
-for n in scene mesh; do
+for n in scene mesh pbrt; do
   bin="$ROOT/build/fuzz/fuzz_$n"
   [ -x "$bin" ] || fail "$bin not built (make fuzz-build)"
   mkdir -p "$TMP/corpus-$n"
