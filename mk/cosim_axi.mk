@@ -10,6 +10,9 @@
 #   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
 #                      pree_axi (d: p paper, s stable; n PREUs; f: PipeFast 1), built only when
 #                      asked (the regression builds axi-p4: tests/checks/axi_cosim.sh)
+#   build/axi/quick/pree-cosim-axi-<d><n>[f]  the same program built with g++ -O0 (the same
+#                      cycles, a slower simulation, a build many times cheaper); the regression
+#                      builds p8 and p16f (AXI_QUICK_TAGS: tests/checks/axi_cosim_wide.sh)
 #   make sim-axi-wide  the wrapper with 8 PREUs (two photons a beat) against the model
 #                      (tb/axi/axi_cosim_wide.sh; its model takes about 15 minutes to build, so it
 #                      is outside `make test`)
@@ -27,9 +30,10 @@ AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x
 # in `make test` (the C++ of a model compiles many times faster; the RTL's cycles are the same,
 # the simulation slower). axi_prog FLAVOUR TAG: the program's path.
 axi_prog    = $(if $(1),$(AXI_DIR)/quick,$(BUILD))/pree-cosim-axi-$(2)
+AXI_QUICK_TAGS := p8 p16f
 SYNTH_AXI_PREUS ?= 4
 
-TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4
+TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4 $(foreach t,$(AXI_QUICK_TAGS),$(call axi_prog,q,$(t)))
 AXI_FULL_TAGS ?= p4 p8 p16 p4f p8f p16f s4 s4f
 LINT_TARGETS  += lint-axi
 
