@@ -41,6 +41,7 @@ help:
 	@echo "make test    the full regression (ends with 'N passed, N failed')"
 	@echo "make check   the quick regression for iteration"
 	@echo "make bench   speed, memory and run-time-against-error figures"
+	@echo "make config  write the configuration table's Verilog, C and make copies"
 	@echo "make report  one HTML page of the last run, bench, co-simulations, synthesis and test: out/report/"
 
 # Install every Debian package the project needs (quiet when all are present).
@@ -56,8 +57,16 @@ VHARNESS_INC := -I$(CURDIR)/tb/lib
 
 # Each fragment owns one area and appends to TEST_PREREQS, LINT_TARGETS, SYNTH_TARGETS,
 # SIM_TARGETS; its regression checks live in tests/checks/*.sh.
-include mk/model.mk
-include $(sort $(filter-out mk/model.mk,$(wildcard mk/*.mk)))
+# mk/config.mk comes first: the configuration table's make variables, which the others read.
+include mk/config.mk mk/model.mk
+include $(sort $(filter-out mk/config.mk mk/model.mk,$(wildcard mk/*.mk)))
+
+# The configuration table (config/pree_config.json) writes its copies: rtl/pree_unit_stages.vh,
+# model/pree/pree_config.h, mk/config.mk (scripts/pree_config.py; tests/checks/config_table.sh
+# fails when one is stale or the RTL disagrees with the table).
+.PHONY: config
+config:
+	@python3 scripts/pree_config.py generate
 
 # The pree program: the command line (cli/) over the engine (libpree.a); no Verilator. Its
 # `cosim` command runs the co-simulation programs of mk/cosim.mk.

@@ -136,13 +136,13 @@ int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return AXI_HPB; }
 // pree_axi's pree_top with the units' default stages for PipeFast (AXI_PF): 1 + the PREU's
 // update latency (PipeFast 0: 10 paper, 12 stable; PipeFast 1: 48, 52), as rtl/pree_top.v's
 // WIN_UPD (cosim_main.c checks it against the host's own figure).
-int cosim_rtl_update_window(cosim_rtl_t *) { return AXI_PF ? (AXI_DP ? 53 : 49) : (AXI_DP ? 13 : 11); }
+int cosim_rtl_update_window(cosim_rtl_t *) { return PREE_UPDATE_WINDOW(AXI_DP, AXI_PF); }
 // ... and PipeFast 1's registered flow (A's offer register, B's queue) with PipeFast 1.
 int cosim_rtl_reg_flow(cosim_rtl_t *) { return AXI_PF ? 1 : 0; }
 // The wrapper's PhotonsPerCycle (photon slots a beat, passed to its pree_top); --model-only is
 // for the pree_top programs.
 int cosim_rtl_ppc(cosim_rtl_t *) { return AXI_PPC; }
-int cosim_rtl_radiance_depth(cosim_rtl_t *) { return AXI_PF ? 64 : 12; }   // RAD_LAT
+int cosim_rtl_radiance_depth(cosim_rtl_t *) { return PREE_RADIANCE_DEPTH(AXI_PF); }   // RAD_LAT
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }
 int cosim_rtl_config(int, int *, int *) { return -1; }

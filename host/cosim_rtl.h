@@ -32,20 +32,18 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include "pree_config.h"
 #include "preu_state.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* pree_top parameters used by the co-simulation builds (mk/cosim.mk passes the same). */
-#define COSIM_HPAW  18   /* up to 262144 hit points */
-#define COSIM_IDXAW 12   /* 4096 index-table entries */
-#define COSIM_PXAW  17   /* up to 131072 pixels */
-#define COSIM_CNTW  16   /* candidates per photon below 65536 */
+/* pree_top parameters of the co-simulation builds: COSIM_HPAW (hit-point address bits), _IDXAW,
+ * _PXAW, _CNTW, each PREU count's banks and photons a cycle (COSIM_HPB_n, _PXB_n, _PPC_n),
+ * COSIM_MAX_PREU and COSIM_MAX_PPC come from the configuration table (pree_config.h, which
+ * mk/config.mk matches); pree_top's default CtrW is the models' too. */
 #define COSIM_CTRW  48   /* bits of each counter in cnt_o (pree_top's CtrW) */
-#define COSIM_MAX_PREU 16
-#define COSIM_MAX_PPC  4 /* photon slots (PhotonsPerCycle) of the widest model */
 #define COSIM_NCNT (7 + COSIM_MAX_PREU)
 
 /* Counter numbers in pree_top's cnt_o. */

@@ -85,7 +85,7 @@ cosim_shadow_t *cosim_shadow_new(int preu, int hp_bank_w, int win, int ppc, int 
  * (cosim_rtl_update_window) and checks it against this. */
 static inline int cosim_update_window(int datapath, int pipe_fast)
 {
-    return pipe_fast ? (datapath ? 53 : 49) : (datapath ? 13 : 11);
+    return PREE_UPDATE_WINDOW(datapath, pipe_fast);
 }
 /* ADISO-REC's pipeline depth in pree_top (its RAD_LAT, the PREU's radiance latency: the same for
  * both datapaths), which sets the radiance pass's issue order and so the image's rounding: the

@@ -27,32 +27,23 @@
 # only switched on by --trace; X assignments resolved the fast way (no random X).
 
 COSIM_DIR    := $(BUILD)/cosim
-COSIM_PREUS  := 4 8 16
 COSIM_RTL    := $(shell grep -v '^//' rtl/pree.f)   # the RTL filelist (pree_top and its wrappers)
 COSIM_INCS   := $(wildcard rtl/*.vh)   # the RTL's include files
 VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
-# Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders candidates), pixels
-# 2^(log2 NumPreu + 2). The model directory names carry them (and a version of the bank hash),
-# so a change never reuses a stale model.
-COSIM_HPB_4 := 6
-COSIM_HPB_8 := 7
-COSIM_HPB_16 := 8
-COSIM_PXB_4 := 4
-COSIM_PXB_8 := 5
-COSIM_PXB_16 := 6
-# Photons AFTSO-HpUOC takes per cycle (PhotonsPerCycle): NumPreu / 4, so that the intake offers
-# 4 x NumPreu / 4 = NumPreu operations a cycle already at 4 hit points a photon (cornell3
-# averages 5.33 with the default skips; one photon a cycle capped 8 PREUs at 66.6%).
-COSIM_PPC_4 := 1
-COSIM_PPC_8 := 2
-COSIM_PPC_16 := 4
-COSIM_STABLE_PREUS ?= 4
-COSIM_FAST_PREUS ?=
+# The models' parameters come from the configuration table (config/pree_config.json, through
+# mk/config.mk): widths (COSIM_WIDTH_PARAMS) and, per PREU count, COSIM_HPB_n, COSIM_PXB_n,
+# COSIM_PPC_n. Banks: hit points 2^(log2 NumPreu + 4) (hashed; few conflicts once the host orders
+# candidates), pixels 2^(log2 NumPreu + 2). The model directory names carry them (and a version
+# of the bank hash), so a change never reuses a stale model. Photons AFTSO-HpUOC takes per cycle
+# (PhotonsPerCycle): NumPreu / 4, so that the intake offers 4 x NumPreu / 4 = NumPreu operations
+# a cycle already at 4 hit points a photon (cornell3 averages 5.33 with the default skips; one
+# photon a cycle capped 8 PREUs at 66.6%). The regression's models: COSIM_PREUS (paper),
+# COSIM_STABLE_PREUS, COSIM_FAST_PREUS (both overridable) and COSIM_EXTRA_TAGS.
 # $(1): PREU count, $(2): p (paper) or s (stable), with f for PipeFast = 1 (pf, sf); the model's
 # tag (p4, s4, p4f, ...) names its directory, its class and its program.
 cosim_tag     = $(subst f,,$(2))$(1)$(findstring f,$(2))
 COSIM_MDIR    = $(COSIM_DIR)/vl2_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
-COSIM_GPARAMS = -GNumPreu=$(1) -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16 \
+COSIM_GPARAMS = -GNumPreu=$(1) $(COSIM_WIDTH_PARAMS) \
                 -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GPhotonsPerCycle=$(COSIM_PPC_$(1)) \
                 -GDatapath=$(if $(findstring s,$(2)),1,0) -GPipeFast=$(if $(findstring f,$(2)),1,0)
 COSIM_MODELS := $(foreach p,$(COSIM_PREUS),$(p):p) $(foreach p,$(COSIM_STABLE_PREUS),$(p):s) \
@@ -79,7 +70,7 @@ cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),
                  -include $(call cosim_cls,$(m)).h -include $(call cosim_cls,$(m))_pree_top.h) \
                '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(findstring s,$(call cosim_d,$(m))),1,0),$(if $(findstring f,$(call cosim_d,$(m))),1,0)))'
 
-TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS) $(BUILD)/pree-cosim-p4f   # p4f: tests/checks/cosim_deep.sh
+TEST_PREREQS  += $(COSIM_BENCH) $(COSIM_PROGS) $(COSIM_EXTRA_TAGS:%=$(BUILD)/pree-cosim-%)   # p4f: tests/checks/cosim_deep.sh
 SIM_TARGETS   += sim-top
 LINT_TARGETS  += lint-top
 SYNTH_TARGETS += synth-top
@@ -106,7 +97,7 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench (COSIM_BENCH_MODELS: those and the PipeFast 1 model with 4 PREUs,
 # built for tests/checks/cosim_deep.sh anyway, for the bench's deep-pipeline traces).
-COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC) $(foreach p,4 8 16,-DCOSIM_HPB_$(p)=$(COSIM_HPB_$(p)) -DCOSIM_PPC_$(p)=$(COSIM_PPC_$(p)))
+COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC)
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
@@ -115,8 +106,8 @@ $(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(COSI
                           $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
-$(foreach p,4 8 16,$(foreach d,p s pf sf,$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
+$(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
+$(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
 
 COSIM_BENCH_MODELS := $(COSIM_MODELS) $(if $(filter 4:pf,$(COSIM_MODELS)),,4:pf)
 COSIM_BENCH_LIBS   := $(foreach m,$(COSIM_BENCH_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)

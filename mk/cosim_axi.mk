@@ -30,10 +30,9 @@ AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x
 # in `make test` (the C++ of a model compiles many times faster; the RTL's cycles are the same,
 # the simulation slower). axi_prog FLAVOUR TAG: the program's path.
 axi_prog    = $(if $(1),$(AXI_DIR)/quick,$(BUILD))/pree-cosim-axi-$(2)
-AXI_QUICK_TAGS := p8 p16f
 SYNTH_AXI_PREUS ?= 4
 
-TEST_PREREQS  += $(BUILD)/pree-cosim-axi-p4 $(foreach t,$(AXI_QUICK_TAGS),$(call axi_prog,q,$(t)))
+TEST_PREREQS  += $(AXI_REGRESSION_TAGS:%=$(BUILD)/pree-cosim-axi-%) $(foreach t,$(AXI_QUICK_TAGS),$(call axi_prog,q,$(t)))
 AXI_FULL_TAGS ?= p4 p8 p16 p4f p8f p16f s4 s4f
 LINT_TARGETS  += lint-axi
 

@@ -16,36 +16,19 @@
 #   make synth-fp32        yosys synth_xilinx per configuration (FP32_UNITS and the PipeFast = 1
 #                          ones), latch and loop checks, resource table in
 #                          $(BUILD)/fp32/synth/resources.md
-# "div8" is the divider's deeper configuration (parameter Stages = 8, latency 8); it goes
-# through the same benches as the default (Stages = 4). The configurations of FP32_DEEP
-# (docs/fpga.md): <unit>_fast = the unit with PipeFast = 1, its deep stage plan; div2, div12,
-# div20 = the divider with Stages 2, 12, 20. They go through the same benches; their Verilator
-# models are built on demand (not in TEST_PREREQS), so that the quick regression stays fast.
+# The bench configurations, each unit's module and its Stages range come from the configuration
+# table (config/pree_config.json, through mk/config.mk): FP32_UNITS (the units at their defaults
+# and "div8", the divider with Stages = 8), built for the regression; FP32_DEEP (docs/fpga.md:
+# <unit>_fast = the unit with PipeFast = 1, its deep stage plan; div2, div12, div20 = the divider
+# with Stages 2, 12, 20; <unit>_ecp5: built with PREE_ECP5_DSP, the products in ECP5 MULT18X18D
+# primitives with their own registers (rtl/pree_fp32_dsp_mul.v, the FPGA timing flow's form),
+# simulated by tb/fpga/MULT18X18D.v), whose Verilator models are built on demand (not in
+# TEST_PREREQS), so that the quick regression stays fast. Each goes through the same benches at
+# the latency its table row gives.
 
-FP32_UNITS    := add mul sqr div cmp div8 wacc u2f
-# Deep configurations: <name> := <unit> <PipeFast> <Stages, or - for PipeFast's> <latency> [ecp5].
-# The latency is what the benches require; for PipeFast = 1 it pins the unit's deep plan. ecp5:
-# built with PREE_ECP5_DSP, the products in ECP5 MULT18X18D primitives with their own registers
-# (rtl/pree_fp32_dsp_mul.v, the FPGA timing flow's form), simulated by tb/fpga/MULT18X18D.v.
-FP32_CFG_add_fast  := add 1 - 7
-FP32_CFG_mul_fast  := mul 1 - 7
-FP32_CFG_sqr_fast  := sqr 1 - 6
-FP32_CFG_div_fast  := div 1 - 31
-FP32_CFG_wacc_fast := wacc 1 - 5
-FP32_CFG_u2f_fast  := u2f 1 - 5
-FP32_CFG_div2      := div 0 2 2
-FP32_CFG_div12     := div 0 12 12
-FP32_CFG_div20     := div 0 20 20
-FP32_CFG_mul_ecp5  := mul 1 - 7 ecp5
-FP32_CFG_sqr_ecp5  := sqr 1 - 6 ecp5
-FP32_FAST     := add_fast mul_fast sqr_fast div_fast wacc_fast u2f_fast
-FP32_DEEP     := $(FP32_FAST) div2 div12 div20 mul_ecp5 sqr_ecp5
 FP32_DIR      := $(BUILD)/fp32
 FP32_RTL      := $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
-# The module of each unit: pree_fp32_<unit> unless named here.
-FP32_TOP_wacc := pree_wacc
-FP32_TOP_u2f  := pree_u64_to_f32
-fp32_top       = $(or $(FP32_TOP_$(1)),pree_fp32_$(1))
+fp32_top       = $(FP32_TOP_$(1))
 FP32_QUICK    ?= 1000000
 FP32_FULL     ?= 10000000
 FP32_IV_QUICK ?= 20000
@@ -97,7 +80,7 @@ $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/fp
 
 $(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
+	iverilog -g2005 -Wall -Irtl $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
 	  -o $$@ -y rtl $(if $(filter cmp,$(2)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
 	  rtl/$(call fp32_top,$(2)).v
 
@@ -116,16 +99,14 @@ sim-fp32-full-iv-$(1): $(FP32_DIR)/tb_fp32_$(1).vvp $(FP32_DIR)/fp32_vecgen
 	$(FP32_DIR)/fp32_vecgen $(2) $(FP32_IV_FULL) $(FP32_SEED) $(FP32_DIR)/vec_$(1)_full.txt
 	vvp -N $(FP32_DIR)/tb_fp32_$(1).vvp +vec=$(FP32_DIR)/vec_$(1)_full.txt +seed=$(FP32_SEED)
 endef
-$(foreach u,add mul sqr div cmp wacc u2f,$(eval $(call FP32_UNIT_RULES,$(u),$(u),,,)))
-$(eval $(call FP32_UNIT_RULES,div8,div,-GStages=8,-DFP32_DIV_STAGES=8,-DDIV_STAGES=8))
-
-# A deep configuration $(1) from its FP32_CFG_ line: words 1 unit, 2 PipeFast, 3 Stages, 4 latency.
+# A configuration $(1) from its FP32_CFG_ line: words 1 unit, 2 PipeFast, 3 Stages, 4 latency.
 fp32_cfg        = $(word $(2),$(FP32_CFG_$(1)))
 fp32_cfg_stages = $(if $(filter -,$(call fp32_cfg,$(1),3)),,$(call fp32_cfg,$(1),3))
 fp32_cfg_ecp5   = $(if $(filter ecp5,$(call fp32_cfg,$(1),5)),-DPREE_ECP5_DSP -y tb/fpga)
-fp32_cfg_vl     = -GPipeFast=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-GStages=$(call fp32_cfg_stages,$(1))) $(call fp32_cfg_ecp5,$(1))
+fp32_cfg_params = $(if $(filter cmp,$(call fp32_cfg,$(1),1)),,-GPipeFast=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-GStages=$(call fp32_cfg_stages,$(1))))
+fp32_cfg_vl     = $(call fp32_cfg_params,$(1)) $(call fp32_cfg_ecp5,$(1))
 fp32_cfg_iv     = -DUNIT_PIPEFAST=$(call fp32_cfg,$(1),2) $(if $(call fp32_cfg_stages,$(1)),-DUNIT_STAGES=$(call fp32_cfg_stages,$(1))) -DUNIT_LATENCY=$(call fp32_cfg,$(1),4) $(call fp32_cfg_ecp5,$(1))
-$(foreach c,$(FP32_DEEP),$(eval $(call FP32_UNIT_RULES,$(c),$(call fp32_cfg,$(c),1),$(call fp32_cfg_vl,$(c)),-DFP32_LATENCY=$(call fp32_cfg,$(c),4),$(call fp32_cfg_iv,$(c)))))
+$(foreach c,$(FP32_UNITS) $(FP32_DEEP),$(eval $(call FP32_UNIT_RULES,$(c),$(call fp32_cfg,$(c),1),$(call fp32_cfg_vl,$(c)),-DFP32_LATENCY=$(call fp32_cfg,$(c),4),$(call fp32_cfg_iv,$(c)))))
 
 sim-fp32: $(foreach u,$(FP32_UNITS),sim-fp32-vl-$(u) sim-fp32-iv-$(u))
 sim-fp32-full: $(foreach u,$(FP32_UNITS),sim-fp32-full-vl-$(u) sim-fp32-full-iv-$(u)) sim-fp32-sweep-sqr
@@ -136,19 +117,14 @@ sim-fp32-full-deep: $(foreach u,$(FP32_DEEP),sim-fp32-full-vl-$(u) sim-fp32-full
 
 # Every supported Stages value of every unit, Icarus (compiles in about a second), directed
 # list plus FP32_STAGES_N random vectors each: the stage plans between the named configurations.
+# (FP32_STAGES_<unit>: the table's range, mk/config.mk.)
 FP32_STAGES_N ?= 5000
-FP32_STAGES_add  := 1 2 3 4 5 6 7
-FP32_STAGES_mul  := 1 2 3 4 5 6 7 8
-FP32_STAGES_sqr  := 1 2 3 4 5 6
-FP32_STAGES_div  := $(shell seq 2 31)
-FP32_STAGES_wacc := 1 2 3 4 5
-FP32_STAGES_u2f  := 1 2 3 4 5
 sim-fp32-stages: $(FP32_DIR)/fp32_vecgen | $(DEPS_STAMP)
 	@set -e; mkdir -p $(FP32_DIR)/stages; \
-	$(foreach u,add mul sqr div wacc u2f, \
+	$(foreach u,$(FP32_PIPELINED), \
 	  $(FP32_DIR)/fp32_vecgen $(u) $(FP32_STAGES_N) $(FP32_SEED) $(FP32_DIR)/stages/vec_$(u).txt; \
 	  for s in $(FP32_STAGES_$(u)); do \
-	    cmd="iverilog -g2005 -Wall -DUNIT_$(shell echo $(u) | tr a-z A-Z) -DUNIT_STAGES=$$s -DUNIT_LATENCY=$$s -o $(FP32_DIR)/stages/$(u)$$s.vvp -y rtl tb/fp32/tb_fp32_pipe.v rtl/$(call fp32_top,$(u)).v"; \
+	    cmd="iverilog -g2005 -Wall -Irtl -DUNIT_$(shell echo $(u) | tr a-z A-Z) -DUNIT_STAGES=$$s -DUNIT_LATENCY=$$s -o $(FP32_DIR)/stages/$(u)$$s.vvp -y rtl tb/fp32/tb_fp32_pipe.v rtl/$(call fp32_top,$(u)).v"; \
 	    $$cmd; \
 	    vvp -N $(FP32_DIR)/stages/$(u)$$s.vvp +vec=$(FP32_DIR)/stages/vec_$(u).txt +seed=$(FP32_SEED) \
 	      || { echo "sim-fp32-stages: $(u) Stages=$$s failed; rerun: $$cmd && vvp -N $(FP32_DIR)/stages/$(u)$$s.vvp +vec=$(FP32_DIR)/stages/vec_$(u).txt"; exit 1; }; \

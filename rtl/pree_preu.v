@@ -78,9 +78,12 @@ module pree_preu #(
   localparam [31:0] PI     = 32'h4049_0FDB;  // (float)3.14159265358979
   // Each unit's latency: its operand registers (IR) and its Stages (the unit's, below: A - IR ..).
   localparam IR = preu_in_regs(PipeFast);
-  localparam A = preu_unit_lat(0, PipeFast, AddStages), M = preu_unit_lat(1, PipeFast, MulStages);
-  localparam Q = preu_unit_lat(2, PipeFast, SqrStages), D = preu_unit_lat(3, PipeFast, DivStages);
-  localparam U = preu_unit_lat(4, PipeFast, U2fStages), W = preu_unit_lat(5, PipeFast, WaccStages);
+  localparam A = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
+  localparam M = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
+  localparam Q = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
+  localparam D = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
+  localparam U = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
+  localparam W = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
   // The latencies and the pixel-sum request stage, public to the Verilator benches.
   localparam UPD_LATENCY /*verilator public*/ = preu_upd_latency(Datapath, A, M, Q, D, U, W);
   localparam RAD_LATENCY /*verilator public*/ = preu_rad_latency(A, M, D);

@@ -17,17 +17,10 @@
 // Radiance (both): a = PI * r2 (mul, 0), b = a * NE (mul, m), k = 1 / b (div, 2m), c = tau * k
 // (mul, 2m + d), L' = L + c (add, 3m + d; the pixel sum is asked for one stage before).
 
-// A unit's stages: stages when set (non-zero), else the unit's own default for pipe_fast (the
-// units' headers: add 2 / 7, mul 2 / 7, sqr 2 / 6, div 4 / 31, u2f 2 / 5, wacc 2 / 5).
-// kind: 0 add, 1 mul, 2 sqr, 3 div, 4 u2f, 5 wacc.
-function integer preu_stages;
-  input integer kind, pipe_fast, stages;
-  begin
-    if (stages != 0)         preu_stages = stages;
-    else if (pipe_fast == 0) preu_stages = (kind == 3) ? 4 : 2;
-    else                     preu_stages = (kind == 3) ? 31 : (kind == 2) ? 6 : (kind >= 4) ? 5 : 7;
-  end
-endfunction
+// The unit kinds (PREU_ADD .. PREU_WACC) and preu_stages(kind, pipe_fast, stages), a unit's
+// stages: stages when set (non-zero), else the unit's own default for pipe_fast; generated from
+// the configuration table (config/pree_config.json).
+`include "pree_unit_stages.vh"
 
 // Operand registers in front of every unit (each unit's InRegs): one with PipeFast 1, so that
 // the mode's operand selects (some thousand select bits from one input) end in a register of

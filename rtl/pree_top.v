@@ -111,12 +111,12 @@ module pree_top #(
   // PipeFast 0); radiance, from the pixel read (lreq, RAD_LAT - AddStages - 1 after issue) to
   // its write (RAD_LAT after issue): the add's latency + 1 (3 with PipeFast 0). RAD_LAT is also
   // ADISO-REC's depth, which sets the radiance pass's issue order (public, for the host's check).
-  localparam ST_ADD    = preu_unit_lat(0, PipeFast, AddStages);
-  localparam ST_MUL    = preu_unit_lat(1, PipeFast, MulStages);
-  localparam ST_DIV    = preu_unit_lat(3, PipeFast, DivStages);
-  localparam ST_SQR    = preu_unit_lat(2, PipeFast, SqrStages);
-  localparam ST_U2F    = preu_unit_lat(4, PipeFast, U2fStages);
-  localparam ST_WACC   = preu_unit_lat(5, PipeFast, WaccStages);
+  localparam ST_ADD    = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
+  localparam ST_MUL    = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
+  localparam ST_DIV    = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
+  localparam ST_SQR    = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
+  localparam ST_U2F    = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
+  localparam ST_WACC   = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
   localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, ST_SQR, ST_DIV, ST_U2F, ST_WACC);
   localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
   localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regression runner: every cmocka unit binary in build/tests and every script in tests/checks.
+# Regression runner: every cmocka unit binary in build/tests and every script in tests/checks (a
+# parameterised one, "# cases:" below, once per case).
 # Usage: run-tests.sh [quick|full]. A check script declares "# level: quick" to run in both;
 # the rest run only at the full level. Writes build/test-results.xml (JUnit XML: one testcase
 # per unit test and per check, with time, failure message, log and rerun command; see
@@ -50,38 +51,50 @@ done
 # make test-prereqs. Checks that declare "# cost: SECONDS" (their time in a serial run; it only
 # orders the start) start first, longest first, so that the slowest do not start last; the rest
 # follow in name order. Results print as checks end.
+# A parameterised check declares "# cases: COMMAND": the command (run in the repository) prints
+# one "name level [what]" line per case, and the check runs once per case (`bash CHECK name`), counted
+# and reported under the case's name, at the case's level.
 mapfile -t order < <(for chk in "$checks"/*.sh; do
   [ -f "$chk" ] || continue
+  cases=$(sed -n 's/^# cases: //p' "$chk" | head -1)
+  if [ -n "$cases" ]; then
+    bash -c "$cases" | while read -r name clevel _; do
+      if [ "$level" = quick ] && [ "$clevel" != quick ]; then continue; fi
+      printf '0\t%s\t%s\n' "$chk" "$name"
+    done
+    continue
+  fi
   if [ "$level" = quick ] && ! grep -q '^# level: quick' "$chk"; then continue; fi
   cost=$(sed -n 's/^# cost: \([0-9]*\).*/\1/p' "$chk" | head -1)
-  printf '%s\t%s\n' "${cost:-0}" "$chk"
-done | sort -t$'\t' -k1,1nr -k2,2 | cut -f2)
+  printf '%s\t%s\t\n' "${cost:-0}" "$chk"
+done | sort -t$'\t' -k1,1nr -k2,2 -k3,3 | cut -f2,3)
 
-declare -A running=()   # pid -> check script
+declare -A running=()   # pid -> check script and case ("chk<TAB>case"; no case: a plain check)
 trap 'kill "${!running[@]}" 2>/dev/null; exit 130' INT TERM
 
 start_check() {
-  local chk=$1 name; name=$(basename "$chk" .sh)
-  ( s=$(now); timeout -k 10 "$limit" bash "$chk" >"$logdir/$name.log" 2>&1; rc=$?
+  local chk=${1%%$'\t'*} case=${1#*$'\t'} name
+  name=${case:-$(basename "$chk" .sh)}
+  ( s=$(now); timeout -k 10 "$limit" bash "$chk" ${case:+"$case"} >"$logdir/$name.log" 2>&1; rc=$?
     [ $rc -eq 124 ] && echo "(timed out after ${limit} s: PREE_TEST_TIMEOUT)" >>"$logdir/$name.log"
     printf '%d %s\n' $rc "$(secs "$s" "$(now)")" >"$logdir/$name.rc" ) &
-  running[$!]=$chk
+  running[$!]=$1
 }
 
 finish_check() {
-  local pid chk name log rc t r
+  local pid chk case name rerun log rc t r
   wait -n -p pid "${!running[@]}"
-  chk=${running[$pid]}; unset "running[$pid]"
-  name=$(basename "$chk" .sh); log="$logdir/$name.log"
+  chk=${running[$pid]%%$'\t'*}; case=${running[$pid]#*$'\t'}; unset "running[$pid]"
+  name=${case:-$(basename "$chk" .sh)}; rerun="bash $chk${case:+ $case}"; log="$logdir/$name.log"
   read -r rc t <"$logdir/$name.rc" 2>/dev/null || { rc=1; t=0; echo "(no result: the check's shell died)" >>"$log"; }
   rm -f "$logdir/$name.rc"
   if [ "$rc" -eq 0 ]; then
     pass=$((pass + 1)); r=ok
   else
-    fail=$((fail + 1)); r=FAIL; failed+=("$name  (log: $log; rerun: bash $chk)")
+    fail=$((fail + 1)); r=FAIL; failed+=("$name  (log: $log; rerun: $rerun)")
     tail -5 "$log" | sed 's/^/    /'
   fi
-  printf 'check\t%s\t%s\t%d\t%s\t%s\n' "$name" "$t" "$rc" "$log" "bash $chk" >>"$results"
+  printf 'check\t%s\t%s\t%d\t%s\t%s\n' "$name" "$t" "$rc" "$log" "$rerun" >>"$results"
   printf '%-40s %s (%.0fs)\n' "$name" "$r" "$t"
 }
 

@@ -50,9 +50,12 @@ module pree_preu #(
 
 `include "pree_preu_plan.vh"
 
-  localparam A = preu_unit_lat(0, PipeFast, AddStages), M = preu_unit_lat(1, PipeFast, MulStages);
-  localparam Q = preu_unit_lat(2, PipeFast, SqrStages), D = preu_unit_lat(3, PipeFast, DivStages);
-  localparam U = preu_unit_lat(4, PipeFast, U2fStages), W = preu_unit_lat(5, PipeFast, WaccStages);
+  localparam A = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
+  localparam M = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
+  localparam Q = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
+  localparam D = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
+  localparam U = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
+  localparam W = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
   localparam UPD_LAT = preu_upd_latency(Datapath, A, M, Q, D, U, W);
   localparam RAD_LAT = preu_rad_latency(A, M, D);
   localparam LREQ    = RAD_LAT - A - 1;

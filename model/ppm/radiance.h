@@ -14,6 +14,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "hitpoints.h"
+#include "pree_config.h"
 #include "update.h"
 
 /* The PREE whose radiance pass the fp32 mode reproduces, or a board of them (prees > 1: the
@@ -30,11 +31,11 @@ typedef struct {
 } radiance_pree_t;
 
 /* The radiance pipeline's depth of a PREU: 12 in the paper's configuration (RTL PipeFast = 0),
- * 64 in the deep one (PipeFast = 1); rtl/pree_top.v's RAD_LAT, which the co-simulation checks
- * against this before every run. */
+ * 64 in the deep one (PipeFast = 1), from the configuration table (pree_config.h); rtl/pree_top.v's
+ * RAD_LAT, which the co-simulation checks against this before every run. */
 static inline int radiance_depth(int pipe_fast)
 {
-    return pipe_fast ? 64 : 12;
+    return PREE_RADIANCE_DEPTH(pipe_fast);
 }
 
 /* The image into rgb (3 doubles a pixel, num_pixels of them); pree: the fp32 mode's PREE or

@@ -3,9 +3,9 @@
 // model/pree/wide_acc.h (through fp32_gen.c).
 //
 // Built once per unit configuration with -DFP32_UNIT_<ADD|MUL|SQR|DIV|CMP|WACC|U2F> and the
-// matching Verilated model; a configuration other than the unit's default (-GStages=N,
-// -GPipeFast=1) also gets -DFP32_LATENCY=<its latency> (mk/fp32.mk), which the bench then
-// requires of every operation (for the divider, -DFP32_DIV_STAGES=N still works too).
+// matching Verilated model and -DFP32_LATENCY=<its latency> (mk/fp32.mk, from the configuration
+// table), which the bench then requires of every operation; without it, the unit's default
+// latency at PipeFast 0 (model/pree/pree_config.h).
 // Usage: fp32_bench_<unit> [random_count [seed [sweep]]]  (defaults 200000, 1). Runs the
 // directed list, then (with the word "sweep", squarer only) the exhaustive significand sweep of
 // fp32_gen.c, then random_count random cases. Pipelined units get random gaps in valid_i (bursts of varying
@@ -20,41 +20,39 @@
 #include <string>
 
 #include "fp32_gen.h"
+#include "pree/pree_config.h"
 #include "vharness.h"
 
 // Per unit: the model, the module name and the latency; then the hex digits of a and y in reports.
 #ifdef FP32_LATENCY
 #define UNIT_LATENCY(default_latency) (FP32_LATENCY)   // the configuration's, from mk/fp32.mk
 #else
-#define UNIT_LATENCY(default_latency) (default_latency)
+#define UNIT_LATENCY(default_latency) (default_latency)   // the unit's default (PipeFast 0)
 #endif
 #if defined(FP32_UNIT_ADD)
 #include "Vpree_fp32_add.h"
 typedef Vpree_fp32_add Dut;
 static const fp32_unit_t UNIT = FP32_ADD;
 static const char *const TOP = "pree_fp32_add";
-static const int LATENCY = UNIT_LATENCY(2);
+static const int LATENCY = UNIT_LATENCY(PREE_ADD_STAGES_PF0);
 #elif defined(FP32_UNIT_MUL)
 #include "Vpree_fp32_mul.h"
 typedef Vpree_fp32_mul Dut;
 static const fp32_unit_t UNIT = FP32_MUL;
 static const char *const TOP = "pree_fp32_mul";
-static const int LATENCY = UNIT_LATENCY(2);
+static const int LATENCY = UNIT_LATENCY(PREE_MUL_STAGES_PF0);
 #elif defined(FP32_UNIT_SQR)
 #include "Vpree_fp32_sqr.h"
 typedef Vpree_fp32_sqr Dut;
 static const fp32_unit_t UNIT = FP32_SQR;
 static const char *const TOP = "pree_fp32_sqr";
-static const int LATENCY = UNIT_LATENCY(2);
+static const int LATENCY = UNIT_LATENCY(PREE_SQR_STAGES_PF0);
 #elif defined(FP32_UNIT_DIV)
 #include "Vpree_fp32_div.h"
 typedef Vpree_fp32_div Dut;
 static const fp32_unit_t UNIT = FP32_DIV;
 static const char *const TOP = "pree_fp32_div";
-#ifndef FP32_DIV_STAGES
-#define FP32_DIV_STAGES 4   // the model's Stages parameter (-GStages=N), the latency
-#endif
-static const int LATENCY = UNIT_LATENCY(FP32_DIV_STAGES);
+static const int LATENCY = UNIT_LATENCY(PREE_DIV_STAGES_PF0);
 #elif defined(FP32_UNIT_CMP)
 #include "Vpree_fp32_cmp.h"
 typedef Vpree_fp32_cmp Dut;
@@ -66,13 +64,13 @@ static const int LATENCY = 0;
 typedef Vpree_wacc Dut;
 static const fp32_unit_t UNIT = FP32_WACC;
 static const char *const TOP = "pree_wacc";
-static const int LATENCY = UNIT_LATENCY(2);
+static const int LATENCY = UNIT_LATENCY(PREE_WACC_STAGES_PF0);
 #elif defined(FP32_UNIT_U2F)
 #include "Vpree_u64_to_f32.h"
 typedef Vpree_u64_to_f32 Dut;
 static const fp32_unit_t UNIT = FP32_U2F;
 static const char *const TOP = "pree_u64_to_f32";
-static const int LATENCY = UNIT_LATENCY(2);
+static const int LATENCY = UNIT_LATENCY(PREE_U2F_STAGES_PF0);
 #else
 #error "define FP32_UNIT_ADD, _MUL, _SQR, _DIV, _CMP, _WACC or _U2F"
 #endif

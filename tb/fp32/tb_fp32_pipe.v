@@ -1,11 +1,12 @@
 // tb_fp32_pipe: self-checking Icarus/Verilog-2005 testbench for one pipelined binary32 unit, or
 // one of the stable datapath's pree_wacc and pree_u64_to_f32 (64-bit a; 64-bit y for wacc).
 //
-// The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR or -DUNIT_DIV (with
-// -DDIV_STAGES=N for a divider configured with Stages = N; 4 by default), -DUNIT_WACC or
-// -DUNIT_U2F. Any unit's configuration: -DUNIT_PIPEFAST=1 (its PipeFast parameter),
-// -DUNIT_STAGES=N (its Stages parameter), and then -DUNIT_LATENCY=L, the latency that the
-// testbench requires (mk/fp32.mk passes the three). Operand a and the result are handled as 64 bits; the 32-bit units use the low half
+// The unit is chosen at compile time: -DUNIT_ADD, -DUNIT_MUL, -DUNIT_SQR, -DUNIT_DIV, -DUNIT_WACC
+// or -DUNIT_U2F. Any unit's configuration: -DUNIT_PIPEFAST=1 (its PipeFast parameter),
+// -DUNIT_STAGES=N (its Stages parameter), and -DUNIT_LATENCY=L, the latency that the testbench
+// requires (mk/fp32.mk passes the three, from config/pree_config.json); without UNIT_LATENCY, the
+// latency is the configuration's Stages (rtl/pree_unit_stages.vh: compile with -Irtl).
+// Operand a and the result are handled as 64 bits; the 32-bit units use the low half
 // (and the vector file's fields are as wide as the unit's).
 // Run: vvp -N <sim> +vec=<file> [+seed=<n>]; the vector file comes from fp32_vecgen
 // ("a b sub expected" in hex per line). Operations enter with random gaps in valid_i; each
@@ -16,51 +17,48 @@
 
 module tb_fp32_pipe;
 
-// The unit's parameters: PipeFast, and Stages when given.
+// The unit's parameters: PipeFast, and Stages when given (0: the unit's default).
 `ifndef UNIT_PIPEFAST
 `define UNIT_PIPEFAST 0
 `endif
 `ifdef UNIT_STAGES
 `define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST), .Stages(`UNIT_STAGES))
-`elsif DIV_STAGES
-`define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST), .Stages(`DIV_STAGES))
+  localparam STAGES = `UNIT_STAGES;
 `else
 `define UNIT_PARAMS #(.PipeFast(`UNIT_PIPEFAST))
+  localparam STAGES = 0;
 `endif
 
+`include "pree_unit_stages.vh"
 `ifdef UNIT_ADD
-  localparam LAT = 2;
+  localparam KIND = PREU_ADD;
   localparam NAME = "add";
   localparam AW = 32, YW = 32;   // widths of a and y
 `elsif UNIT_MUL
-  localparam LAT = 2;
+  localparam KIND = PREU_MUL;
   localparam NAME = "mul";
   localparam AW = 32, YW = 32;
 `elsif UNIT_SQR
-  localparam LAT = 2;
+  localparam KIND = PREU_SQR;
   localparam NAME = "sqr";
   localparam AW = 32, YW = 32;
 `elsif UNIT_DIV
-`ifdef DIV_STAGES
-  localparam LAT = `DIV_STAGES;
-`else
-  localparam LAT = 4;
-`endif
+  localparam KIND = PREU_DIV;
   localparam NAME = "div";
   localparam AW = 32, YW = 32;
 `elsif UNIT_WACC
-  localparam LAT = 2;
+  localparam KIND = PREU_WACC;
   localparam NAME = "wacc";
   localparam AW = 64, YW = 64;
 `elsif UNIT_U2F
-  localparam LAT = 2;
+  localparam KIND = PREU_U2F;
   localparam NAME = "u2f";
   localparam AW = 64, YW = 32;
 `endif
 `ifdef UNIT_LATENCY
   localparam LATENCY = `UNIT_LATENCY;   // the configuration's latency (mk/fp32.mk)
 `else
-  localparam LATENCY = LAT;             // the unit's default
+  localparam LATENCY = preu_stages(KIND, `UNIT_PIPEFAST, STAGES);   // the configuration's Stages
 `endif
   localparam FIFO = 64;       // > LATENCY: room for every operation in flight
   localparam MAX_REPORT = 20;

@@ -58,7 +58,7 @@ for m in "${mutants[@]}"; do
   fi
   tb=tb/fp32/tb_fp32_pipe.v; def=-DUNIT_$U
   if [ "$unit" = cmp ]; then tb=tb/fp32/tb_fp32_cmp.v; def=; fi
-  iv=(iverilog -g2005 $def -o "$dir/tb.vvp" -y "$dir/rtl" "$tb" "$dir/rtl/$top.v")
+  iv=(iverilog -g2005 $def -I rtl -o "$dir/tb.vvp" -y "$dir/rtl" "$tb" "$dir/rtl/$top.v")
   if ! build/fp32/fp32_vecgen "$unit" 5000 1 "$dir/vec.txt" >/dev/null || ! "${iv[@]}" >"$dir/iv.log" 2>&1; then
     echo "mutant $i ($what): Icarus build failed, see $dir/iv.log"; fail=1; continue
   fi

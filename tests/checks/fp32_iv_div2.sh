@@ -1,4 +1,0 @@
-#!/usr/bin/env bash
-# pree_fp32_div #(.Stages(2)) (latency 2), Icarus Verilog: self-checking testbench over the directed list plus 20000 random vectors,
-# bit for bit against model/pree/fp32_ops.h. Full level. Fails on any mismatch.
-exec "$(dirname "$0")/../../scripts/fp32_check.sh" sim-fp32-iv-div2
