@@ -33,6 +33,16 @@ CXXFLAGS := -std=c++17 $(OPT) -g $(FPFLAGS) $(WARN) -fopenmp -MMD -MP $(SANFLAGS
 LDLIBS   := -lembree3 -lm
 LDFLAGS  := -fopenmp $(SANFLAGS)
 
+# Quiet builds: one short line a step (CC model/ppm/grid.o, LINK build/pree, VERILATE
+# build/cosim/vl2_p4_h6_x4_w1); V=1 prints the full commands instead. A recipe line starts with
+# $(call say,TAG,WHAT) and then its command.
+V ?= 0
+ifeq ($(V),1)
+say =
+else
+say = @printf '  %-9s %s\n' '$(1)' '$(patsubst $(BUILD)/%,%,$(2))';
+endif
+
 .PHONY: all deps build run test test-prereqs check bench clean help lint synth sim report
 all: build
 
@@ -71,7 +81,7 @@ config:
 # The pree program: the command line (cli/) over the engine (libpree.a); no Verilator. Its
 # `cosim` command runs the co-simulation programs of mk/cosim.mk.
 $(BUILD)/pree: $(CLI_OBJ) $(LIBPREE)
-	$(CXX) $(LDFLAGS) $(filter %.o %.a,$^) -o $@ $(LDLIBS)
+	$(call say,LINK,$@)$(CXX) $(LDFLAGS) $(filter %.o %.a,$^) -o $@ $(LDLIBS)
 
 build: $(DEPS_STAMP) $(BUILD)/pree
 

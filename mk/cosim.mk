@@ -81,7 +81,7 @@ SYNTH_TARGETS += synth-top
 define COSIM_VL_RULE
 $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a: $(COSIM_RTL) $(COSIM_INCS) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
+	$$(call say,VERILATE,$$(@D))verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_top --prefix Vpree_top_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
 	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
 	  $(COSIM_RTL) >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
@@ -90,9 +90,9 @@ $(foreach m,$(COSIM_MODELS),$(eval $(call COSIM_VL_RULE,$(call cosim_n,$(m)),$(c
 # The Verilator run-time library, once for all models (tracing compiled in).
 $(COSIM_DIR)/vlrt/%.o: $(VERILATOR_ROOT_DIR)/include/%.cpp | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CXX) $(COSIM_VLRT_FLAGS) -c $< -o $@
+	$(call say,CXX,$@)$(CXX) $(COSIM_VLRT_FLAGS) -c $< -o $@
 $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
-	rm -f $@ && ar rcs $@ $^
+	$(call say,AR,$@)rm -f $@ && ar rcs $@ $^
 
 # The C interface to the models: one object per model for its program, one with every model of
 # the regression for the top bench (COSIM_BENCH_MODELS: those and the PipeFast 1 model with 4 PREUs,
@@ -101,10 +101,10 @@ COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(
 define COSIM_PROG_RULE
 $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
+	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
 $(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(COSIM_MAIN_OBJS) $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o \
                           $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
-	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
+	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
@@ -113,16 +113,16 @@ COSIM_BENCH_MODELS := $(COSIM_MODELS) $(if $(filter 4:pf,$(COSIM_MODELS)),,4:pf)
 COSIM_BENCH_LIBS   := $(foreach m,$(COSIM_BENCH_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)
 $(HOST_DIR)/cosim_rtl_all.o: host/cosim_rtl.cpp $(COSIM_BENCH_LIBS)
 	@mkdir -p $(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(COSIM_BENCH_MODELS)) -c $< -o $@
+	$(call say,CXX,$@)$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(COSIM_BENCH_MODELS)) -c $< -o $@
 $(HOST_DIR)/%.o: host/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(COSIM_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(COSIM_CFLAGS) -c $< -o $@
 $(COSIM_DIR)/%.o: tb/cosim/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(COSIM_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(COSIM_CFLAGS) -c $< -o $@
 
 $(COSIM_BENCH): $(COSIM_DIR)/top_bench.o $(COSIM_DIR)/top_bench_abank.o $(HOST_DIR)/cosim_rtl_all.o $(HOST_OBJS) $(LIBPREE) $(COSIM_VLIB)
-	$(CXX) $(LDFLAGS) $^ $(COSIM_BENCH_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
+	$(call say,LINK,$@)$(CXX) $(LDFLAGS) $^ $(COSIM_BENCH_LIBS) $(COSIM_VLIB) $(LIBPREE) -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(HOST_DIR)/*.d $(COSIM_DIR)/*.d)
 
 # Simulation: the bench's traces, then the reduced co-simulation.

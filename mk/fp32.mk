@@ -53,17 +53,17 @@ SIM_TARGETS   += sim-fp32
 # in one relocatable object, which every bench links.
 $(FP32_DIR)/fp32_gen_%.o: tb/fp32/fp32_gen_%.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(FP32_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(FP32_CFLAGS) -c $< -o $@
 
 $(FP32_DIR)/fp32_gen_b32.o: tb/fp32/fp32_gen.c $(FP32_GEN_DEPS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(FP32_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(FP32_CFLAGS) -c $< -o $@
 
 $(FP32_DIR)/fp32_gen.o: $(FP32_DIR)/fp32_gen_b32.o $(FP32_DIR)/fp32_gen_wide.o
-	$(LD) -r $^ -o $@
+	$(call say,LD,$@)$(LD) -r $^ -o $@
 
 $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
-	$(CC) $(FP32_CFLAGS) $< $(FP32_DIR)/fp32_gen.o -o $@ -lm
+	$(call say,LINK,$@)$(CC) $(FP32_CFLAGS) $< $(FP32_DIR)/fp32_gen.o -o $@ -lm
 
 # Per configuration $(1): the RTL unit $(2), Verilator -G/-D flags $(3), Icarus -D flags $(4).
 # Verilator bench (one harness, unit chosen by -DFP32_UNIT_*), Icarus simulation, quick and
@@ -71,7 +71,7 @@ $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN
 define FP32_UNIT_RULES
 $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/fp32_bench.cpp $(VHARNESS) $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
+	$$(call say,VERILATE,$$@)verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
 	  -Mdir $(FP32_DIR)/vl_$(1) --top-module $(call fp32_top,$(2)) -y rtl rtl/$(call fp32_top,$(2)).v \
 	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
 	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model) $(VHARNESS_INC)" \
@@ -80,7 +80,7 @@ $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/fp
 
 $(FP32_DIR)/tb_fp32_$(1).vvp: $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/tb_fp32_pipe.v tb/fp32/tb_fp32_cmp.v | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -Irtl $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
+	$$(call say,IVERILOG,$$@)iverilog -g2005 -Wall -Irtl $(if $(filter cmp,$(2)),,-DUNIT_$(shell echo $(2) | tr a-z A-Z)) $(5) \
 	  -o $$@ -y rtl $(if $(filter cmp,$(2)),tb/fp32/tb_fp32_cmp.v,tb/fp32/tb_fp32_pipe.v) \
 	  rtl/$(call fp32_top,$(2)).v
 

@@ -17,7 +17,7 @@ $(BUILD)/model/image/image.o: CFLAGS += -DPREE_OIIO_MODULE=\"$(abspath $(OIIO_MO
 $(BUILD)/model/image/image.o: mk/model.mk
 $(OIIO_MODULE): model/image/image_io.cpp model/image/image_io.h model/image/image.h $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -fPIC -shared $< -o $@ -lOpenImageIO -lOpenImageIO_Util
+	$(call say,CXX,$@)$(CXX) $(CXXFLAGS) -fPIC -shared $< -o $@ -lOpenImageIO -lOpenImageIO_Util
 LIBPREE   := $(BUILD)/libpree.a
 LDLIBS    += -lassimp -lpng -lz -ljansson
 
@@ -28,21 +28,21 @@ TEST_PREREQS += $(BUILD)/pree $(UNIT_BIN)
 
 $(BUILD)/%.o: %.c $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(CFLAGS) -c $< -o $@
 
 $(BUILD)/%.o: %.cpp $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CXX) $(CXXFLAGS) -c $< -o $@
+	$(call say,CXX,$@)$(CXX) $(CXXFLAGS) -c $< -o $@
 
 $(LIBPREE): $(MODEL_OBJ) | $(OIIO_MODULE)
 	@mkdir -p $(@D)
-	rm -f $@ && ar rcs $@ $^
+	$(call say,AR,$@)rm -f $@ && ar rcs $@ $^
 
 
 $(BUILD)/tests/%: tests/unit/%.c $(LIBPREE)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
-	$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
+	$(call say,CC,$@.o)$(CC) $(CFLAGS) -Itests/unit -DSCENES_DIR=\"$(CURDIR)/scenes\" -c $< -o $@.o
+	$(call say,LINK,$@)$(CXX) $(LDFLAGS) $@.o $(LIBPREE) -o $@ $(LDLIBS) -lcmocka
 
 # The version `pree --version` and the EXR metadata give: git describe, baked in at build time.
 # build/version.h is rewritten (at parse time) only when the description changes, so an unchanged
