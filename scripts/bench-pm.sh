@@ -2,13 +2,13 @@
 # The photon-map estimator against PPM (docs/photon_map.md): run time against error on cornell3
 # and cornell-teapot, PPM and PM with k = 50, 200, 1000 (clustered search, max radius 4x the PPM
 # initial radius), photons quadrupling from BASE, each against a long PPM reference with photons
-# of its own (--photon-offset). Also the search-phase speedup of the clustered search over the
-# naive one (CPU seconds, one thread) and the tracing/search/frame speedup for 1 and 2 threads
-# with the dynamic and static task schedules. CPU seconds (user + sys) throughout: the machine is
-# shared. Tables in OUTDIR/pm_*.txt, the plots in OUTDIR/pm_bias.png and OUTDIR/pm_threads.png (2 threads over 1).
+# of its own (--photon-offset). Also the k-NN searches query against query (the clustered search
+# over the single-pass kd-tree search and over the oracle, k = 50 to 2000, 400k to 6.4M photons)
+# and the tracing/search/frame speedup for 1 and 2 threads with the dynamic and static task
+# schedules. CPU seconds (user + sys) where one thread runs: the machine is shared. Tables in
+# OUTDIR/pm_*.txt, the plots in OUTDIR/pm_bias.png, OUTDIR/pm_knn.png and OUTDIR/pm_threads.png.
 # Usage: bench-pm.sh PREE OUTDIR [--quick]   (--quick: small sizes, for testing the script)
-# PM_SECTIONS="bias speedup threads" (the default) picks the parts to run; the speedup part
-# reads the bias part's references.
+# PM_SECTIONS="bias knn threads" (the default) picks the parts to run.
 set -euo pipefail
 pree=$1; out=$2; quick=${3:-}
 mkdir -p "$out"
@@ -19,7 +19,7 @@ js() { python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))
 for p in sys.argv[2].split("."): v=v[p]
 print(v)' "$1" "$2"; }
 
-sections=${PM_SECTIONS:-bias speedup threads}
+sections=${PM_SECTIONS:-bias knn threads}
 has() { [[ " $sections " == *" $1 "* ]]; }
 bias="$out/pm_bias.txt"
 if has bias; then
@@ -50,24 +50,66 @@ done
 
 fi
 
-# Search speedup, clustered against naive, one thread, search phase only (CPU seconds).
-speed="$out/pm_search_speedup.txt"
-n=$((base << (2 * steps)))
-if has speedup; then
-printf '%-15s %6s %12s %12s %9s %10s\n' scene k naive_cpu_s clust_cpu_s speedup same_bits | tee "$speed"
-for scene in cornell3 cornell-teapot; do
-  rmax=$(python3 -c "print(4 * $(js "$out/pm-ref-$scene-${W}x${H}-$refn.json" initial_radius))")
-  for k in $ks; do
-    for s in naive clustered; do
-      "$pree" render scenes/$scene --width $W --height $H --photons $n --estimator pm --k $k --max-radius "$rmax" \
-          --knn-search $s --threads 1 --quiet --out "$out/pm-s-$s.exr" --stats "$out/pm-s-$s.json"
-    done
-    a=$(js "$out/pm-s-naive.json" pm.cpu_search); b=$(js "$out/pm-s-clustered.json" pm.cpu_search)
-    same=$([ "$(js "$out/pm-s-naive.json" image_hash)" = "$(js "$out/pm-s-clustered.json" image_hash)" ] && echo yes || echo NO)
-    printf '%-15s %6d %12.2f %12.2f %9.2f %10s\n' $scene $k $a $b "$(python3 -c "print($a / $b)")" $same | tee -a "$speed"
+# The k-NN searches query against query (--knn-bench: the three on the same trees in one process,
+# repetitions interleaved, medians): the clustered search over the single-pass kd-tree search (the
+# fair baseline) and over the oracle, cornell3 at max radius 3. Query time only: the trees,
+# clusters and radiance estimates are timed apart. CPU seconds with one thread (a loaded machine
+# takes CPU time from a process, not CPU seconds), wall seconds with two. The oracle (nanoflann,
+# O(k) per result insertion) runs once, and only where k <= 200 and photons <= 1.6M (elsewhere it
+# takes hours). KNN_CONFIGS="WxH:PHOTONS:K:THREADS ..." replaces the matrix; KNN_REPS the repetitions.
+knn="$out/pm_knn.txt"
+if has knn; then
+if [ "$quick" = --quick ]; then configs=${KNN_CONFIGS:-"48x36:20000:50:1 48x36:20000:200:2"}
+else
+  configs=${KNN_CONFIGS:-}
+  if [ -z "$configs" ]; then
+    for res in 160x120 320x240; do for n in 400000 1600000 6400000; do for k in 50 200 1000 2000; do
+      configs="$configs $res:$n:$k:1"; done; done; done
+    configs="$configs 320x240:1600000:200:2 320x240:1600000:1000:2"
+  fi
+fi
+reps=${KNN_REPS:-3}
+printf '%-8s %8s %5s %2s %7s %7s %9s %9s %9s %8s %8s %8s %8s %9s\n' frame photons k t tree_s clust_s clustered kdtree naive vs_kdtree vs_naive fallback sparse same_bits | tee "$knn"
+for c in $configs; do
+  IFS=: read -r res n k t <<<"$c"
+  oracle=0; [ "$k" -le 200 ] && [ "$n" -le 1600000 ] && oracle=1
+  f="$out/pm-knn-$res-$n-$k-$t"
+  "$pree" render scenes/cornell3 --width "${res%x*}" --height "${res#*x}" --photons "$n" --estimator pm --k "$k" \
+      --max-radius 3 --threads "$t" --knn-bench "$reps" --knn-bench-oracle "$oracle" --quiet --out "$f.exr" --stats "$f.json"
+  python3 - "$f.json" "$res" "$n" "$k" "$t" <<'PY' | tee -a "$knn"
+import json, statistics, sys
+d = json.load(open(sys.argv[1])); p = d["pm"]; b = p["bench"]; t = int(sys.argv[5])
+ms = [m for m in ("clustered", "kdtree", "naive") if m in b]
+q = {m: statistics.median(b[m]["cpu_query" if t == 1 else "sec_query"]) for m in ms}
+hashes = {b[m]["state_hash"] for m in ms}
+ratio = lambda m: "%8.2f" % (q[m] / q["clustered"]) if m in q else "%8s" % "-"
+print("%-8s %8s %5s %2s %7.2f %7.2f %9.3f %9.3f %9s %s %s %8d %8d %9s" % (
+    sys.argv[2], sys.argv[3], sys.argv[4], t, b["clustered"]["cpu_tree"], p["cpu_cluster"], q["clustered"],
+    q["kdtree"], "%9.3f" % q["naive"] if "naive" in q else "-", ratio("kdtree"), ratio("naive"),
+    b["clustered"]["fallback"], b["clustered"]["clusters_sparse"], "yes" if len(hashes) == 1 else "NO"))
+PY
+  rm -f "$f.exr"
+done
+# Speedup over the fair baseline against k, one line a frame and photon count (one thread).
+for res in $(awk 'NR>1 && $4==1 {print $1}' "$knn" | sort -u); do
+  for n in $(awk -v r=$res 'NR>1 && $1==r && $4==1 {print $2}' "$knn" | sort -un); do
+    awk -v r=$res -v n=$n 'NR>1 && $1==r && $2==n && $4==1 {print $3, $10}' "$knn" | sort -n >"$out/pm-knn-$res-$n.dat"
   done
 done
-
+series=""
+for d in "$out"/pm-knn-*.dat; do
+  [ -s "$d" ] || continue
+  name=$(basename "$d" .dat); name=${name#pm-knn-}
+  series="$series${series:+, }\"$d\" using 1:2 with linespoints lw 2 title \"${name%-*}, ${name##*-} photons\""
+done
+gnuplot <<GP
+set terminal pngcairo size 900,450 font ",10"
+set output "$out/pm_knn.png"
+set title "cornell3: query-only speedup of the clustered search over the single-pass kd-tree search (1 thread, medians of $reps)"
+set logscale x; set xrange [40:2500]; set xlabel "k"; set ylabel "speedup (kdtree / clustered query CPU seconds)"
+set grid; set key top left; set yrange [0:*]
+plot $series, 1 with lines dt 2 lc rgb "black" title "1x"
+GP
 fi
 
 # Threads and task schedules (paper 001): tracing, search and whole frame; wall seconds (the only
@@ -134,4 +176,4 @@ $(plots cornell3)
 $(plots cornell-teapot)
 unset multiplot
 GP
-echo "bench-pm: $bias, $speed, $thr, $out/pm_bias.png" >&2
+echo "bench-pm: $bias, $knn, $thr, $out/pm_bias.png" >&2
