@@ -4,6 +4,7 @@
 #include <string.h>
 #include "cosim_compare.h"
 #include "cosim_shadow.h"
+#include "pree_env.h"
 #include "radiance.h"
 
 void cosim_model_words(const hitpoints_t *hp, size_t i, preu_hpw_t *w)
@@ -25,7 +26,7 @@ unsigned long long cosim_compare_hit_points(const hp_read_t *got, const cosim_pa
                                             int dp, unsigned long long *points, size_t *first)
 {
     const uint32_t *model = part ? part->model : NULL;
-    const char *env = getenv("PREE_TEST_CORRUPT_HP");
+    const char *env = pree_env(PREE_ENV_TEST_CORRUPT_HP);
     const size_t corrupt = env ? (size_t)strtoull(env, NULL, 10) : SIZE_MAX;
     unsigned long long words = 0;
     *points = 0;

@@ -9,6 +9,7 @@
 #include "image.h"
 #include "image_io.h"
 #include "file_in.h"
+#include "pree_env.h"
 #include "atomic_out.h"
 #include "png_write.h"
 
@@ -47,7 +48,7 @@ static int join_path(char *out, size_t len, const char *dir, const char *name)
 static void oiio_load(void)
 {
     static char found[4096];
-    const char *path = getenv("PREE_OIIO_MODULE");   /* an explicit choice is never second-guessed */
+    const char *path = pree_env(PREE_ENV_OIIO_MODULE);   /* an explicit choice is never second-guessed */
     if (!path || !*path) {
         path = PREE_OIIO_MODULE;
         char exe[4096];

@@ -7,6 +7,7 @@
 #include <string.h>
 #include <omp.h>
 #include "grid_table.h"
+#include "pree_env.h"
 
 #define CELL_LIMIT ((int64_t)1 << CELL_BITS)
 
@@ -233,7 +234,7 @@ static void number_hashed(void *ctx, const grid_t *g, int64_t ix, int64_t iy, in
 static int number_cells(grid_t *g, const hitpoints_t *h, int width, int include_zero, int lanes, uint32_t **count)
 {
     const uint64_t cells = (uint64_t)(g->cell_max[0] + 1) * (uint64_t)(g->cell_max[1] + 1) * (uint64_t)(g->cell_max[2] + 1);
-    const int dense = cells <= GRID_DENSE_MAX && !getenv("PREE_GRID_HASHED");
+    const int dense = cells <= GRID_DENSE_MAX && !pree_env(PREE_ENV_GRID_HASHED);
     number_ctx_t c = {.g = g, .count = count, .lanes = lanes};
     cell_cache_init(&c.cache);
     if (grow_counts(&c)) return -1;

@@ -12,6 +12,7 @@
 #include "checkpoint.h"
 #include "render_dist.h"
 #include "pm_render.h"
+#include "pree_env.h"
 #include "render_session.h"
 
 /* Continue from opt.resume: the state, the photons done and the pass counters. */
@@ -49,7 +50,7 @@ static int session_checkpoint(render_session_t *s, char *err, size_t errlen)
 
 void render_test_interrupt(const char *phase)
 {
-    const char *want = getenv("PREE_TEST_INTERRUPT"), *kill = getenv("PREE_TEST_KILL");
+    const char *want = pree_env(PREE_ENV_TEST_INTERRUPT), *kill = pree_env(PREE_ENV_TEST_KILL);
     if (want && !strcmp(want, phase)) raise(SIGINT);
     if (kill && !strcmp(kill, phase)) raise(SIGKILL);
 }

@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "grid_refilter.h"
+#include "pree_env.h"
 #include "render_check.h"
 #include "render_session.h"
 
@@ -29,7 +30,7 @@ int render_screen_blocks_set(render_session_t *s, char *err, size_t errlen)
 {
     s->screen_blocks = SCREEN_BLOCKS_MAX;
     s->screen_forced = 0;
-    const char *v = getenv("PREE_SCREEN_BLOCKS");
+    const char *v = pree_env(PREE_ENV_SCREEN_BLOCKS);
     if (v) {
         char *end;
         const unsigned long k = strtoul(v, &end, 10);
@@ -100,7 +101,7 @@ int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, u
  * PREE (render_refilter_from). */
 int render_refilter_enabled(const render_session_t *s)
 {
-    return s->skip && !getenv("PREE_NO_REFILTER");
+    return s->skip && !pree_env(PREE_ENV_NO_REFILTER);
 }
 
 /* The re-filter with the session's radii, or r2_bits (render_refilter_from). 0 or -1 (memory). */

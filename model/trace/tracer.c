@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "pree_env.h"
 #include "sphere_group.h"
 #include "tracer.h"
 
@@ -187,7 +188,7 @@ tracer_t *tracer_create(const scene_t *scene, const stop_flag_t *stop, char *err
     tr->sphere_geom = RTC_INVALID_GEOMETRY_ID;
     double t0 = omp_get_wtime();
     if (scene->num_meshes == 0 && scene->num_spheres > 1 && scene->num_spheres <= SPHERE_GROUP_MAX &&
-        !getenv("PREE_TRACER_EMBREE")) {
+        !pree_env(PREE_ENV_TRACER_EMBREE)) {
         tr->direct = 1;
         sphere_group_init(&tr->group, scene->spheres, scene->num_spheres);
         if (stop_requested(stop)) {

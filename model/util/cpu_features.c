@@ -2,6 +2,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cpu_features.h"
+#include "pree_env.h"
 
 static int forced = SIMD_AUTO;
 
@@ -27,7 +28,7 @@ simd_level_t cpu_simd_best(void)
 simd_level_t cpu_simd_level(void)
 {
     if (forced != SIMD_AUTO) return (simd_level_t)forced;
-    return getenv("PREE_NO_AVX2") ? SIMD_SCALAR : cpu_simd_best();
+    return pree_env(PREE_ENV_NO_AVX2) ? SIMD_SCALAR : cpu_simd_best();
 }
 
 int cpu_simd_force(int level)
