@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # PREE: progressive radiance estimation engine: RTL, C reference model, co-simulation.
 # The front door. `make run` and `make test` do everything on a fresh Debian bookworm machine.
 # Fragments in mk/ add the RTL, simulation and synthesis targets; each owns one area.

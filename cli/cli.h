@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli.h: the subcommands of the `pree` program, one function each, dispatched by cli/main.c.
  * Each takes the arguments after its own name (argv[0] is the subcommand name) and returns
  * the process exit status: 0 on success, 1 on a runtime failure, 2 on a usage error.

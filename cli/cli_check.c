@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_check.c: `pree check SCENE [options]`: parse the scene, load its meshes, validate it
  * (values, camera rays for the image size) and report what a render would need (hit points,
  * memory, triangles, lights) without building the BVH or tracing a ray. Exit 0 when a render

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_compare.c: `pree compare IMAGE_A IMAGE_B [--diff OUT] [--log] [--flip] [--json]`: print SSIM, SNR,
  * PSNR, RMSE and the maximum absolute difference of B against the reference A, and write the
  * difference maps (diffmap.h). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_mpi.c: the program under an MPI launcher (mpirun, srun). Built with Open MPI when make
  * finds mpicc (MPI=1, the default then; MPI=0 builds without). The same binary runs without a
  * launcher: MPI is initialised only when the launcher's environment says the process is one of

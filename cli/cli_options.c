@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_options.c: option scanning (getopt_long) and strict value parsing. */
 #include <errno.h>
 #include <stdarg.h>

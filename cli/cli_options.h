@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_options.h: the command line of every subcommand: getopt_long scans the options, and
  * strict value checks sit on top of it. Every bad value is a one-line error "pree CMD: ..."
  * and exit status 2.

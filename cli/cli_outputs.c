@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_outputs.c: the checks on output paths before any work (cli_outputs.h). */
 #include <errno.h>
 #include <limits.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_outputs.h: every output path is checked before any work starts, so that a bad one
  * costs nothing and never leaves some outputs written and others not: its directory exists
  * and is writable, its name fits the file system (the temporary's too), it is absent or a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_pm.c: the photon-map estimator's options (see cli_pm.h). */
 #include "cli_pm.h"
 

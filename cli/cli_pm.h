@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_pm.h: `pree render`'s options of the photon-map estimator (docs/photon_map.md). */
 #ifndef PREE_CLI_PM_H
 #define PREE_CLI_PM_H

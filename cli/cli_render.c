@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_render.c: `pree render SCENE [options]`: parse and check the options, render, write
  * the images and the statistics. SIGINT or SIGTERM stops the render in any phase (the photon
  * block in progress is abandoned) and writes the image of the photon blocks done so far, or

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_resume.c: the options a checkpoint carries, and the command line of a resume (cli_resume.h). */
 #include <limits.h>
 #include <stdarg.h>

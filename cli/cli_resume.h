@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_resume.h: a checkpoint carries the options of its render, so that `pree render --resume
  * FILE` alone continues it as it was. The checkpoint's note (model/ppm/checkpoint.h) is the
  * render's command line in a canonical form, one option a line ("--width 320"; a flag alone;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_series.c: the convergence series' options and file names (cli_series.h). */
 #include <errno.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cli_series.h: `pree render`'s convergence series: --write-every N and --write-at LIST name
  * photon counts at which the render writes its images and statistics (each output NAME.EXT as
  * NAME-COUNT.EXT) on the way to its full count, each with the bits of a render of that count

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* main.c: the `pree` program: git-style subcommands over the PREE reference engine.
  *
  * `pree cosim` is a program of its own (host/, built with the Verilated RTL only when asked):

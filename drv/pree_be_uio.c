@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_be_uio.c: pree_drv's back end on a board (pree_be_uio.h): pree_axi's registers mmapped
  * from UIO or /dev/mem, the streams through Xilinx AXI DMA engines in simple mode, buffers in a
  * u-dma-buf region. */

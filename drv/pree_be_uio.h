@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_be_uio.h: pree_drv's back end on a board (drv/pree_be_uio.c, Linux). pree_axi's AXI4-Lite
  * block is mapped from a UIO device (/dev/uioN, map 0; uio_pdrv_genirq or generic-uio in the
  * device tree) or from /dev/mem at its physical address. The streams go through Xilinx AXI DMA

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_be_verilated.c: pree_drv's back end on the Verilated pree_axi (host/cosim_axi_rtl.h, the
  * model objects of build/pree-cosim-axi-<d><n>): register reads and writes are AXI4-Lite
  * transactions, submitted beats wait in queues that are offered on the streams while the clock

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_be_verilated.h: pree_drv's back end on the Verilated pree_axi (drv/pree_be_verilated.c),
  * for tests and co-simulation. It links with a pree_axi model's C interface
  * (host/cosim_axi_rtl.cpp built for one PREU count and datapath, mk/cosim_axi.mk).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_drv.c: the driver of pree_axi (pree_drv.h), over a back end. Register offsets and field
  * masks come from drv/pree_axi_regs.h, generated from the register map rtl/regs/pree_axi.rdl. */
 #include "pree_drv.h"

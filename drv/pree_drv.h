@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_drv.h: the driver of pree_axi (rtl/pree_axi.v, docs/integration.md): open, configure, load
  * hit points, stream photons with their candidates, run the radiance pass, read hit points,
  * pixels and counters. C11; every call returns PREE_OK (0) or a negative PREE_E_* code, and

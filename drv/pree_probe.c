@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_probe.c: board bring-up of pree_axi through pree_drv's UIO back end (build/drv/pree_probe).
  * Opens the register block and the DMA channels, prints VERSION, CONFIG0/1 and STATUS, and with
  * --loopback N loads N hit points of a known pattern from address 0 (s_axis_hp) and reads them

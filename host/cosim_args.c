@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_args.c: pree cosim's usage and command line (cosim_args.h). */
 #include <stdio.h>
 #include "cli.h"

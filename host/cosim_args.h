@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_args.h: the command line of pree cosim beyond the render options it shares with pree
  * render (cli/cli_options.h), scanned with the project's strict value checks. */
 #ifndef PREE_COSIM_ARGS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_axi.c: the PREE host protocol through the AXI4 wrapper (rtl/pree_axi.v,
  * docs/integration.md): the cosim_drv.h API on a Verilated pree_axi (cosim_axi_rtl.h), linked
  * into build/pree-cosim-axi-<d><n> in place of cosim_drv.c.

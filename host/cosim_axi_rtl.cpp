@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cosim_axi_rtl.cpp: the Verilated pree_axi behind cosim_axi_rtl.h (one model per program: the
 // make rule passes AXI_MODEL, AXI_MODEL_H, AXI_NP, AXI_DP, AXI_PF, AXI_HPB, AXI_PPC). C++ only because Verilator's
 // models are C++ classes. Every field of the wrapper's streams sits on a 32-bit boundary, so the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_axi_rtl.h: the Verilated pree_axi (rtl/pree_axi.v) behind a C interface: the ports of one
  * clock cycle in, the handshakes that happened at its edge out. The AXI co-simulation program
  * (build/pree-cosim-axi-<d><n>, mk/cosim_axi.mk) links it in place of cosim_rtl.cpp: it also

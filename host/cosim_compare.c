@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_compare.c: the comparisons of cosim_compare.h. */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_compare.h: what the co-simulation compares with the fp32 model: the PREE's hit-point
  * memory word for word, and its image with the model's radiance summed in the PREE's order. */
 #ifndef PREE_COSIM_COMPARE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_dist.c: the gather of cosim_dist.h. */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_dist.h: a board of PREEs under mpirun: each rank's PREE memory and radiance pass
  * gathered on rank 0 (docs/scale_out.md, "Multi-PREE co-simulation"). */
 #ifndef PREE_COSIM_DIST_H

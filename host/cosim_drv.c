@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_drv.c: the PREE host protocol on a Verilated pree_top (see cosim_drv.h). */
 #include "cosim_drv.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_drv.h: the host side of the PREE: drives a Verilated pree_top (cosim_rtl.h) the way an
  * FPGA host would: loads the hit points, streams photons with their index-table entries,
  * runs the radiance pass and reads the memories back.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_layout.c: a rank's hit-point addresses in its PREE (cosim_layout.h). */
 #include <stdlib.h>
 #include "cosim_layout.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_layout.h: where each hit point lies in the PREE's memory, on one PREE or a board of
  * them under mpirun (docs/pree_top.md, "Hit-point layout"; docs/scale_out.md). */
 #ifndef PREE_COSIM_LAYOUT_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_main.c: `pree cosim SCENE [options]` (the program build/pree-cosim-<config>, which
  * `pree cosim` runs): the renderer in fp32 mode as the host of the Verilated PREE
  * (rtl/pree_top.v), the engine and the RTL driven from one loop. Every photon hit's operations

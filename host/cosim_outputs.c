@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_outputs.c: the outputs of cosim_outputs.h. */
 #include <stdio.h>
 #include "compare.h"

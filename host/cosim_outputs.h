@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_outputs.h: what a co-simulation run writes: the RTL's image with its SSIM and SNR
  * against a double render, the report (--stats) and the closing line. */
 #ifndef PREE_COSIM_OUTPUTS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_refilter.c: the host's re-filter with radii read back from the PREE (cosim_refilter.h). */
 #include <stdio.h>
 #include <stdlib.h>

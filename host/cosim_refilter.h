@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_refilter.h: the host's re-filter of the engine's grid with radii read back from the PREE.
  *
  * Radii only shrink, so the engine drops the grid entries that the current radii rule out after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_reorder.c: a photon's candidates in an order of distinct banks (cosim_reorder.h). */
 #include <string.h>
 #include "cosim_reorder.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_reorder.h: the order of one photon's candidates in the unscheduled stream (--no-schedule):
  * each next one, where possible, in a hit-point bank that none of the last NumPreu-1 operations
  * used, so that NumPreu consecutive operations read distinct banks where the candidates allow it.

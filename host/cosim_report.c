@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_report.c: the co-simulation's figures and their JSON file (see cosim_report.h). */
 #include "cosim_report.h"
 #include <stddef.h>

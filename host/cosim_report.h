@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_report.h: the co-simulation's figures (`pree cosim --stats FILE.json`): what was run,
  * words that differ between RTL and model, cycles, utilization, stall causes and speed. The
  * caller fills the inputs; cosim_report_figures derives the rest once for the report and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // cosim_rtl.cpp: the Verilated pree_top behind the C interface of cosim_rtl.h. C++ only because
 // Verilator's models are C++ classes; one template, clocked by the bench harness
 // (tb/lib/vharness.h), serves every model of the build. mk/cosim.mk includes each model's header

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_sched.c: the co-simulation host's photon scheduler (see cosim_sched.h). */
 #include "cosim_sched.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_sched.h: the co-simulation host's photon scheduler. It holds a window of pending photons
  * (in the engine's photon order) and decides the order in which they, and each photon's
  * candidates, are streamed to pree_top, so that the RTL issues NumPreu operations a cycle

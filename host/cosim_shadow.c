@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cosim_shadow.c: cycle model of pree_top's update issue path (see cosim_shadow.h). Each block
  * names the RTL block it mirrors. */
 #include "cosim_shadow.h"

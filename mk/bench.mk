@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # make bench: speed, memory, and run time against error. Figures go to out/bench/.
 # Engine speed per grid and thread count, every scene, and run time against error (a plot).
 BENCH_DIR := $(OUT)/bench

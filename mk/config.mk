@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # config.mk: GENERATED from config/pree_config.json by scripts/pree_config.py (make config): do not edit.
 
 # Each unit's module and Stages range (a unit's latency is Stages + InRegs).

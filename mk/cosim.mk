@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The PREE top (rtl/pree_top.v), its benches (tb/cosim/) and the co-simulation host (host/):
 # docs/pree_top.md.
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # (After mk/cosim.mk, whose variables it uses.) The AXI4 wrapper (rtl/pree_axi.v) and the FPGA integration kit: docs/integration.md.
 #
 #   make lint-axi      verilator --lint-only -Wall of pree_axi through rtl/pree.f, NumPreu 4, 8, 16,

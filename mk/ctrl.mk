@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The two PREE controllers: AFTSO-HpUOC (rtl/pree_aftso_hpuoc.v, hit-point update dispatch) and
 # ADISO-REC (rtl/pree_adiso_rec.v, leaping addresses). C models, Verilator benches against them,
 # Icarus benches over their vectors, lint, Yosys synthesis, utilization. docs/controllers.md.

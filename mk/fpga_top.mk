@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # (After mk/fpga.mk, whose venv it uses.) The whole PREE placed and routed on the ULX3S's
 # LFE5U-85F (docs/fpga.md, "The whole design"): pree_axi behind the UART bridge of
 # rtl/board/pree_ulx3s.v, pins in constraints/pree_ulx3s.lpf; scripts/fpga_pnr_top.sh runs each

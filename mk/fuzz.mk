@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Fuzzing (issue 14): libFuzzer harnesses (clang-14, libclang-rt-14-dev) for the scene parser, the pbrt-v4 reader
 # and the mesh loader, built with AddressSanitizer and UndefinedBehaviorSanitizer from the
 # scene sources alone (no OpenMP, Embree or OpenImageIO in the harness).

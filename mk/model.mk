@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # The C reference engine: libpree.a from model/*/*.c (and the OpenImageIO module from
 # model/image/image_io.cpp), the `pree` program's
 # command line (cli/*.c), and the cmocka unit tests in tests/unit (one binary per test_*.c).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # PREU (rtl/pree_preu.v), both datapaths and both pipeline configurations (PREU_CFGS: 0 paper,
 # 1 stable, each with PipeFast 0; 0f, 1f the same with PipeFast 1, the deep plans): lint, Verilator bench
 # scoreboarded against the C model (model/pree/preu_fp32.c, model/pree/preu_stable.c), self-checking

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # (After mk/drv.mk and mk/fpga.mk.) pree_axi's register map: one source, rtl/regs/pree_axi.rdl
 # (SystemRDL, docs/integration.md "Register map").
 #

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # make test-sanitize (issue 14): the engine, the program and the unit tests built with
 # AddressSanitizer and UndefinedBehaviorSanitizer in their own directory (build-san), then the
 # unit tests and the bad-input checks run against them; any sanitizer report fails

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # make stress: the numerical stress suite of issue 10 (docs/numerics.md). Tables, CSVs and plots
 # go to out/stress/; the plots are copied to docs/images/numerics-*.png.
 #   stress-hitpoint  one hit point fed up to 1e9 (stable count: 2^32 + 1e6) accepted photons through

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_adiso_rec: approximate data-independent schedule-oriented radiance evaluation controller
 // (ADISO-REC, paper 000 Sec. IV.C, Eq. 10-13, Fig. 9-10): the leaping-address generator.
 //

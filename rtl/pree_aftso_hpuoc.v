@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_aftso_hpuoc: approximate full-task-schedule hit-point update operation controller
 // (AFTSO-HpUOC, paper 000 Sec. IV.B, Fig. 8).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_axi: pree_top behind standard AXI interfaces (docs/integration.md is the manual: register
 // map, stream formats, timing diagrams, a worked host sequence).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_axi_regs.vh: register numbers (byte address / 4) of pree_axi's AXI4-Lite map,
 // included inside module pree_axi; generated from rtl/regs/pree_axi.rdl by scripts/regs_gen.py (make regs); do not edit.
 localparam [9:0] R_VERSION = 10'h000,

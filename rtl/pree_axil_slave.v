@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_axil_slave: AXI4-Lite slave front end that turns the five channels into a simple
 // register bus: one write strobe and one read strobe, each a single cycle.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_counters: pree_top's performance counters (its cnt_o; docs/pree_top.md), CtrW bits each,
 // counting only while en_i is high, in order: 0 update cycles, 1 radiance cycles, then the cycles
 // in which fewer than NumPreu operations issued, by cause: 2 haz, 3 dup, 4 bank (the first

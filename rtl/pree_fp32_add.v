@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_add: IEEE-754 binary32 adder/subtractor, round to nearest even, Stages pipeline
 // stages (2 by default, the paper's; 7 with PipeFast = 1).
 //

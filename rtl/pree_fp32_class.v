@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_class: the one classifier of a binary32 operand, combinational.
 //
 // Every unit that takes a binary32 operand (pree_fp32_add, _mul, _sqr, _div through

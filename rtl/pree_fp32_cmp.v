@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_cmp: IEEE-754 binary32 comparator, combinational (latency 0).
 //
 // lt_o = a < b, le_o = a <= b, eq_o = a == b, with IEEE ordering: -0 == +0, subnormals ordered

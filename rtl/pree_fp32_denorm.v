@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_denorm: the denormalising right shift in front of rounding, combinational.
 //
 // The first half of pree_fp32_round #(.Denorm(1)), split out so that a deep pipeline can place

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_denorm_amt: the denormalising shift amount of a result exponent, combinational.
 //
 // For the biased, two's-complement exponent exp_i (10 bits) of a result in pree_fp32_round's

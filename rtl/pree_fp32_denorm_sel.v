@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_denorm_sel: the denormalising shift amount of a result whose binade is picked by
 // one bit, combinational (the normalisation stage of the multiplier, squarer and divider).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_div: IEEE-754 binary32 divider, round to nearest even, fully pipelined (one new
 // division every cycle), Stages pipeline stages (4 by default, the paper's; 31 with
 // PipeFast = 1).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_div_steps: Steps iterations of restoring radix-2 significand division, combinational.
 //
 // One slice of the divider's array; pree_fp32_div places one slice in each pipeline stage.

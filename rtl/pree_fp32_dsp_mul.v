@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_dsp_mul: an unsigned AW x BW product between two registers, the shape of one DSP
 // multiplier with its own input and output registers. The operands load at a rising edge where
 // in_en_i is set, the product of the loaded operands at one where out_en_i is set; p_o is that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_entry: the entry of a pipelined unit (pree_fp32_add, _mul, _sqr, _div, pree_wacc,
 // pree_u64_to_f32): its operand registers (seam 0, InRegs of them, a wire when 0). Each unit checks
 // its own Stages range at elaboration.

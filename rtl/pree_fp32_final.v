@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_final: the last stage of every binary32 arithmetic unit: round, final mux with the
 // special result, output seam.
 //

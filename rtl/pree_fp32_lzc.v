@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_lzc: leading-zero counter, combinational.
 //
 // cnt_o is the number of zero bits above the most significant one of x_i; Width when x_i is

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_mul: IEEE-754 binary32 multiplier, round to nearest even, Stages pipeline stages
 // (2 by default, the paper's; 7 with PipeFast = 1).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_mul_back: the shared back end of the multiplier and the squarer: normalise the
 // 48-bit significand product, denormalise, round, select the special result.
 //

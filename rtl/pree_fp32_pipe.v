@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_pipe: one seam of an arithmetic unit's pipeline: Regs registers in a row, or a wire.
 //
 // The units (pree_fp32_add, _mul, _sqr, _div, pree_wacc, pree_u64_to_f32) cut their datapath at

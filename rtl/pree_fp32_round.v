@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_round: round to nearest (ties to even) and pack a binary32 result.
 //
 // Combinational helper shared by the adder, multiplier, squarer and divider.

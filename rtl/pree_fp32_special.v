@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_special: the special-case result of a binary32 operation, combinational.
 //
 // One priority rule for every arithmetic unit (x86-64 SSE): a NaN operand a -> a quieted (sign

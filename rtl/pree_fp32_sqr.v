@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_sqr: IEEE-754 binary32 squarer, y = a * a, round to nearest even, Stages pipeline
 // stages (2 by default, the paper's; 6 with PipeFast = 1: every seam below registered).
 //

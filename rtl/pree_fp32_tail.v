@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_tail: the last two seams of the multiplier, squarer and divider: denormalise, then
 // round and select the special result.
 //

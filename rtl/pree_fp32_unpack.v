@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_unpack: the front end of the multiplier and the divider: classify both binary32
 // operands, decide the special result, seam, normalise both significands.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_unpack_lz: the first half of pree_fp32_unpack, combinational: classify a binary32
 // operand (pree_fp32_class) and count the leading zeros that normalise its significand.
 //

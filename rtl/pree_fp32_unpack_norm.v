@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fp32_unpack_norm: the second half of pree_fp32_unpack, combinational: the normalised
 // significand and exponent of a binary32 operand, given its leading-zero count lz_i from
 // pree_fp32_unpack_lz.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_hp_bank.vh: the hit-point bank of an address (included by the modules that bank hit
 // points; they declare HpBankW). The low HpBankW bits XOR the next HpBankW bits, so that hit
 // points a multiple of 2^HpBankW apart (neighbours one image row apart) still spread over the

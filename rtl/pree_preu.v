@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_preu: one progressive radiance estimation unit (paper 000 Section IV.A, Fig. 6 and 7),
 // configurable between hit-point update (mode_i = 0) and radiance evaluation (mode_i = 1),
 // built from the binary32 units pree_fp32_{add,mul,sqr,div,cmp}, in one of two datapaths:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_preu_plan.vh: the PREU's stage plan as constant functions of its units' latencies, written
 // once and included inside pree_preu (which builds the plan) and pree_top (which sizes its hazard
 // windows and ADISO-REC's depth from it). a, m, q, d, u, w: the latencies of pree_fp32_add, _mul,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_ram_banks: 2^BankW banks of pree_ram_sdp (Width bits, 2^RowW words each) shared by Lanes
 // request lanes: pree_top's index table, hit-point memory (constant and state parts) and pixel
 // memory, each with the PREU lanes and the host as its lanes.

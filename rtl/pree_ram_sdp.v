@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_ram_sdp: simple dual-port synchronous RAM (one write port, one read port, one clock),
 // written in the shape FPGA tools map to block RAM (Xilinx RAMB18/36 in simple dual-port mode).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_reset_sync: reset synchroniser, asynchronous assertion and synchronous de-assertion.
 //
 // rst_no goes low as soon as arst_ni goes low (no clock needed) and goes high on the Stages-th

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top: the progressive radiance estimation engine (paper 000 Sec. IV, Fig. 5): NumPreu
 // PREUs, the AFTSO-HpUOC dispatcher (update mode), the ADISO-REC leaping-address generator
 // (radiance mode), the hit-point memory, the index table and the pixel memory, with hazard

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_hpmem: pree_top's hit-point memory (docs/pree_top.md, "Pipeline, memories and
 // hazards"): 2^HpBankW banks (pree_ram_banks) of a constant part {pixel, f, pos} and a state part,
 // shared by the PREU lanes and the host. Addresses are hit points; the bank is hp_bank() of the

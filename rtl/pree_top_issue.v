@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_issue: pree_top's stage-B issue (docs/pree_top.md, "Pipeline, memories and hazards").
 // Each cycle a prefix of the pending lanes issues, each free of a hazard (its key issued in the
 // last WinUpd cycles, update mode, or WinRad, radiance), of an earlier pending lane with the same

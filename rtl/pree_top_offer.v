@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_offer: the offer stage A reads (docs/pree_top.md, "Pipeline, memories and hazards"):
 // the controller's lanes (update: AFTSO-HpUOC's index-entry addresses and photons; radiance:
 // ADISO-REC's hit-point addresses) with each lane's bank (update: the index table's, the address

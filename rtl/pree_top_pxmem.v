@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_pxmem: pree_top's pixel memory (docs/pree_top.md, "Pipeline, memories and hazards"):
 // 2^PxBankW banks (pree_ram_banks) of a pixel's sum {b, g, r}; the bank is the pixel's low bits.
 // Lanes: the PREU lanes (radiance: the pixel-sum read, lreq, and the write-back of the new sum),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_queue: pree_top's stage-B queue (PipeFast 1; docs/pree_top.md, "Pipeline, memories
 // and hazards"). What A read (R, the lanes at the RAM outputs) moves into one of two slots, and B
 // issues from the older slot (the head) only, so every input of the issue is a flip-flop: the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top_read: pree_top's stage A (docs/pree_top.md, "Pipeline, memories and hazards"). The
 // controller's offer is read in lane order, one lane per bank a cycle: a lane whose bank an
 // earlier unread lane of the offer uses waits (a bank conflict), and so does every later lane.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_u64_to_f32: an unsigned 64-bit integer rounded once to binary32, round to nearest even,
 // Stages pipeline stages (2 by default, the paper's; 5 with PipeFast = 1).
 //

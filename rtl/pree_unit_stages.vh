@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_unit_stages.vh: GENERATED from config/pree_config.json by scripts/pree_config.py (make config): do not edit.
 // The PREU's fp32 unit kinds and each unit's default Stages, included inside a module
 // (rtl/pree_preu_plan.vh, tb/fp32/tb_fp32_pipe.v). A unit's latency is Stages + InRegs.

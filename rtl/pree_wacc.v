@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_wacc: the stable datapath's wide accumulator add, y = A + t, truncating, Stages pipeline
 // stages (2 by default, the paper's; 5 with PipeFast = 1).
 //

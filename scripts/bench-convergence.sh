@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Run time against error: cornell3 at 768,000 x 2^k photons (k = 0..6) in both precisions, each
 # precision one render writing a convergence series (--write-at: each point has the bits of a
 # render of that count; its seconds, wall and CPU, are the render's so far, from its statistics),

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Instruction counts of the engine's phases under callgrind: a figure that, unlike seconds on a
 # virtual machine, repeats to the last digit for the same binary and inputs, so two commits can be
 # compared without the machine's wander. One thread (the count of a parallel run depends on the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Engine speed on cornell3 at 320x240 with 768,000 photons: the update phase of the
 # smallppm-compatible path in million candidates per second with 1 and 2 threads, and
 # seconds end to end per grid and precision, with peak memory; the photon-major update loop

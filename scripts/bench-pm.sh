@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The photon-map estimator against PPM (docs/photon_map.md): run time against error on cornell3
 # and cornell-teapot, PPM and PM with k = 50, 200, 1000 (clustered search, max radius 4x the PPM
 # initial radius), photons quadrupling from BASE, each against a long PPM reference with photons

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The engine at scale (issue 15): cornell3 at 320x240 / 768k, 1600x1200 / 19.2M and
 # 3840x2160 / 82.9M photons, 2 threads, three ways: the default (screening batches of up to 4
 # blocks as the re-filters give memory back, model/ppm/render_step.c), one block at a time

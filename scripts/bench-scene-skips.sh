@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # bench-scene-skips.sh: what the engine saves when a scene lacks a feature, measured on
 # variants of cornell-sphere at 320x240, 768,000 photons, 2 threads (docs/scenes.md, "Skips"):
 #   triangles  the scene as shipped: both balls are triangle meshes (Embree native triangles)

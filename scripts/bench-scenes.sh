@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # bench-scenes.sh: the scene benchmark (called by `make bench`): every scene at 320x240 with
 # 10 photons per pixel (768,000, the paper's rule) on 2 threads; prints a Markdown table of
 # triangles, scene load and BVH build seconds, hit points, photon hits, HpUO candidates,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # flip-reference.sh [VENV]: regenerate tests/data/flip/reference.txt, the figures that
 # tests/checks/compare_flip.sh holds `pree compare --flip` to: the mean and the largest pixel of
 # the LDR-FLIP map by NVIDIA's own implementation (pip flip-evaluator 1.7, pinned in

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Run the formal suite (formal/<job>/<job>.sby, docs/formal.md) through the pinned SymbiYosys,
 # Yosys and Boolector (the WebAssembly builds that `make fpga-deps` installs).
 # Usage: formal-run.sh [quick|full] [job|job:task ...]

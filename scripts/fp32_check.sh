@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # fp32_check.sh: run one make target of mk/fp32.mk as a regression check (tests/checks/fp32_*.sh).
 # Usage: scripts/fp32_check.sh <target> [VAR=value ...]
 # Exit 0 when the target succeeds; otherwise the last lines of its output and the exact

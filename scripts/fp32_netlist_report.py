@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """fp32_netlist_report.py: resources and logic depth per stage of a Yosys synth_xilinx netlist.
 
 Usage: fp32_netlist_report.py <netlist.json> <top> [--max]

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # fp32_synth.sh: synthesise one binary32 unit with Yosys synth_xilinx (7-series) and check it.
 # Usage: scripts/fp32_synth.sh <add|mul|sqr|div|cmp|div8|wacc|u2f>[_fast] <out_dir>
 #   (div8: divider, Stages = 8; wacc: pree_wacc; u2f: pree_u64_to_f32; <unit>_fast: the unit

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """fpga_doc.py: put a generated table into a document between its markers.
 
 Usage: fpga_doc.py <doc.md> <name> <table.md>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # fpga_pnr_top.sh: the whole PREE on the ULX3S's LFE5U-85F (docs/fpga.md, "The whole design"):
 # Yosys synth_ecp5, nextpnr-ecp5, ecppack. One step a call, so that make runs each when its
 # inputs change:

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """fpga_report.py: one Markdown table row from a Yosys synth_ecp5 + nextpnr-ecp5 run.
 
 Usage: fpga_report.py <config> <synth.json> <nextpnr report.json> <yosys stat.txt>

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # fpga_timing.sh: place and route one arithmetic-unit configuration on an ECP5 and report it.
 # Usage: scripts/fpga_timing.sh <config> <out_dir>
 #   config: <unit> (the paper's configuration), <unit>_fast (PipeFast = 1), or <unit>_s<N>

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """fpga_top_report.py: the tables of `make fpga-pnr-top` (docs/fpga.md, "The whole design").
 
 Usage: fpga_top_report.py <dir> <seed> [<seed> ...]

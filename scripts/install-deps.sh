@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Install the Debian packages PREE needs, only those missing; silent when all are present.
 # With --fpga VENV: instead, the Python packages of the hardware flows, pinned, into the virtual
 # environment VENV, only when missing: place and route (make fpga-timing, docs/fpga.md), formal

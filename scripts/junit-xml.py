@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """junit-xml.py: the regression's JUnit XML (build/test-results.xml) from scripts/run-tests.sh's
 results table, and the per-binary counts of a cmocka XML report.
 

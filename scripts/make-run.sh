@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # make run: render a scene (default cornell3; 320x240, 768,000 photons) in double precision
 # first (the first picture, within a minute of the build on this machine), then fp32 with both
 # datapaths and their comparison with the double render (figures as JSON, difference maps), then

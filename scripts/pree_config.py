@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """pree_config.py: the generator of PREE's configuration copies from config/pree_config.json.
 
 Usage:
@@ -25,6 +26,7 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 TABLE = "config/pree_config.json"
+SPDX = "SPDX-License-Identifier: Apache-2.0"
 NOTE = "GENERATED from %s by scripts/pree_config.py (make config): do not edit." % TABLE
 
 
@@ -61,7 +63,7 @@ def ternary(t, pf):
 
 def gen_vh(t):
     us = pipelined(t)
-    out = ["// pree_unit_stages.vh: " + NOTE,
+    out = ["// " + SPDX, "// pree_unit_stages.vh: " + NOTE,
            "// The PREU's fp32 unit kinds and each unit's default Stages, included inside a module",
            "// (rtl/pree_preu_plan.vh, tb/fp32/tb_fp32_pipe.v). A unit's latency is Stages + InRegs.",
            "// kind  module            Stages  default (PipeFast 0 / 1)"]
@@ -87,7 +89,7 @@ def gen_h(t):
     p = t["preu"]
     top = t["top"]
     preus = sorted(int(n) for n in top["preus"])
-    out = ["/* pree_config.h: " + NOTE,
+    out = ["// " + SPDX, "/* pree_config.h: " + NOTE,
            " * The fp32 units' Stages (a unit's latency is Stages + InRegs), the PREU's latencies that",
            " * follow from them, and the pree_top parameters of the co-simulation models. */",
            "#ifndef PREE_CONFIG_H", "#define PREE_CONFIG_H", "",
@@ -128,7 +130,7 @@ def gen_mk(t):
     reg = top["regression"]
     b = t["fp32_benches"]
     names = lambda g: " ".join(x["name"] for x in b if x["group"] in g)
-    out = ["# config.mk: " + NOTE, "",
+    out = ["# " + SPDX, "# config.mk: " + NOTE, "",
            "# Each unit's module and Stages range (a unit's latency is Stages + InRegs)."]
     for n, u in pipelined(t):
         out.append("FP32_STAGES_%s := %s" % (n, " ".join(str(s) for s in range(u["stages"][0], u["stages"][1] + 1))))

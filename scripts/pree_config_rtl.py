@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """pree_config_rtl.py: measure the RTL against the configuration table (config/pree_config.json).
 
 Usage: scripts/pree_config_rtl.py [WORKDIR]

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """pree_filelist.py: rtl/pree.f from FuseSoC's view of pree.core.
 
 Usage: pree_filelist.py EDA_YML OUT

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """pree_fit.py: which pree_axi configurations fit which FPGA parts, by block RAM (and UltraRAM)
 count, from the memories pree_top builds (rtl/pree_top.v; docs/integration.md, "Which part"):
 

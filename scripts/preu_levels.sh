@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # preu_levels.sh: one PREU (paper datapath) through Yosys synth_xilinx (xc7, flattened), checked
 # for latches and combinational loops, and its logic depth between registers.
 # Usage: scripts/preu_levels.sh <0|1> <out_dir>   (PipeFast 0: the paper's plan; 1: the deep one)

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """regs_gen.py: pree_axi's register map (rtl/regs/pree_axi.rdl) into the files PeakRDL's own
 exporters do not write: the register numbers pree_axi.v includes, the table the register-map
 check compares the RTL with, and the Markdown table of docs/integration.md.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # regs_gen.sh: every file generated from pree_axi's register map (rtl/regs/pree_axi.rdl), written
 # under DEST (the repository root for `make regs`; a scratch copy for tests/checks/regs_map.sh):
 #   drv/pree_axi_regs.h               C header: the register block as a struct, field masks, resets
@@ -20,6 +21,10 @@ trap 'rm -rf "$tmp"' EXIT
 "$venv/bin/peakrdl" c-header --type-style hier "$rdl" -o "$tmp/pree_axi_regs.h"
 "$venv/bin/python" scripts/regs_gen.py "$rdl" "$tmp/pree_axi_regs.vh" "$tmp/pree_axi_regs_table.h" "$tmp/table.md"
 python3 scripts/fpga_doc.py "$dest/docs/integration.md" regs-map "$tmp/table.md"
+for f in pree_axi_regs.h pree_axi_regs.vh pree_axi_regs_table.h; do   # the licence line first
+  { echo "// SPDX-License-Identifier: Apache-2.0"; cat "$tmp/$f"; } > "$tmp/$f.spdx"
+  mv "$tmp/$f.spdx" "$tmp/$f"
+done
 mv "$tmp/pree_axi_regs.h" "$dest/drv/pree_axi_regs.h"
 mv "$tmp/pree_axi_regs.vh" "$dest/rtl/pree_axi_regs.vh"
 mv "$tmp/pree_axi_regs_table.h" "$dest/tb/regs/pree_axi_regs_table.h"

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """run-summary.py OUT RTL: the closing summary of `make run` (scripts/make-run.sh): where the
 images, maps and report are, and the figures, all read from the JSON files the run wrote.
 RTL is 1 when the co-simulation ran."""

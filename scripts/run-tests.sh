@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Regression runner: every cmocka unit binary in build/tests and every script in tests/checks (a
 # parameterised one, "# cases:" below, once per case).
 # Usage: run-tests.sh [quick|full]. A check script declares "# level: quick" to run in both;

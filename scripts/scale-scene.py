@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """scale-scene.py: a copy of a scene file with every length multiplied by S.
 
 Usage: scale-scene.py SCENE S OUT [--epsilon]

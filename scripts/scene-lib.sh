@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # scene-lib.sh: sourced by the scene checks and scripts/bench-scenes.sh (run from the repository
 # root). build_scene_stats builds build/scene-stats from scripts/scene-stats.c against
 # build/libpree.a with the Makefile's flags; make runs only for what is missing (`make test`

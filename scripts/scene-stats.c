@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene-stats.c: helper for the scene checks and the scene benchmark (built by
  * scripts/scene-lib.sh against build/libpree.a).
  *   scene-stats info SCENE    one line: triangles, meshes, spheres, point and area lights,

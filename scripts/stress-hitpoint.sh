@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # stress-hitpoint.sh: the single-hit-point part of the stress suite (make stress-hitpoint; issue 10,
 # docs/numerics.md). Runs build/stress/stress_hitpoint for: the reference self-test; the main run
 # (alpha 0.7, r2_0 = 1, constant flux 1, 1e9 accepts, both datapaths), the same with random flux;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # stress-plots.sh: the stress suite's log-log plots of |relative error| against accepted photons,
 # from OUTDIR/hitpoint.csv (scripts/stress-hitpoint.sh): OUTDIR/numerics-r2.png (r2 against the
 # closed form, both datapaths and the double reference, constant and random flux),

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # stress-render.sh: the whole-render part of the stress suite (make stress-render; issue 10,
 # docs/numerics.md).
 #  1. Drift: scenes/cornell3 and the caustic scene scenes/cornell-sphere at 16x12 with 1e6, 1e7

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """teapot-tessellate.py: tessellate Newell's Utah teapot (32 bicubic Bezier patches) into a
 triangle OBJ with analytic per-vertex normals, for the cornell-teapot scene.
 

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The sanitizer run (make test-sanitize): the unit tests and the bad-input checks against the
 # AddressSanitizer + UndefinedBehaviorSanitizer build in DIR (default build-san). A sanitizer
 # report stops the process (halt_on_error) and fails the run; leaks are reported too.

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """wave-view.py TRACE.fst TEMPLATE.gtkw OUT.gtkw: a GTKWave save file that opens where the action
 is. Reads the trace (fst2vcd, from Debian's gtkwave), samples pree_top once a cycle (at the clock's
 low phase, the cycle's inputs and combinational outputs) and finds the first photon accepted

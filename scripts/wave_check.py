@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """wave_check.py: the timing diagrams of docs/wave against a simulation of pree_axi.
 
 Usage: wave_check.py BENCH_OUTPUT WAVE_DIR

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // adiso_rec_fv: formal harness of pree_adiso_rec (ADISO-REC, paper 000 Eq. 10-13).
 //
 // Drives the controller with free inputs (start_i, n_hit_i, stall_i at every cycle, reset in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // adiso_rec_top: the adiso_rec job's top: the harness at two parameter sets with free inputs
 // each: NumPreu 2 with PipeDepth 2 (SHIFT 2, lv up to 7 at 5-bit N) and NumPreu 4 with
 // PipeDepth 3 (SHIFT 4, a multiple of three as the paper's 4 x 12; lv up to 3 at 6-bit N).

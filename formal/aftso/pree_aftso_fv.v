@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_aftso_fv: the formal harness of pree_aftso_hpuoc (jobs formal/aftso*; docs/formal.md).
 //
 // A shadow of the photons the dispatcher holds, in arrival order, each with its data, id, p_addr

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_axi_fv: the formal harness of pree_axi (job formal/axi; docs/formal.md). The wrapper with
 // small parameters around the pree_top stub (pree_top_stub.v), every port checked by the
 // interface property modules of formal/lib, the environment's assumptions, and the wrapper's

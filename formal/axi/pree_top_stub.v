@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_top (formal stub): the engine as pree_axi sees it, for the formal job formal/axi. The
 // same parameters and ports as rtl/pree_top.v; what it does is free within the interface
 // contract of docs/pree_top.md, so that a proof of the wrapper covers every engine that keeps

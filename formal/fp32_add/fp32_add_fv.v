@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_add_fv: the fp32_add job's top: pree_fp32_add's deep configuration (PipeFast = 1,
 // Stages 7) against the paper's (Stages 2) in one fp32_equiv_miter (formal/lib).
 `default_nettype none

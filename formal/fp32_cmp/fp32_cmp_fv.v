@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_cmp_fv: formal check of pree_fp32_cmp (combinational) against an independent
 // statement of IEEE-754 binary32 comparison. pree_fp32_cmp has no deep configuration (latency
 // 0 in every PREU plan; the PREU registers its outputs around it), so instead of a miter it is

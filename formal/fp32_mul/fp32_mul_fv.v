@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_mul_fv: the fp32_mul job's top (docs/formal.md): pree_fp32_mul's split-product plans
 // (Stages 5, 6 and 7, PipeFast = 1's; the four partial products in DSP blocks) each against the
 // paper's Stages 2, with the significand product cut out (fp32_cut_miter, formal/lib, one per

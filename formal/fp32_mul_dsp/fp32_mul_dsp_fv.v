@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_mul_dsp_fv: the fp32_mul_dsp job's top (docs/formal.md): the product stage of
 // pree_fp32_mul's deep configuration (Stages 7: seams 2 and 3 registered, the 24 x 24 significand
 // product as four partial products of 17-bit and 7-bit pieces, each in a pree_fp32_dsp_mul with

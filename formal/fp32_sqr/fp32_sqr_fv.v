@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_sqr_fv: the fp32_sqr job's top: pree_fp32_sqr's deep configuration (PipeFast = 1, Stages
 // 6: every product in a DSP block with its own registers) against Stages 4 (the same three `*`
 // products, H^2, H*L, L^2, with no DSP registers) in one fp32_equiv_miter (formal/lib). Stages 4

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_sqr_prod_fv: the fp32_sqr_prod job's top (docs/formal.md): the product stages of
 // pree_fp32_sqr's deep configuration (Stages 6) and of the paper's (Stages 2) both deliver the
 // square of the significand m = H * 2^17 + L (H = m[23:17], L = m[16:0]) they consumed, the

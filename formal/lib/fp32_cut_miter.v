@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_cut_miter: formal miter of a binary32 unit whose significand product is cut out (jobs
 // fp32_mul and fp32_sqr_cut; docs/formal.md): a deep configuration (Stages = DutStages) against
 // the paper's (Stages 2) in one fp32_equiv_miter, with the job's taps.ys making each unit's 48-bit

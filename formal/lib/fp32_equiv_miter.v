@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_equiv_miter: formal miter of one pipelined binary32 unit (pree_fp32_add, _mul, _sqr,
 // _div): a deep configuration (Stages = DutStages, InRegs = DutInRegs) against a reference
 // configuration (Stages = RefStages, no operand registers; by default the paper's, PipeFast = 0),

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_prod_ghost: formal ghost state of a product stage with two registers (a DSP block's input
 // and output registers, pree_fp32_dsp_mul): the operand bits d_i are taken into q1_o where the
 // stage's input registers load (en1_i) and move on to q2_o where its output registers load

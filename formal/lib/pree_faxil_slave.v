@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_faxil_slave: the AXI4-Lite rules (ARM IHI 0022E, Sec. A3.2 and B1) for a slave under
 // proof, as a property module for SymbiYosys, instantiated beside the slave's port in a formal
 // harness (formal/*/). The master is the environment: its rules are assumed; the slave's are

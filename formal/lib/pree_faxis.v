@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_faxis: the AXI4-Stream rules (ARM IHI 0051A, Sec. 2.2 and 2.7) as a property module for
 // SymbiYosys, instantiated beside a stream port in a formal harness (formal/*/).
 //

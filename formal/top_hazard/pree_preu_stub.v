@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_preu_stub: the formal jobs' stand-in for pree_preu (same module name, ports and
 // parameters), read instead of rtl/pree_preu.v. It keeps the PREU's timing contract and leaves
 // its data free:

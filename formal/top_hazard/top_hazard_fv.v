@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // top_hazard_fv: formal harness of pree_top's hazard rule and operation flow, with small
 // memories and the PREUs replaced by pree_preu_stub (the PREU's timing, free data).
 //

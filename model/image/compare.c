@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* compare.c: SSIM (Wang et al. 2004, Gaussian 11x11, valid windows), SNR, PSNR, RMSE and the
  * maximum absolute difference between two RGB images, plus a false-colour difference map.
  * SSIM is separable: each input row is filtered horizontally into five moment rows (a, b, a^2,

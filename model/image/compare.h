@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* compare.h: image comparison metrics: SSIM, SNR, PSNR, RMSE, maximum absolute difference.
  *
  * API

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* diffmap.c: error fields and their false-colour pictures with a labelled colour bar (see
  * diffmap.h). The labels are drawn with a 5x7 pixel font of the few characters they need. */
 #include "diffmap.h"

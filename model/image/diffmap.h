@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* diffmap.h: difference images people can read: per-pixel error fields (absolute, relative,
  * 1 - SSIM) drawn in false colour with a colour bar and its values below the picture.
  *

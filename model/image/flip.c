@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* flip.c: LDR-FLIP (see flip.h). Two pipelines per pixel:
  *   colour: sRGB -> linear RGB -> XYZ -> YCxCz; each opponent channel filtered by its contrast
  *           sensitivity function (a sum of Gaussians in visual degrees, separable); back to

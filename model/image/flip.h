@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* flip.h: LDR-FLIP, the perceptual difference of two LDR images (Andersson, Nilsson,
  * Akenine-Moller, Oskarsson, Astrom, Fairchild, "FLIP: A Difference Evaluator for Alternating
  * Images", HPG 2020), written from the paper's description; docs/compare.md, "FLIP", gives the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* image.c: RGB image buffers, smallppm's tone map, the ASCII PPM writer, and atomic file writes
  * that choose the format by extension (8-bit PNG through libpng, png_write.c; EXR and every PNG
  * read through image_io.cpp).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* image.h: RGB images in memory, smallppm's tone map, and reading/writing PPM, PNG and EXR files.
  *
  * API

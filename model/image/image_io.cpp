@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // image_io.cpp: the project's only C++: OpenImageIO 2.4 behind the extern "C" API of image_io.h.
 // Every bool OpenImageIO returns is checked; its (possibly multi-line) error text is folded into
 // one line after the file name. No exception crosses into C.

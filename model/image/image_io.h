@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* image_io.h: OpenImageIO behind a C API: write 8-bit or float RGB pixels, read any image as RGB.
  *
  * API (used by image.c, which adds the format choice and atomic temporary-file handling)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* png_write.c: 8-bit RGB PNG output through libpng, so that a render writing a PNG does not load
  * OpenImageIO's module (about 0.3 s of start-up for its 260 libraries; image.c). */
 #include <errno.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* png_write.h: 8-bit RGB PNG output (libpng), for image.c's writer. */
 #ifndef PREE_PNG_WRITE_H
 #define PREE_PNG_WRITE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cluster.c: hierarchical aggregation of hit points into clusters of 16 (see cluster.h). */
 #include <math.h>
 #include <omp.h>

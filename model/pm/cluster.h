@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cluster.h: shading points (hit points) in clusters of at most 16, after paper 002, Sec. 4.1.
  *
  * Points are grouped by the object they lie on and ordered along a Morton curve within the

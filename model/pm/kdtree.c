@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* kdtree.c: the implicit balanced kd-tree (see kdtree.h). */
 #include <stdlib.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* kdtree.h: a balanced kd-tree over 3-D points (the photon map's positions), with range queries
  * that give runs of tree positions.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_clustered.c: the clustered k-NN search of one cluster (see knn_clustered.h). */
 #include <math.h>
 #include <stdlib.h>

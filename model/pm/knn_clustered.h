@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_clustered.h: paper 002's clustered k-NN search for one cluster of up to 16 shading points
  * (--knn-search clustered, the default of --estimator pm), on the photon tree (photon_tree.h).
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_kdtree.c: the single-pass k-NN walk with a bounded max-heap (see knn_kdtree.h). */
 #include "knn_kdtree.h"
 

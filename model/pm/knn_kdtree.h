@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_kdtree.h: the classic single-pass k-NN search (--knn-search kdtree), the fair baseline
  * of the clustered search: Jensen's photon-map lookup (pbrt-v2's KdTree::Lookup) on the same
  * photon tree (photon_tree.h). One walk per shading point, near side first; a bounded max-heap

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_kernel.c: the prefilter kernel's three paths and their run-time choice (see knn_kernel.h).
  * Every path computes d2 = (dx dx + dy dy) + dz dz and dot = (nx nx' + ny ny') + nz nz' with
  * separate multiplies and adds (no fused multiply-add: -ffp-contract=off and the intrinsics

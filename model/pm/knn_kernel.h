@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_kernel.h: the clustered search's vector prefilter: one shading point against runs of
  * photons in tree order (structure of arrays, photon_tree.h), vectorised across the photons:
  * 16 float lanes with AVX-512, 8 with AVX2, one at a time in the scalar path. Each photon's

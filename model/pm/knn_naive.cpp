@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // knn_naive.cpp: the oracle k-NN through nanoflann (see knn_naive.h).
 #include <nanoflann.hpp>
 #include <new>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_naive.h: the test oracle's k-NN search (--knn-search naive): per shading point, the k nearest
  * photons within the maximum radius that pass the normal test, through nanoflann's kd-tree and
  * its k-nearest result set (Debian's libnanoflann-dev), not the project's own tree: code the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_select.c: the selections of the k nearest (see knn_select.h). */
 #include <stdlib.h>
 #include <string.h>

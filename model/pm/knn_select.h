@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* knn_select.h: the selection every k-NN search ends with, and the tie rule they share:
  * neighbours ordered by (squared distance, photon index), the k first kept.
  *

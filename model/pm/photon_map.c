@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_map.c: photons traced in task units by a thread pool into the photon map. */
 #include <omp.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_map.h: Jensen's photon map for the photon-mapping estimator (--estimator pm): every
  * diffuse hit of photons offset .. offset + n - 1, traced exactly as the PPM photon pass traces
  * them (photon_trace), held in photon order whatever the thread count.

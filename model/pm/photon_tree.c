@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_tree.c: the kd-tree and its structure-of-arrays copies (see photon_tree.h). */
 #include <math.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_tree.h: the photon map as the fast searches read it, built once per render: the
  * balanced kd-tree (kdtree.h) over the photons' positions, and beside it, in the same tree
  * order, structure-of-arrays copies of what a distance-and-normal test reads: the positions

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_estimate.c: the photon-map radiance estimate at every hit point, and --knn-bench (see
  * pm_estimate.h). */
 #include <omp.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_estimate.h: each hit point's radiance from its k nearest photons (see pm_render.h),
  * through the clustered search (knn_clustered.h), the single-pass search (knn_kdtree.h) or the
  * oracle (knn_naive.h). */

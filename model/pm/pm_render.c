@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_render.c: the photon-map render: eye pass, photon map, search, image (see pm_render.h). */
 #include <omp.h>
 #include <stdio.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_render.h: classic two-pass photon mapping (Jensen) with the engine's emission and
  * tracing: the eye pass's hit points as shading points, a photon map of every diffuse photon
  * hit, and at each hit point the radiance estimate from its k nearest photons that pass the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_search.c: the searches' set-up and query loops (see pm_search.h). */
 #include <omp.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_search.h: the photon-map searches' shared set-up and their query loops, private to
  * model/pm: pm_estimate runs one of them, --knn-bench all of them on the same trees. */
 #ifndef PREE_PM_SEARCH_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pm_stats.h: the photon-map estimator's figures in the render statistics ("pm" in the JSON).
  * The tree each search method reads is built once per render and timed on its own (sec_tree);
  * sec_search is the queries alone, so that methods compare query against query. */

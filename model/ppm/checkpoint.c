@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* checkpoint.c: the render state on disk (checkpoint.h): fingerprint, atomic write, checked read.
  *
  * Layout (native byte order; the fingerprint covers the build, so a file is read only by the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* checkpoint.h: a long render's state on disk, so that it can stop and resume to the same bits.
  *
  * A checkpoint holds the photons done, the photon pass's counters and every hit point's state

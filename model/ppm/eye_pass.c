@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* eye_pass.c: eye rays from the camera to their diffuse hit points, rows in parallel. */
 #include <omp.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* eye_pass.h: the ray-tracing pass: one ray through each pixel centre, followed through
  * mirror and glass chains (glass branches into reflected then refracted paths) to the first
  * diffuse surface, where a hit point is stored, even one of weight zero.

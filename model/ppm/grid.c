@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid.c: the hit-point grid's front door: the reference hash grid and the brute-force list built
  * here, the default exact-cell grid in grid_cells.c, each stored per owning part as compressed
  * bucket lists; and the look-up of a photon's bucket. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid.h: spatial look-up of hit points for photons, split into parts that threads own.
  *
  * Three kinds:

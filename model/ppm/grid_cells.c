@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid_cells.c: the default exact-cell grid: the hit points' safe-radius boxes numbered into
  * buckets (a dense array of every cell, or a hashed table of the touched ones), counted and filled
  * in lanes that threads take, in the parts that own the hit points. */

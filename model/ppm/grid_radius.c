@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid_radius.c: the radii the grids are built for: smallppm's initial radius from the hit points'
  * bounding box, and the safe radius that covers every binary32 rounding of the distance test. */
 #include <math.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid_refilter.c: drop the GRID_CELLS entries that the current radii rule out.
  * Radii only shrink, so a hit point whose safe box, taken on its CURRENT radius, no longer
  * touches a cell can never accept a photon of that cell again. The safe radius is the build's

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid_refilter.h: drop the grid entries that the current radii rule out (GRID_CELLS). */
 #ifndef PREE_GRID_REFILTER_H
 #define PREE_GRID_REFILTER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grid_table.h: inside the grid (grid.c builds the reference grid and the brute list and looks
  * cells up; grid_cells.c builds the exact-cell grid): the cells' open-addressing table and the
  * parts' allocation, which both use. Not for callers of grid.h. */

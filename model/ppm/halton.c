@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* halton.c: reverse-permuted radical inverse over the first 61 primes. */
 #include <stdint.h>
 #include "halton.h"

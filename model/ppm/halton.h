@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* halton.h: the radical-inverse (Halton) sequence with reverse digit permutation, as in the
  * reference program: dimension b uses the b-th prime (2, 3, 5, ... 283), index j >= 0. */
 #ifndef PREE_HALTON_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* hitpoints.c: growable storage for hit points, and the arrays each mode's state adds. */
 #include <stdlib.h>
 #include <string.h>

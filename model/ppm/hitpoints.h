@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* hitpoints.h: the measurement points of progressive photon mapping and their state.
  *
  * Geometry (position, normal, weight, pixel) comes from the eye pass, in creation order

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* hp_order.c: a spatial order of the hit points for the photon pass.
  *
  * The eye pass stores hit points in pixel order, so a photon's candidates (spatial neighbours)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* hp_order.h: a spatial order of the hit points for the photon pass (see hp_order.c). */
 #ifndef PREE_HP_ORDER_H
 #define PREE_HP_ORDER_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mem_check.c: the memory estimate's check against the limits (mem_check.h). */
 #include <stdio.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mem_check.h: the render's memory, estimated before it is allocated and checked against a
  * limit, so that an image or scene too large for the machine is a one-line error naming the
  * limit instead of swapping, crawling on failed reallocations or being killed.

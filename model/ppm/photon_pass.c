@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_pass.c: photons from point and area lights through diffuse, mirror and glass bounces. */
 #include <stdlib.h>
 #include "halton.h"

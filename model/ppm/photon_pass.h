@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* photon_pass.h: photon emission from the scene's lights and tracing with Russian roulette,
  * recording every diffuse hit (the grid look-ups) in path order.
  *

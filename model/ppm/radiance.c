@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* radiance.c: pixel radiance from the hit points' flux and radius. */
 #include <stdlib.h>
 #include <string.h>

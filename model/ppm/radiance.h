@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* radiance.h: radiance evaluation (Eq. 4 of paper 000): each hit point adds
  * tau / (pi R^2 N_emitted) to its pixel.
  *

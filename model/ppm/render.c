@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render.c: the render driver: the session's set-up (phases in order, threads, the grid), the
  * radiance pass and the close.
  *

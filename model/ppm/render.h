@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render.h: one progressive photon mapping render: eye pass, grid, photon pass with ordered
  * updates, radiance evaluation. The output image is bit-identical for every thread count.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_check.c: the render's result checks: the image and state hashes, and the fp32
  * mode's range checks at the PREE boundary and on the final image. */
 #include <math.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_check.h: the render's result checks (model/ppm/render_check.c). */
 #ifndef PREE_RENDER_CHECK_H
 #define PREE_RENDER_CHECK_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_dist.c: the MPI transport of a distributed render (render_dist.h). Without PREE_MPI
  * the program is one rank, and the exchanges are never called. */
 #include <stdint.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_dist.h: the transport of a render over MPI ranks (docs/scale_out.md): built on MPI
  * when make finds mpicc (PREE_MPI), otherwise one rank. Only render.c's distributed photon
  * rounds call it, and only when render_dist_size() > 1 (the program was started by an MPI

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_round.c: the photon pass across MPI ranks (docs/scale_out.md).
  *
  * A round deals one photon block to each rank (rank r: the round's block r, which keeps its

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_run.c: a whole render driven through its session: the photon blocks, the stopping
  * rules (interrupt, time limit), and the checkpoints (model/ppm/checkpoint.h).
  *

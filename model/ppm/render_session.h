@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_session.h: the render session's state, shared by the phases (render.c) and the
  * driver with its stopping rules and checkpoints (render_run.c). Private to model/ppm. */
 #ifndef PREE_RENDER_SESSION_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_step.c: one step of the photon pass, a screening batch of up to SCREEN_BLOCKS_MAX photon
  * blocks: each block traced in turn into its slot of the block buffers, then the whole batch
  * updated at once (screened bucket-major against the radii at the batch's start, applied in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* render_trace.c: a photon block traced into the session's chunk buffers, each hit with its grid
  * bucket, and the photon pass's progress line. */
 #include <omp.h>

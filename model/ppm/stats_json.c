@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stats_json.c: render statistics in JSON (keys: docs/engine.md, "Statistics"). */
 #include <stdio.h>
 #include "cpu_features.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stats_json.h: the render statistics as a JSON file (jansson; written atomically: a temporary
  * file renamed into place). Returns 0, or -1 with a one-line message naming the file in err. */
 #ifndef PREE_STATS_JSON_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update.c: the candidate loop of the photon pass: grid look-up, tests, update.
  * Candidates are read from the grid's entry copies in sequence; only an accepted update
  * touches the hit point's own state (and rewrites the radius copies). */

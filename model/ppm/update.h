@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update.h: the progressive update of hit points by photon hits (Eq. 1-2 of paper 000 with
  * M = 1 and the hit points' alpha, default 0.7), for one owned part of the hit points, in
  * photon order.

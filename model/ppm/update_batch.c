@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update_batch.c: the photon pass's update of a whole block of photon hits in two phases.
  *
  * Phase 1 (screen) groups the block's hits by grid bucket and tests every candidate of a

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update_batch.h: a block's update in two phases, bucket-major screening then photon-order
  * apply (see update_batch.c); the same result as update_part's photon-major scan. */
 #ifndef PREE_UPDATE_BATCH_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update_prefilter.c: the screening's binary32 prefilter (update_prefilter.h).
  *
  * The bound. Let u = 2^-24 (binary32 round-to-nearest), eta = 2^-150 (half the smallest

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* update_prefilter.h: the screening's binary32 prefilter (update_prefilter.c): per photon hit, the
  * entries of its bucket that can lie within the safe radius, 8 (AVX2) or 16 (AVX-512F) a vector.
  * It rejects only candidates whose double distance test against the safe radius is certain to

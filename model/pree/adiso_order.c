@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_order.c: the PREE radiance pass's issue order (see adiso_order.h). Written from
  * paper 000 Eq. 10-13 and the header of rtl/pree_adiso_rec.v, one step of all groups at a time. */
 #include "adiso_order.h"

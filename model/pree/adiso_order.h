@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_order.h: the order in which the PREE's radiance pass (rtl/pree_top.v with ADISO-REC,
  * rtl/pree_adiso_rec.v) adds hit points to pixels, as a C function.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_rule.c: the AFTSO-HpUOC accumulate-and-dispatch rule (see aftso_rule.h). */
 #include "aftso_rule.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_rule.h: the AFTSO-HpUOC accumulate-and-dispatch rule (rtl/pree_aftso_hpuoc.v, paper 000
  * Sec. IV.B widened to PhotonsPerCycle photons a cycle; docs/controllers.md), once in C. The
  * controller bench's model (tb/ctrl/aftso_model.c) and the co-simulation host's cycle model

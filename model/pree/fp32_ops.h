@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_ops.h: IEEE-754 binary32 arithmetic with the NaN rules of x86-64 SSE, made explicit.
  *
  * The golden reference for the RTL floating-point units and for the PREU datapath model.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* hp_bank.h: the hit-point bank hash of pree_top (rtl/pree_hp_bank.vh hp_bank()), once in C for the
  * co-simulation host (driver, cycle model, scheduler). The RTL keeps its own copy; the host's
  * cycle model predicting the RTL's bank-conflict counts exactly (the schedule check in

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_config.h: GENERATED from config/pree_config.json by scripts/pree_config.py (make config): do not edit.
  * The fp32 units' Stages (a unit's latency is Stages + InRegs), the PREU's latencies that
  * follow from them, and the pree_top parameters of the co-simulation models. */

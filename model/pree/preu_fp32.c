@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_fp32.c: the PREU's binary32 datapath, operation by operation (docs/preu_datapath.md).
  * Compiled with -ffp-contract=off and no fast-math: each fp32_ops call rounds exactly once. */
 #include "preu_fp32.h"

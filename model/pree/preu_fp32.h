@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_fp32.h: the bit-exact binary32 model of one PREU (hit-point update and radiance evaluation).
  *
  * The golden model of rtl/pree_preu.v and of the renderer's fp32 mode. Every operation is one

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_stable.c: the stable PREU datapath, operation by operation (docs/preu_datapath.md,
  * "The stable datapath"). Compiled with -ffp-contract=off and no fast-math. */
 #include "preu_stable.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_stable.h: the bit-exact model of the stable PREU datapath (docs/preu_datapath.md,
  * "The stable datapath"; rtl/pree_preu.v with Datapath = 1).
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_state.h: a hit point as the PREE's hit-point memory holds it, for either datapath.
  *
  * The memory's words (rtl/pree_top.v, host port hp_wdata_i) are {pixel, f, pos, state}; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* wide_acc.h: the stable datapath's wide accumulator format and its two operations.
  *
  * A wide word is 64 bits: e = bits 63..56, an 8-bit exponent biased as binary32's, and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh.c: triangle storage for scenes: the inline-triangle mesh and mesh release. */
 #include <stdlib.h>
 #include <stdio.h>

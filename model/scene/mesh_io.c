@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_io.c: whole-file reads with transparent gzip (zlib), and the Assimp file system. */
 #include <errno.h>
 #include <stdio.h>

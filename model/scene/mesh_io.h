@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_io.h: reading model files into memory for the mesh loader.
  *
  * mesh_read_file() reads a whole file, gunzipping it if it is gzip-compressed (zlib reads

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_light.c: area lights from emitting triangles: construction and photon sampling. */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_light.h: area lights made of emitting triangles (docs/scene_format.md, "Lights").
  *
  * mesh_light_add() appends one area light to the scene from n triangles (3 corners each,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_load.c: the scene file's "mesh FILE [options]" directive: model files through
  * Assimp's C API (gzip-compressed files read through zlib), transforms, the MTL material
  * rule or overrides, degenerate-triangle filtering and emissive (area-light) triangles.

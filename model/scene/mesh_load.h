@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_load.h: triangle meshes in a scene: inline triangles and model files.
  * mesh_append_triangle() adds one triangle to the scene's inline mesh.
  * mesh_load_directive() handles the scene file's "mesh FILE [options]" line (tokens after

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_material.c: MTL material -> engine material (the rule is in mesh_material.h). */
 #include <string.h>
 #include "mesh_material.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_material.h: the rule that maps a model file's (MTL) material to an engine material
  * (docs/scene_format.md, "Meshes"), first match wins:
  *   1. emissive (max Ke > 0): diffuse Kd (the surface of an area light);

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_objcheck.c: line-numbered validation of OBJ and MTL text (see mesh_objcheck.h). */
 #include <ctype.h>
 #include <errno.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_objcheck.h: a strict line-by-line check of Wavefront OBJ text and the MTL files it
  * names, before Assimp (which is lenient and reports no line numbers) reads them.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_options.c: the "mesh FILE [options]" directive's options (mesh_options.h). */
 #include <math.h>
 #include <stdio.h>

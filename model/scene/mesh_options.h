@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* mesh_options.h: the options of the scene file's "mesh FILE [options]" directive
  * (docs/scene_format.md, "Meshes"): the model's path, material and its maps, the transform
  * composed in the order written, the normals and the emission scale.

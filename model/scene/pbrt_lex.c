@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pbrt_lex.c: tokens and parameter lists of pbrt-v4 scene files (pbrt_lex.h). */
 #include <errno.h>
 #include <math.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pbrt_lex.h: the tokens of a pbrt-v4 scene file (scene_pbrt.c), across Include/Import: words
  * (directives, true/false), quoted strings, numbers, [ and ]; `#` starts a comment. Every token
  * knows its file and line, for errors "FILE:LINE: ...". Directives read their parameter lists

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pbrt_ply.c: PLY triangles for pbrt's plymesh (pbrt_ply.h). Every element and property of the
  * header is read (others than vertex and face are skipped), in ASCII or binary. */
 #include <stdint.h>

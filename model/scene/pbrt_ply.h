@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pbrt_ply.h: the triangles of a PLY file for pbrt's "plymesh" (pbrt_ply.c): ASCII or binary
  * (either byte order); vertex x y z (and nx ny nz), faces as lists of 3 or 4 vertex indices
  * (a quad gives two triangles). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene.h: the scene description: camera, materials, analytic spheres, triangle meshes and
  * lights, as read from a PREE scene file (format: docs/scene_format.md).
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene_lights.c: photon emission by light power (scene.h, scene_light_power). */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene_materials.c: the scene's materials by name, with a hash index (open addressing,
  * FNV-1a) so that defining or using a material costs the same with 50,000 of them as with 5.
  * Index entries are checked against the array's names, so entries left by a rollback

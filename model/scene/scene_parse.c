@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene_parse.c: the text scene format (docs/scene_format.md): one directive per line,
  * '#' starts a comment. Every error names FILE:LINE and what was wrong. */
 #include <ctype.h>

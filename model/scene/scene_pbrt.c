@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene_pbrt.c: pbrt-v4 scene files (docs/pbrt.md): the subset that progressive photon mapping
  * renders, with pbrt's semantics: its left-handed camera (the world is mirrored in x when the
  * camera's frame needs it, which leaves the image as pbrt forms it), fov on the shorter image axis,

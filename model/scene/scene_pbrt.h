@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* scene_pbrt.h: a pbrt-v4 scene file read into a scene (scene_pbrt.c, docs/pbrt.md); scene_load
  * calls it for a path ending in .pbrt. */
 #ifndef PREE_SCENE_PBRT_H

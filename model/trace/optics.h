@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* optics.h: reflection and refraction as the reference program computes them, shared by
  * the eye pass and the photon pass. */
 #ifndef PREE_OPTICS_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* sphere_group.c: all spheres of a small group against one ray, scalar or four at a time. */
 #include <math.h>
 #include "cpu_features.h"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* sphere_group.h: the reference program's ray-sphere test for a small set of spheres at once.
  * Every sphere's t (or 0 for a miss) is computed with exactly the operations of the scalar test
  * (sphere_group_t_scalar), in AVX2 lanes where the processor has them: the same bits. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* tracer.c: Embree 3 scene of user-geometry spheres (intersected in double) and triangles. */
 #include <embree3/rtcore.h>
 #include <stdbool.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* tracer.h: ray casting for the engine through Embree 3.
  * Spheres are Embree user geometry whose callbacks intersect the double-precision ray
  * (carried in an extended intersect context) exactly as the reference program does;

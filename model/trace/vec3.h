@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* vec3.h: double 3-vectors with the exact operation order of the reference program.
  * dot is x*x' + y*y' + z*z' summed left to right; normalize multiplies each component by
  * 1/sqrt(x*x + y*y + z*z). The byte-exact reproduction depends on these orders. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* atomic_out.c: temporaries beside their targets, renamed over regular files only, and a
  * signal-safe list of the live ones (atomic_out.h). */
 #include <errno.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* atomic_out.h: every output file (images, statistics) is written to a temporary beside its
  * target and renamed over it only when complete, and only over a regular file (or nothing):
  * a device (/dev/null), a directory or a symbolic link at the target is refused, never

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cpu_features.c: the vector level the kernels use (cpu_features.h). */
 #include <stdlib.h>
 #include <string.h>

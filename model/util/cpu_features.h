@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* cpu_features.h: which vector instruction set the engine's kernels use, chosen once per process.
  *
  * The kernels that have vector versions (the update's screening and its prefilter, the sphere

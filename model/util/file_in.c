@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* file_in.c: open an input only when it is a regular file of bounded size (file_in.h). */
 #include <errno.h>
 #include <fcntl.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* file_in.h: inputs are read only from regular files of bounded size, so that a directory,
  * a device (/dev/zero), a FIFO or a socket given as a scene or an image is a clear one-line
  * error instead of a hang or an endless read. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fnv1a.h: the 64-bit FNV-1a hash of the image and state hashes (determinism checks). */
 #ifndef PREE_FNV1A_H
 #define PREE_FNV1A_H

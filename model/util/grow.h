@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* grow.h: the one growth rule for the engine's arrays.
  *
  * grow_array(&p, &cap, need, size): make *p hold at least need elements of size bytes,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* json_file.c: JSON files through jansson, written atomically (model/util/atomic_out.h). */
 #include <errno.h>
 #include <stdio.h>

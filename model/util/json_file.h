@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* json_file.h: the engine's JSON files, written through jansson: indented, keys in insertion
  * order, reals with 17 significant digits (enough to read the same double back), every string
  * escaped by the library. */

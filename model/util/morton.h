@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* morton.h: 3-D Morton (Z-order) codes, 21 bits an axis: the spatial orders of the hit points
  * (model/ppm/hp_order.c) and of the photon-map clustering (model/pm/cluster.c). */
 #ifndef PREE_MORTON_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_env.c: the names of the environment variables of pree_env.h, and their reader. */
 #include "pree_env.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_env.h: every environment variable that the engine (libpree) and the co-simulation host
  * read, named in one place. None changes an image, a state hash or a cycle count.
  *

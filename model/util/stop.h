@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stop.h: a cooperative stop request. A signal handler sets the flag; the long phases (BVH
  * build, eye pass, grid build, photon tracing) poll it and give up with STOP_MESSAGE in err,
  * so that SIGINT or SIGTERM is honoured within a fraction of a second in every phase. */

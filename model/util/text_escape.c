@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* text_escape.c: escape control and non-UTF-8 bytes for the terminal (text_escape.h). */
 #include <stdio.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* text_escape.h: text from files (scene tokens, mesh names) made safe to print on a terminal:
  * control bytes (C0, DEL, and C1 as UTF-8), invisible marks (a byte-order mark, zero-width and
  * bidirectional controls) and bytes that are not UTF-8 become \xNN (byte by byte), so that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_uart_axi: pree_axi with pree_uart_bridge in front, its only host link: one UART (rx_i, tx_o,
 // Div clock cycles a bit) carries AXI4-Lite register writes and reads, beats for the three input
 // streams and every m_axis beat (the protocol is in rtl/board/pree_uart_bridge.v). The board top

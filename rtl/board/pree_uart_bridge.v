@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_uart_bridge: a host link to pree_axi over one UART: the host writes and reads the
 // AXI4-Lite registers, pushes beats into the three input streams, and receives every m_axis beat.
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_uart_rx: UART receiver, 8 data bits, no parity, one stop bit (8N1), LSB first, idle high.
 // Div clock cycles a bit (clock / baud rate, at least 4). The input passes two synchronising
 // flip-flops; a start bit is a low level seen while idle, checked again half a bit later; the data

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_uart_tx: UART transmitter, 8N1, LSB first, idle high; Div clock cycles a bit (clock / baud
 // rate). A byte is taken when valid_i and ready_o are both high; ready_o is high while nothing is
 // being sent (the stop bit included).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_ulx3s: PREE on the ULX3S board (Lattice ECP5 LFE5U-85F, CABGA381; pins in
 // constraints/pree_ulx3s.lpf). The 25 MHz board clock feeds an EHXPLLL whose CLKOP is the core
 // clock (25 MHz x PllFbDiv / PllInDiv; the VCO, CLKOP x PllOpDiv, must lie in 400..800 MHz); the

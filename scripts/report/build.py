@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """build.py: `make report`: one self-contained HTML page, OUT/report/index.html, from the JSON and
 images PREE's commands already wrote (sections.py says which). Every image is inlined, so the
 page opens without a network or any file beside it. A script marks the page when every image has

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """sections.py: the report's sections, each built from files that PREE's commands write (make run,
 make bench, make sim / sim-full, make fpga-timing, make test). A missing source is shown as
 "not run" with the command that makes it; no figure is typed here."""

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """svg.py: the report's charts as inline SVG (no plotting library, no network): a grouped bar
 chart and a log-log line plot."""
 import html

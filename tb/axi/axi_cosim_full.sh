@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The whole-frame rows through the AXI4 wrapper beside pree_top alone: for each model tag
 # (p4, p8, p16: paper datapath; s4 ...: stable; a trailing f: PipeFast 1), `pree cosim --axi`
 # (build/pree-cosim-axi-<tag>) without gaps and with random back-pressure on every stream

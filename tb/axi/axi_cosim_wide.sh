@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The AXI4 wrapper with 8 PREUs against the C model: `pree cosim --axi`
 # (build/pree-cosim-axi-p8; two photons a beat, PhotonsPerCycle 2, into its pree_top's wide
 # intake) on cornell3 32x24 / 3000 photons, with random back-pressure and gaps on every

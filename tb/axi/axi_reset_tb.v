@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // axi_reset_tb: pree_axi (with the real pree_top, small memories) at the end of a reset. A host
 // may start a transfer at the first rising edge after ARESETn rises (AXI4, A3.1.2), while the
 // wrapper's synchronised reset is still low for two more edges. Here every channel starts then:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // axi_wave_tb: the timing diagrams of docs/integration.md (docs/wave/*.json) replayed on pree_axi.
 // Each scenario drives its diagram's stimulus and prints, for every cycle (sampled in the middle
 // of the cycle), the rows of the diagram that are ports of pree_axi:

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // axi_wrap_drv: one host for the wrapper bench (tb/axi/axi_wrap_tb.v) on one pree_axi: loads
 // 2^HpAW hit points, streams NumPhotons photons in batches of Batch (tlast on each batch's last
 // photon) and their candidates with random gaps and random lane counts from its own Seed, waits

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // axi_wrap_tb: pree_axi through the wrap-around of its running counts. Two wrappers with the
 // real pree_top (by default 2 PREUs, paper datapath, small memories: 64 hit points, a 16-entry
 // index table, 16 pixels) get the same photons, candidates and hit points from two hosts

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # synth_axi.sh: Yosys synth_xilinx (7-series) of pree_axi with NumPreu PREUs, hierarchy kept (the
 # PREU is mapped once). Fails on a latch (after proc) or a combinational loop (before and after
 # mapping); writes one resource row to OUTDIR/<tag>_p<NumPreu>.md.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // uart_bridge_tb: pree_uart_axi (pree_uart_bridge in front of the real pree_axi, narrow memories),
 // driven over its UART by a host written here (its own transmitter and receiver, Div clock
 // cycles a bit). Checks: a register read (VERSION) and its 'r' reply; an

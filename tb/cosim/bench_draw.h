@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* bench_draw.h: the random draws of pree_top's benches (tb/cosim/top_bench.c and top_vecgen.c):
  * one 64-bit linear congruential stream (its high 31 bits a draw), uniform binary32 values, and
  * a photon's candidate hit points by scenario. Header-only, for the bench programs. */

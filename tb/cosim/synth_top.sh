@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # synth_top.sh: Yosys synthesis of pree_top with 4 PREUs for a Xilinx 7-series part
 # (synth_xilinx), hierarchy kept (the PREU is mapped once, instantiated four times). Fails on a
 # latch or a combinational loop; writes the resource table to OUTDIR/resources.md (the whole

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """synth_top_depth.py: logic depth of pree_top's own paths in a Yosys synth_xilinx netlist.
 
 Usage: synth_top_depth.py [--inline SUB,...] NETLIST.json [MODULE]   (MODULE: default pree_top)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* top_bench.c: Verilator bench of pree_top (rtl/pree_top.v) against the C model, with
  * synthetic and adversarial traces. The expected hit-point state comes from model/pree/preu_fp32.h
  * (--datapath 0) or model/pree/preu_stable.h (--datapath 1) applied in photon order; the expected pixels from the same model in the radiance issue order

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* top_bench_abank.c: the top bench's abank scenario, a stream with misplaced index entries
  * (tb/cosim/top_bench_abank.h). */
 #include "top_bench_abank.h"

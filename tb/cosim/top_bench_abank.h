@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* top_bench_abank.h: the top bench's abank scenario (tb/cosim/top_bench.c): a photon stream whose
  * index entries are misplaced on purpose (0..2P-1 entries of random padding between photons
  * instead of the driver's placement), streamed into the RTL by its own host loop, so that an

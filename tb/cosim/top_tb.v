@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // top_tb: self-checking Icarus bench of pree_top over the vector files of tb/cosim/top_vecgen.c.
 //
 // It plays the host of docs/pree_top.md ("Host protocol"): loads the hit points through hp_*,

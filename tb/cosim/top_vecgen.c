@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* top_vecgen.c: writes the vector files of the Icarus bench of pree_top (tb/cosim/top_tb.v):
  * hit points to load, the photon stream with its index-table entries, and the expected hit-point
  * memory and pixel words. The expectations come from the fp32 PREU model (model/pree/preu_fp32.h)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // adiso_bench.cpp: Verilator bench for rtl/pree_adiso_rec.v against the C model adiso_model.c.
 //
 // For each hit-point count N: pulse start_i, then compare every cycle the RTL's addr_valid_o,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_model.c: ADISO-REC leaping addresses, Eq. 10, 12 and 13 of paper 000 written out as
  * the recurrences they are, one step per clock edge, as the RTL does.
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_model.h: C model of the ADISO-REC leaping-address generator (rtl/pree_adiso_rec.v),
  * paper 000 Sec. IV.C, Eq. 10-13.
  *

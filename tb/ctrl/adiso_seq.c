@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_seq.c: prints the ADISO-REC leaping-address sequence of the C model for one N, and
  * counts where the closed form of Eq. 11 disagrees with the recurrence of Eq. 13.
  *

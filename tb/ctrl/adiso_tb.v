@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // adiso_tb: self-checking Icarus bench for pree_adiso_rec over vectors from adiso_vecgen.
 //
 // Each cycle: apply stim[c] (flags {rst_n, start, stall, 0}, N), compare busy_o, addr_valid_o

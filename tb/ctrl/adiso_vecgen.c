@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* adiso_vecgen.c: writes stimulus and expected-output vectors of the ADISO-REC C model for the
  * Icarus bench tb/ctrl/adiso_tb.v.
  *

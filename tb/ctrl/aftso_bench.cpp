@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // aftso_bench.cpp: Verilator bench for rtl/pree_aftso_hpuoc.v against the C model aftso_model.c.
 //
 // Every cycle the RTL's in_ready_o, empty_o and all lanes (valid, ref_addr, id, data, last;

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_model.c: cycle-level model of the AFTSO-HpUOC dispatcher, the same rule as the RTL: the
  * rule of model/pree/aftso_rule.c (accumulate, dispatch, back-pressure, intake of PhotonsPerCycle
  * photons) with each photon's payload (data, id) carried to its lanes. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_model.h: cycle-level C model of the AFTSO-HpUOC dispatcher (rtl/pree_aftso_hpuoc.v).
  * The dispatch rule itself is model/pree/aftso_rule.h (shared with the co-simulation host); this
  * file adds the photons' payload (data words, id) and the RTL's port shapes.

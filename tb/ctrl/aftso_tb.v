@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // aftso_tb: self-checking Icarus bench for pree_aftso_hpuoc over vectors from aftso_vecgen.
 //
 // Each cycle: apply stim[c] (flags {rst_n, in_valid, stall, 0}, N^P, p_addr, id, data), let the

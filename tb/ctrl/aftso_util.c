@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_util.c: PREU utilization of the AFTSO-HpUOC dispatch rule on a stream of photons.
  *
  * Usage: aftso_util [--preu N] [--buf D] [--early-ready 0|1] [--ppc K] [--np-file FILE | --geo MEAN --photons K] [--seed S]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* aftso_vecgen.c: writes stimulus and expected-output vectors of the AFTSO-HpUOC C model for
  * the Icarus bench tb/ctrl/aftso_tb.v.
  *

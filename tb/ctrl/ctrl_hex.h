@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* ctrl_hex.h: writes fixed-width hex vector lines for the Icarus benches ($readmemh format).
  * A line is built from fields, most significant first; each field is a whole number of hex
  * digits, so the Verilog side can slice it with constant part-selects.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* ctrl_rng.h: small deterministic random source (splitmix64) for the controller benches. */
 #ifndef CTRL_RNG_H
 #define CTRL_RNG_H

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # synth_ctrl.sh: Yosys synth_xilinx (7-series) of one controller configuration; fails on any
 # latch or combinational loop and prints one resource line.
 # Usage: synth_ctrl.sh MODULE PARAM=VALUE... (e.g. synth_ctrl.sh pree_aftso_hpuoc NumPreu=8)

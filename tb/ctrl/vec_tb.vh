@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vec_tb.vh: the vector files of the controllers' Icarus benches (adiso_tb.v, aftso_tb.v),
 // included inside the bench module after its MAXCYC, STIM_W and EXP_W; `VEC_TB is the bench's
 // name in messages. vec_load reads +stim=FILE +exp=FILE +ncyc=N (stimulus and expected words, one

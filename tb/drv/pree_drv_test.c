@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_drv_test.c: pree_drv on the Verilated pree_axi (4 PREUs, paper datapath: the model of
  * build/pree-cosim-axi-p4) against the C model, bit for bit. A generated case (hit points in a
  * small box, photons among them, each with a random set of distinct candidates; several hit

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // fp32_bench.cpp: Verilator bench for one binary32 unit, checked bit for bit against
 // model/pree/fp32_ops.h, or for the stable datapath's pree_wacc and pree_u64_to_f32 against
 // model/pree/wide_acc.h (through fp32_gen.c).

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_gen.c: directed and random test cases for the binary32 RTL units (see fp32_gen.h).
  *
  * Directed families: every pair of special classes; exact ties built from odd integers

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_gen.h: test cases for the binary32 RTL units (directed lists and random operands).
  *
  * Shared by the Verilator benches (fp32_bench.cpp) and the Icarus vector writer

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_gen_cases.h: what fp32_gen.c (the binary32 units' cases) and fp32_gen_wide.c (the stable
  * datapath's units' cases) share inside the test-case generator of fp32_gen.h: the case list
  * being built, the random draws and the binary32 operand helpers. Not for the benches. */

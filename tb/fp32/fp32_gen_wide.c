@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_gen_wide.c: the directed and random test cases of the stable datapath's two units (see
  * fp32_gen.h): pree_wacc (a wide accumulator word plus a binary32 term) and pree_u64_to_f32 (an
  * unsigned 64-bit integer). The binary32 units' cases and the shared helpers are in fp32_gen.c.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fp32_vecgen.c: write a vector file for the Icarus testbenches of the binary32 units.
  *
  * Usage: fp32_vecgen <add|mul|sqr|div|cmp|wacc|u2f> <random_count> <seed> <out_file>

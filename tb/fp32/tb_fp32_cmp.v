@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tb_fp32_cmp: self-checking Icarus/Verilog-2005 testbench for the combinational comparator.
 //
 // Run: vvp -N <sim> +vec=<file>; the vector file comes from fp32_vecgen cmp ("a b 0 flags" in hex

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tb_fp32_pipe: self-checking Icarus/Verilog-2005 testbench for one pipelined binary32 unit, or
 // one of the stable datapath's pree_wacc and pree_u64_to_f32 (64-bit a; 64-bit y for wacc).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // MULT18X18D: a simulation model of the part of the ECP5 MULT18X18D primitive that
 // rtl/pree_fp32_dsp_mul.v uses under PREE_ECP5_DSP (Yosys's own model rejects registered modes;
 // the file is named for the module, so that -y tb/fpga finds it):

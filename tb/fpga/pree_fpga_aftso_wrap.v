@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fpga_aftso_wrap: the dispatcher AFTSO-HpUOC between registers, with pree_top's widths, for
 // place and route (scripts/fpga_timing.sh aftso; docs/fpga.md). The photon's data, address and
 // count come from one register that a serial pin shifts (scan_i); in_valid and stall from their

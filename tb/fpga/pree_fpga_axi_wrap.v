@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fpga_axi_wrap: the whole pree_axi between registers on a few pins, for place and route on a
 // package whose pins cannot carry its buses (pree.core's pnr target; docs/integration.md). Every
 // multi-bit input of pree_axi (AXI4-Lite addresses, data and strobes, the streams' tdata and

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fpga_fold: W register bits folded into one output pin through a pipelined XOR tree, one
 // LUT4 level per register stage, for the place-and-route wrappers (tb/fpga/pree_fpga_*_wrap.v):
 // no bit can be removed by synthesis, and every path of the tree is one LUT deep.

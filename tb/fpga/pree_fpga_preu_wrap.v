@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fpga_preu_wrap: one PREU between registers, for place and route on a part with fewer pins
 // than the PREU has port bits (scripts/fpga_timing.sh preu / preu_fast; docs/fpga.md).
 //

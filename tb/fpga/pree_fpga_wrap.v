@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // pree_fpga_wrap: one arithmetic unit between input and output registers, for place and route
 // (scripts/fpga_timing.sh, make fpga-timing; docs/fpga.md).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fail_trace.h: a failing bench or co-simulation leaves an FST trace of the cycles around its
  * first mismatch and names it in its message. Runs are deterministic, so the program runs itself
  * again (/proc/self/exe, the same arguments) with extra arguments that open a trace and limit it

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // vharness.h: the one Verilator harness of every bench (tb/) and of the co-simulation host
 // (host/cosim_rtl.cpp), in the shape of ZipCPU's testb.h. It owns the context, the model, the
 // optional FST trace and the cycle counter. tick() is one clock cycle evaluated once per edge

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // preu_bench.cpp: Verilator bench for rtl/pree_preu.v in both modes, scoreboarded bit for bit
 // against model/pree/preu_fp32.c or model/pree/preu_stable.c (expected values computed by
 // tb/preu/preu_vec.c). Built once per datapath: -DPREU_DATAPATH=0 (paper) or 1 (stable), with

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_vec.c: PREU bench operation sequences (see preu_vec.h) and their expected results. */
 #include "preu_vec.h"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_vec.h: operation sequences for the PREU benches, with expected results from the C model,
  * for either datapath (0 paper: model/pree/preu_fp32.c; 1 stable: model/pree/preu_stable.c).
  *

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_vecgen.c: writes the Icarus bench's vector file for tb/preu/tb_preu.v.
  * Usage: preu_vecgen COUNT SEED DATAPATH OUT.hex   (PREU_VEC_WORDS hex words per operation, see
  * preu_vec_words; DATAPATH 0 paper, 1 stable) */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // tb_preu: self-checking Icarus Verilog testbench for pree_preu over a vector file.
 //
 // The vector file (tb/preu/preu_vecgen.c, layout in tb/preu/preu_vec.c: preu_vec_words) holds

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* pree_axi_regs_table.h: pree_axi's register map as a table (every register, its fields,
  * their software access and reset values), for the check that the RTL decodes exactly this
  * map (tb/regs/regs_check.c); generated from rtl/regs/pree_axi.rdl by scripts/regs_gen.py (make regs); do not edit. */

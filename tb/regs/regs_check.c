@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* regs_check.c: the RTL decodes exactly the generated register map. Through AXI4-Lite on the
  * Verilated pree_axi (the model of build/pree-cosim-axi-p4, drv/pree_be_verilated.c), against
  * the table generated from rtl/regs/pree_axi.rdl (tb/regs/pree_axi_regs_table.h):

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # The AXI4 wrapper against the C model: `pree cosim --axi` (build/pree-cosim-axi-p4: host/cosim_axi.c
 # driving rtl/pree_axi.v) on cornell3 32x24 / 3000 photons, 4 PREUs:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The AXI4 wrapper's wide photon intake against the C model: `pree cosim --axi` through the quick
 # builds of pree_axi (build/axi/quick/pree-cosim-axi-<tag>, g++ -O0; mk/cosim_axi.mk) on cornell3
 # 32x24: 8 PREUs with 2 photons a beat (p8), 3000 photons, scheduled, and with random

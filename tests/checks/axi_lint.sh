@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
 # verilator --lint-only -Wall of pree_axi through it (NumPreu 4, 8, 16; both datapaths; the wrapper
 # bench's narrow counts; 2, 4 and 8 photons a beat; PipeFast 1 and unit stages; out-of-range

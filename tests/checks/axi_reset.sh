@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_axi at the end of a reset (tb/axi/axi_reset_tb.v, Icarus, the real pree_top with small
 # memories): an AXI4-Lite write and read, a photon and a hit point, all offered at the first edge

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The AXI4 wrapper's own logic through Yosys synth_xilinx (tb/axi/synth_axi.sh --own: pree_top a
 # black box, 4 PREUs, the co-simulation's memory parameters): no latch after proc, no
 # combinational loop before or after mapping, and a resource row with LUTs and flip-flops.

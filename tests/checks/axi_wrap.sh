@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The AXI4 wrapper through the wrap-around of its running counts (tb/axi/axi_wrap_tb.v, Icarus):
 # two pree_axi with the real pree_top, one with the wide intake (2 photon slots a beat, some left
 # empty; beats whose candidates exceed the 16-entry index table) and CountW 7, one with a photon

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The `make bench` scripts still run and say what they should (their figures are timings, which
 # no test judges): bench-convergence at its reduced size must give the table for both precisions
 # with the error falling as the photons double (deterministic: fixed renders against a fixed,

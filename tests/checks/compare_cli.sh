@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # `pree compare` end to end: metrics of generated 8-bit (PPM) and float (PFM) image pairs against
 # an independent pure-Python computation (SSIM by direct 11x11 windows with central moments),

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The configuration table (config/pree_config.json) and its copies: fails when a generated file
 # (rtl/pree_unit_stages.vh, model/pree/pree_config.h, mk/config.mk) differs from what
 # scripts/pree_config.py writes from the table (the diff is printed; `make config` rewrites

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Co-simulation of cornell3 at 64x48 / 20k photons through the Verilated pree_top with 4, 8 and
 # 16 PREUs (paper datapath) and 4 PREUs (stable datapath, alpha 0.7 and 0.5): the final
 # hit-point memory and the image must match the fp32 model word for word. The 8- and 16-PREU

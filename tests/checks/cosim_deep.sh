@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The deep configuration (PipeFast = 1: 48-stage update, 64-stage radiance pipelines, docs/fpga.md)
 # co-simulated: cornell3 64x48 / 20k photons through the Verilated pree_top with 4 PREUs, paper
 # datapath, scheduled. The hit-point memory and the image must match the fp32 model word for word

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # The host's re-filter with radii read back from the PREE (host/cosim_refilter.c): cornell3 64x48 /
 # 128k photons (4 blocks of 32k, so the engine's schedule re-filters after blocks 1 and 2) through

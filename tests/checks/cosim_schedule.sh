@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # The co-simulation host's photon scheduler (host/cosim_sched.c): cornell3 64x48 / 20k
 # photons through the Verilated pree_top with 4 PREUs, scheduled (the default), in photon order

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Controllers lint clean: verilator --lint-only -Wall, no waivers, for NumPreu 4/8/16 (and both
 # EarlyReady settings of the dispatcher).
 # level: quick

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Controllers in simulation: the Verilator benches compare pree_aftso_hpuoc and pree_adiso_rec
 # cycle by cycle with their C models (plus an operation scoreboard and exactly-once address
 # coverage for N = 0..2000), the Icarus benches replay the C models' vectors; NumPreu 4/8/16,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Controllers synthesize (Yosys synth_xilinx) with no latch and no combinational loop, NumPreu 4;
 # `make ctrl-synth` does 4/8/16.
 set -u

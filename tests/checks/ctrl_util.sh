@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # AFTSO-HpUOC utilization on geometric N^P (mean 32, 300 k photons back to back) stays at its
 # measured level (docs/controllers.md), and the RTL takes exactly as many cycles as the model
 # on the same 20 k photons for NumPreu 4/8/16.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # README.md and docs/ speak of the product as it is now: the grep below (session, an issue number,
 # "this machine", a local clone path) finds nothing but the product's own uses in ALLOW. Every

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_drv's board back end (drv/pree_be_uio.c) builds and links into build/drv/pree_probe, the
 # bring-up program. It cannot run without a board (no UIO device, AXI DMA or u-dma-buf), so only

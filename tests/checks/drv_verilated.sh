@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_drv on the Verilated pree_axi against the C model (build/drv/pree_drv_test,
 # tb/drv/pree_drv_test.c): load hit points, stream 700 photons and their candidates, close the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Bad input: each case gives a one-line error naming the problem, a non-zero exit, and no
 # output file (image or statistics) left behind.
 # level: quick

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Checkpoints, resume and the time limit (pree render --checkpoint/--resume/--time-limit).
 # A render interrupted (SIGINT at its 4th photon block, PREE_TEST_INTERRUPT) or killed (SIGKILL,
 # PREE_TEST_KILL: only the periodic checkpoint survives) and then resumed gives the bits of an

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Interrupts and a closed stderr. SIGINT during the photon pass stops the render within the
 # block in progress (abandoned), writes the image and statistics of the whole blocks done, which
 # equal an uninterrupted render of that photon count, and exits with status 130. An interrupt in

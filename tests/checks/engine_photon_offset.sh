@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # --photon-offset K traces photon k with sequence index K + k: the photon paths of [0, 2N) are
 # those of [0, N) and of [N, 2N) together (photon segments and hits add up exactly), offset 0
 # is the default, and the result with an offset still does not depend on the thread count.

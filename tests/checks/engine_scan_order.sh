@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The bucket-major update (--scan bucket, the default: model/ppm/update_batch.c) against the
 # photon-major oracle (--scan photon): the same image bits, final hit-point state and counts,
 # for every grid, both precisions, 1 and 2 threads, with and without the AVX2 screening

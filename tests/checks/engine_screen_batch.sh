@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Screening batches (model/ppm/render_step.c): the update of several photon blocks at once,
 # screened against the radii at the batch's start and applied in photon order, gives the bits and
 # counters of block-by-block updates (PREE_SCREEN_BLOCKS=1), in double (batches of 2 and 4, 1 and 2

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Every vector level of the update's screening and the sphere tests that this processor has,
 # forced with --simd (scalar, avx2, avx512; auto), gives the same image, state and update counts
 # in double and fp32, on cornell3 (spheres) and cornell-water (a mesh with glass); the stats name

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Each skip of the default grid changes nothing: the image bits with skips equal those of
 # the same grid without skips and of the brute-force grid (every hit point a candidate for
 # every photon), in double and fp32. The skips must also really skip something.

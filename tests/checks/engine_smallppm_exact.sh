@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The paper's software baseline reproduced byte for byte: pree's smallppm-compatible path
 # against the original program's own output (tests/data/smallppm/ORIGIN.md), with its counts.
 # level: quick

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The engine stands alone: nothing in model/ names the co-simulation or includes a header of
 # host/ or tb/, and building build/pree from nothing (make's dry run into an empty build folder)
 # compiles only cli/ and model/ sources, with no include path into host/ or tb/, and runs no

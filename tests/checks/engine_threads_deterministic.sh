@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Determinism: 1, 2 and 3 threads give the same image bits and the same final hit-point
 # state, in both precisions and with every grid.
 # level: quick

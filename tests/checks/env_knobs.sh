@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Every environment variable the engine, the co-simulation host and the driver read is named in
 # one table (model/util/pree_env.h, pree_env.c) and documented (docs/engine.md, "Environment
 # variables"): fails on a getenv() in model/, host/ or drv/ outside model/util/pree_env.c, on a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # EXR metadata round trip through OpenImageIO's own reader (iinfo, Debian openimageio-tools): a
 # render's EXR header carries pree:scene, size, photons, photon offset, precision, datapath, grid,

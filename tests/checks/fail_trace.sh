@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A failing bench or co-simulation leaves an FST trace of the cycles around its first mismatch
 # and names it in its message (tb/lib/fail_trace.h). Failures are injected on purpose: the PREU
 # bench with +inject_error=N (one bit of op N's expected result flipped), pree cosim with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The formal suite can fail: each line of formal/mutants.txt breaks one rule in a scratch copy of
 # rtl/ (a dropped handshake, a lost response, a lost operation, the counters' wrap-around), and
 # the named job's task must then FAIL (scripts/formal-run.sh). The same tasks pass on the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The quick level of the formal suite (docs/formal.md): every job whose .sby says
 # "# level: quick", prove and cover, through scripts/formal-run.sh and the pinned tools of
 # make fpga-deps. Each task must PASS; a failure prints the counterexample's .vcd.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The fp32 benches can fail: each mutant below breaks one rule of the binary32 units (tie
 # rounding, signed zero, NaN priority, latency, -0 == +0) or of the stable datapath's wide
 # accumulator (truncation, saturation, exponent field, -0 dropped) and count conversion (sticky

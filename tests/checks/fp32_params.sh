@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Each pipelined binary32 unit refuses its own out-of-range parameters at elaboration, however it
 # is instantiated: a Stages value beyond either end of its range, InRegs 2 or PipeFast 2 stops
 # verilator --lint-only with a missing module named after the problem, at the unit as the top and

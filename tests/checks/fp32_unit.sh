@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The fp32 bench configurations of the configuration table (config/pree_config.json,
 # "fp32_benches"), one check each, named fp32_<sim>_<configuration>: sim vl, the Verilator bench
 # (the directed list plus FP32_QUICK, 1 million, random operations with random valid gaps), or

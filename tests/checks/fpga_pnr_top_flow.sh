@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The ULX3S flow of `make fpga-pnr-top` is consistent (docs/fpga.md, "The whole design"), without
 # its hours of place and route: constraints/pree_ulx3s.lpf places every port bit of
 # rtl/board/pree_ulx3s.v and nothing else, each on its own pin, with IOBUF settings only for those

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The FuseSoC core pree.core: `fusesoc run --target=lint` (Verilator --lint-only -Wall of
 # pree_axi, the repository as the cores root, no network) passes; rtl/pree.f is what `make pree-f`
 # generates from the core (the same files in FuseSoC's order); the core's parameters are exactly

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The short fuzz run of make test: each libFuzzer harness (tests/fuzz, make fuzz for long runs)
 # for FUZZ_SHORT seconds (default 30) on a copy of its seed corpus. Fails on any crash, hang
 # (10 s a unit), leak or sanitizer report, naming the input that gave it.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # docs/integration.md against the product: its instantiation example (the ```verilog block) is
 # lint-clean with pree_axi (verilator --lint-only -Wall through rtl/pree.f); every timing diagram
 # it shows exists, and each docs/wave/*.json renders (wavedrom, the hardware tools' venv:

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # The regression runner's CI output: scripts/run-tests.sh run over a folder of its own (a real
 # cmocka binary, a unit binary that crashes, a passing, a failing and a hanging check, the last

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The photon-map searches (docs/photon_map.md): the clustered search, the single-pass kd-tree
 # search and the nanoflann oracle give the same radiance bits (--knn-bench 1 runs the three on the
 # same trees in one process; their state hashes must agree) for k from 1 to 2000, sparse and dense

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # pree render --light-sampling (model/ppm/photon_pass.c, docs/scene_format.md "Photon emission").
 # With one light, power is uniform bit for bit. With two point lights (scenes/examples/caustics.scene
 # and a dim second light), uniform sharing (photon i from light i mod 2) correlates the light with

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # scripts/make-run.sh end to end at a small size without the co-simulation: the double render is
 # written first (and its time recorded), then the fp32 renders, their comparison JSON (with FLIP
 # and the map scales) and the four difference maps, and the closing summary names the images,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Area-light photometry against a closed form: a 5e-5 area triangle of radiance 2e4 (on-axis
 # intensity L*A = 1, flux 2e4*pi*5e-5) 1 unit above a large diffuse floor (rho 0.5), seen from
 # straight above (floor region about 0.4 x 0.4), and the same with a point light of intensity 1.

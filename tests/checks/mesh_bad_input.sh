@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Bad mesh input through the command line: each case must exit non-zero with exactly one line
 # on stderr that names the file (and line where there is one), and write no image; degenerate
 # triangles among good ones and a camera inside a closed mesh are documented non-errors (a

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Mutated OBJ and MTL files (seeded, 60 cases from CornellBox-Original: replaced, deleted and
 # inserted bytes, NaN, huge numbers, bad indices, NUL bytes, unknown materials) never crash the
 # loader: pree exits 0 (with an image) or 1 with exactly one error line on stderr, never by a

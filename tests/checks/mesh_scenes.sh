@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Each mesh scene renders from one command at 64x48 with 20k photons; its linear image has no
 # NaN or infinity, no negative value, and a mean radiance (over pixels and channels) within
 # +-15% of a reference measured at 400k photons (docs/scenes.md, "Checks"). At 20k photons

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Multi-PREE co-simulation (host/cosim_main.c and cosim_dist.c, docs/scale_out.md "Multi-PREE co-simulation"):
 # `mpirun -np 2 pree cosim` of cornell3 at 64x48 / 20k photons through the shared 4-PREU model
 # (build/pree-cosim-p4). Each rank's PREE holds its partition of the hit points (render_dist_lo,

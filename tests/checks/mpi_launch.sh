@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The pree program under Open MPI's mpirun (cli/cli_mpi.c, docs/scale_out.md): built with MPI
 # when mpicc is present; one rank renders the same bits as a run without mpirun, in both
 # precisions; a command other than render (and cosim) under two ranks stops with one message from rank 0

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Distributed render (model/ppm/render_round.c, docs/scale_out.md): `mpirun -np 2` renders of
 # cornell3 (1 thread a rank) and a mesh scene (cornell3-teapot, 2 threads a rank), in double, fp32
 # (paper) and fp32 (stable), hold the image and state hashes and the accepted count of one process;

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # pbrt-v4 scene files (model/scene/scene_pbrt.c, docs/pbrt.md). scenes/pbrt/cornell3.pbrt renders
 # the image of its native twin (scenes/cornell3 as a pbrt file can state it: a look-at camera with
 # no near offset, no front wall, clear glass): the same fp32 image hash, and in double the same

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The photon-map estimator (--estimator pm, docs/photon_map.md): the clustered search gives the
 # same image and per-hit-point radiance bits as the naive oracle (nanoflann) on cornell3 and a
 # mesh scene (cornell-teapot), at two k; the bits do not depend on the thread count, the tracing

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # preu_quick.sh: PREU lint (verilator -Wall, four configurations a datapath), Yosys structural checks (no
 # latch, no combinational loop) and a short Verilator run against the C model (20,000 operations),
 # both datapaths (paper, stable), and one hit point fed 100,000 accepted photons through each

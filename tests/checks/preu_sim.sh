@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # preu_sim.sh: the PREU RTL (rtl/pree_preu.v) against the C model, both modes and both datapaths
 # (paper: model/pree/preu_fp32.c; stable: model/pree/preu_stable.c), in both pipeline
 # configurations. PipeFast 0 (the paper's units): the Verilator bench (200,000 operations each,

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_axi's register map has one source, rtl/regs/pree_axi.rdl:
 #   - the generated files are current: scripts/regs_gen.sh (PeakRDL, in the hardware tools' venv)

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # What `pree render` tells a user: the last line names every file written (and --quiet prints
 # nothing on success); an output that cannot be created (/proc) is refused before any work with
 # one line and nothing written; --datapath stable alone renders fp32 (the bits of --precision

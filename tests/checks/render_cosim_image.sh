@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The fp32 render's image is the RTL's, bit for bit: `pree render --precision fp32` and `pree
 # cosim` (the Verilated pree_top) with the same scene, size, photons and PREE options write EXR
 # files whose pixel words are the same (iinfo --hash: a SHA-1 of the binary32 pixel data, not of

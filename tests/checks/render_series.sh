@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A convergence series in one render (pree render --write-every/--write-at): at each count the
 # image and statistics are written as NAME-COUNT.EXT with the bits of a separate render of that
 # count (hashes and PNG bytes), in double and fp32, and the render's own outputs are those of its

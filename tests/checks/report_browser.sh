@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # make report in a real browser: the page (scripts/report/build.py) for a small make-run.sh output
 # and for the repository's own out/ (what `make report` shows) is opened in headless Chromium
 # (Debian chromium): its script must mark every image loaded (body data-images="ok", as many as

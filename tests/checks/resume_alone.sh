@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # A checkpoint carries its render's options (cli/cli_resume.c): `pree render --resume FILE` with
 # no other option, from another folder, continues an interrupted render to the photon count and
 # outputs it was started with, and gives the bits of the uninterrupted render (fp32 stable, a mesh

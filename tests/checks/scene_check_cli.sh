@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # `pree check SCENE`: parses, loads meshes and validates without rendering; the report's counts
 # and memory estimate for known scenes; the same one-line errors as render; no file written.
 # level: quick

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The example scenes (scenes/examples/, docs/scene_format.md "Example scenes") render: each at
 # 64x48 with 20,000 photons to the image and state hashes recorded when they were written, with
 # photons reaching its diffuse surfaces; and scripts/make-run.sh (make run SCENE=...) runs the

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Scale invariance with the scene's ray epsilon: copies of cornell3 scaled by 2^10 and 2^-6
 # (scripts/scale-scene.py, `epsilon` scaled with the lengths) render the same image bits as the
 # original, in double and in fp32 (both datapaths); without the scaled epsilon a 2^-10 copy

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The committed teapot mesh is what scripts/teapot-tessellate.py makes from Newell's patch data
 # (same OBJ text), with the expected counts (32 patches x 81 vertices; 4,032 triangles).
 # level: quick

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # The stress suite's quick level (issue 10; docs/numerics.md): one hit point through both fp32
 # datapaths. Fails unless the references agree with each other (--selftest); the stable

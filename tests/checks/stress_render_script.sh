@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The stress suite's render script (scripts/stress-render.sh, make stress-render) still runs at its
 # reduced size (16x12, 1e5 photons; scales 1e-4, 1, 1e6, 2^10) and says what it should: every drift and
 # scale row, the stable datapath's drift from double below 1e-6 and below the paper datapath's on

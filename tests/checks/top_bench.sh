@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_top against the C model (build/cosim/top_bench): random traces, all photons on one hit
 # point, pixels with 40 hit points, idle gaps on the input, unordered candidates (bank

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # pree_top under Icarus (tb/cosim/top_tb.v over tb/cosim/top_vecgen.c vectors): the host protocol
 # with random, one-hit-point, dense-pixel, mixed and misplaced-index runs for 4, 8 and 16 PREUs,

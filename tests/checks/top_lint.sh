@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # verilator --lint-only -Wall on pree_top and everything below it, NumPreu 4, 8 and 16, both datapaths:
 # the paper's configuration (PipeFast 0, PhotonsPerCycle 1) and the deep, wide one (PipeFast 1,
 # PhotonsPerCycle NumPreu / 4, as the co-simulation builds).

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # level: quick
 # Yosys structural check of pree_top (NumPreu 4, small memories), both PREU datapaths: no latch,
 # no combinational loop, no multiple drivers. The full synth_xilinx run is `make synth-top`.

@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The tracer's mixed case (analytic spheres, intersected in double in Embree user geometry, with
 # triangles in one scene: scenes/cornell3-teapot): image and state hashes equal to those recorded
 # with the per-sphere scalar tracer of commit 1b71716 (before the AVX2 sphere group and the

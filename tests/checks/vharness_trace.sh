@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # The Verilator harness (tb/lib/vharness.h) evaluates a traced run exactly as an untraced one:
 # the PREU bench (paper datapath, 3,000 operations) and the top bench (4 PREUs, mixed scenario,
 # through host/cosim_rtl.cpp) print the same results, cycle and stall counts with and without an

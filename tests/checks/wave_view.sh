@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # Waveforms that open where the action is: a traced co-simulation (cornell3 32x24, 2,000 photons,
 # 4 PREUs) has an 8 ns clock in picoseconds (the paper's 125 MHz), and scripts/wave-view.py's
 # cycle counts, read from the trace alone, equal the co-simulation's own counters (photons

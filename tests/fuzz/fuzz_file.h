@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fuzz_file.h: the harnesses' helpers: a per-process file name in the current directory,
  * removed at exit, and writing a fuzz input to it (the loaders read files by name). */
 #ifndef PREE_FUZZ_FILE_H

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fuzz_mesh.c: libFuzzer harness for the mesh loader (model/scene/mesh_load.c, mesh_objcheck.c,
  * Assimp behind them): each input is written as an OBJ file that a fixed scene loads with
  * `mesh FILE material m` (both files in the current directory). The seed corpus is tests/fuzz/corpus/mesh. */

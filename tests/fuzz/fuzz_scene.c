@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* fuzz_scene.c: libFuzzer harness for the scene parser (model/scene/scene_parse.c): each input
  * is written to a scene file and loaded with scene_load; any crash, hang, leak or sanitizer
  * report is a finding. The seed corpus is tests/fuzz/corpus/scene (make fuzz, docs/engine.md).

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # check.sh: shared helpers for the regression scripts in tests/checks (sourced, not run).
 # Every failure prints what failed and the command that reproduces it, then exits 1.
 set -u

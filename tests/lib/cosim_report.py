@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 """cosim_report.py: the checks that the co-simulation checks share on a `pree cosim --stats` report.
 
 Each check appends what is wrong to a list; finish() prints those lines and exits 1 when there

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """junit_validate.py FILE.xml: check a JUnit XML report against the structure of the JUnit
 schema that CI servers read (Jenkins' junit-4.xsd, which GitLab and GitHub reporters accept):
 a <testsuites> root of <testsuite> elements, each with name, tests, failures, errors, time,

@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """png_stats.py FILE.png: decode an 8-bit non-interlaced PNG (as Chromium writes screenshots) with
 zlib alone and print "width height distinct_colours non_background_fraction" (the background:
 the most common colour). tests/checks/report_browser.sh uses it to tell a page from a blank one."""

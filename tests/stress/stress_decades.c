@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stress_decades.c: the stress program's decade run (tests/stress/stress_hitpoint.c): one hit
  * point fed K accepted photons through both datapaths and the references, a table row at every
  * decade and --at, CSV rows at every checkpoint, the change tracking and the error extremes. */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stress_hitpoint.c: one hit point fed N accepted photons through both fp32 datapaths of the
  * PREU model (the paper's, model/pree/preu_fp32.h, and the stable one, model/pree/preu_stable.h), against
  * smallppm's double update with an integer count, the same recurrence in long double, and the

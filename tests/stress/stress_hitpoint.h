@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stress_hitpoint.h: what the parts of the single-hit-point stress program share
  * (tests/stress/stress_hitpoint.c: its use and options): the options, the double and long-double
  * references and the closed form (stress_refs.c), and each run (stress_decades.c, the decade

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stress_refs.c: the stress program's references (tests/stress/stress_hitpoint.h): the relative
  * error, the closed form of the radius product, the flux sequence's splitmix64. */
 #include <math.h>

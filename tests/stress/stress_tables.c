@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* stress_tables.c: the stress program's tables (tests/stress/stress_hitpoint.c): non-finite and
  * out-of-range inputs, N_emitted through 2^24 and 2^32, the references against each other, and
  * what the stable datapath's r2 error is made of. */

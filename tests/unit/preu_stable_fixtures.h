@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* preu_stable_fixtures.h: the stable-datapath unit tests' fixtures (test_preu_stable.c,
  * test_preu_stable_special.c): binary32 words of floats and back, a fresh hit point, a photon. */
 #ifndef PREU_STABLE_FIXTURES_H

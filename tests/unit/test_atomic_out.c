@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_atomic_out.c: outputs through a temporary beside the target (model/util/atomic_out.c):
  * committed over a regular file or nothing, refused over a device, a directory or a link;
  * discarded and listed temporaries removed (atomic_out_cleanup, as at exit). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_compare.c: known answers for SSIM, SNR, PSNR, RMSE and max difference, an independent
  * direct-window SSIM, thread-count independence, the heat map, and refused comparisons. */
 #include <setjmp.h>

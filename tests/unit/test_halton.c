@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_halton.c: the reverse-permuted Halton sequence: hand-computed values, the first
  * dimension's stratification, range over every dimension, and the same bits as the digit loop
  * written with division. */

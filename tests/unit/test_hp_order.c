@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_hp_order.c: hp_order_apply moves every array of a hit-point set to new[k] = old[perm[k]]
  * (fixed points, 2-cycles and long cycles alike), hp_order_restore brings back the original
  * bits, and sets of 0 and 1 hit points and absent arrays are handled; hp_order_spatial returns

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_image.c: image buffers, smallppm's tone map, the exact PPM bytes, PNG/EXR round trips,
  * and atomic writes that leave nothing behind when they fail. */
 #include <setjmp.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_mesh_load.c: the "mesh" directive: OBJ/MTL loading (plain and gzip), transforms,
  * normals modes, overrides and exclusion, emissive triangles as area lights, the
  * "light triangle" directive, and one-line errors (file:line) that leave no scene behind. */

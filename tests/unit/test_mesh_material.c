@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_mesh_material.c: the MTL -> engine material rule (mesh_material.h) on the McGuire,
  * Sibenik and gold-rings cases, and area-light photon sampling (points on the triangles in
  * proportion to area, cosine-weighted directions about the front normal). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_photon_map.c: the photon-map estimator's pieces against brute force on random point
  * sets: the kd-tree's runs (with duplicated points and points on split planes), the
  * clustered k-NN and nanoflann's naive k-NN against a sort of every photon (ties broken by

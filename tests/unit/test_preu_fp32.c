@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_preu_fp32.c: the PREU binary32 model (model/pree/preu_fp32.c) against hand-worked cases,
  * its own full-datapath trace, and an independent plain-float version for random inputs.
  * Expected bit patterns in the hand-worked cases were derived with exact rational arithmetic

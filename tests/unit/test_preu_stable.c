@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_preu_stable.c: the stable PREU datapath model (model/pree/preu_stable.c, model/pree/wide_acc.h):
  * its basic arithmetic by hand-worked and exactly representable cases, the trace against the
  * update on random inputs (every field, special values included), the screening radius as a

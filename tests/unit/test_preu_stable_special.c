@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_preu_stable_special.c: the stable PREU datapath model's defined behaviour on non-finite
  * and out-of-range inputs (docs/numerics.md, "Non-finite and out-of-range inputs";
  * tests/stress/stress_hitpoint --nonfinite prints the same cases). */

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_scene_parse.c: the scene format: the reference scene's exact constants, and errors
  * that name the file and line. */
 #include <setjmp.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_stats_json.c: the statistics file written through jansson and read back with it: every
  * key and value survives, strings that need escaping (quotes, backslashes, control bytes, an
  * escape sequence, UTF-8) come back byte for byte, doubles round-trip exactly, and a write that

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_text_escape.c: terminal escaping of file text (model/util/text_escape.c): printable
  * ASCII and visible UTF-8 pass; control bytes, C1, byte-order marks, bidirectional controls
  * and bytes that are not UTF-8 become \xNN; the output always fits and is terminated. */

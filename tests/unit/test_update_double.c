@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_update_double.c: the double-mode progressive update (Eq. 1-2, M = 1, alpha = 0.7)
  * against hand-worked steps, and the reference program's initial radius. */
 #include <setjmp.h>

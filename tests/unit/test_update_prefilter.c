@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_update_prefilter.c: the screening's binary32 prefilter (model/ppm/update_prefilter.c) at
  * every vector level the processor has: it keeps every candidate whose double distance test
  * against the safe radius passes, also within a few ulps of the radius, at coordinates up to

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 /* test_wide_acc.c: the stable datapath's wide accumulator model (model/pree/wide_acc.h) against
  * independent references: wide_add against the exact sum in 128-bit integer arithmetic,
  * truncated to the 56-bit significand of its own binade; u64_to_f32 against the C conversion

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # pairs.py DIR: the FLIP test pairs (8-bit P3 PPM, 64x48): noise (small random differences),
 # edges (a checkerboard shifted by one pixel in its lower two thirds), colour (a hue change).
 # Deterministic; tests/checks/compare_flip.sh and scripts/flip-reference.sh use them.
