@@ -213,6 +213,8 @@ static int int_param(ctx_t *c, const pbrt_tok_t *at, pbrt_params_t *ps, const ch
     int bad = 0;
     const double *v = nums(c, at, ps, name, "integer", 1, NULL, NULL, &bad);
     if (bad) return -1;
+    if (v && (!(fabs(v[0]) <= 9007199254740992.0) || v[0] != floor(v[0])))   /* within 2^53, whole */
+        return pbrt_fail(&c->lx, at, "%s: \"integer %s\" %g is not an integer", at->text, name, v[0]);
     *out = v ? (long long)v[0] : def;
     return 0;
 }
@@ -534,7 +536,7 @@ static int do_integrator(ctx_t *c, const pbrt_tok_t *at, const char *type, pbrt_
         return -1;
     if (pbrt_param(ps, "seed")) note(c, 3, at, "the seed is not used: PREE's photons follow the Halton sequence");
     if (depth < 1 || depth > 19) return pbrt_fail(&c->lx, at, "Integrator: maxdepth %lld is not in 1..19", depth);
-    if (it < 1 || per == 0 || per < -1) return pbrt_fail(&c->lx, at, "Integrator: %lld iterations of %lld photons", it, per);
+    if (it < 1 || it > 4294967295LL || per == 0 || per < -1 || per > 4294967295LL) return pbrt_fail(&c->lx, at, "Integrator: %lld iterations of %lld photons", it, per);
     if (unused(c, at, ps)) return -1;
     c->maxdepth = (int)depth;
     c->iterations = it;
