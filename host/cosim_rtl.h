@@ -34,6 +34,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "pree_config.h"
+#include "cosim_config.h"
 #include "preu_state.h"
 
 #ifdef __cplusplus

@@ -13,8 +13,9 @@ Usage:
 The generated files (never edit them; `make config` rewrites them):
   rtl/pree_unit_stages.vh   the PREU's unit kinds and each unit's default Stages (preu_stages),
                             included by rtl/pree_preu_plan.vh and tb/fp32/tb_fp32_pipe.v
-  model/pree/pree_config.h  the same for C, the PREU's update window and radiance depth, and the
-                            co-simulation models' pree_top parameters
+  model/pree/pree_config.h  the same for C, the PREU's update window and radiance depth
+  host/cosim_config.h       the co-simulation models' pree_top parameters (the engine, model/,
+                            never names the co-simulation: tests/checks/engine_standalone.sh)
   mk/config.mk              the make variables: the fp32 bench configurations, every unit's Stages
                             range, the co-simulation models' parameters and the regression's models
 Python 3 standard library only.
@@ -91,7 +92,7 @@ def gen_h(t):
     preus = sorted(int(n) for n in top["preus"])
     out = ["// " + SPDX, "/* pree_config.h: " + NOTE,
            " * The fp32 units' Stages (a unit's latency is Stages + InRegs), the PREU's latencies that",
-           " * follow from them, and the pree_top parameters of the co-simulation models. */",
+           " * follow from them (the co-simulation models' parameters are in host/). */",
            "#ifndef PREE_CONFIG_H", "#define PREE_CONFIG_H", "",
            "/* Each unit's Stages range and its default Stages with PipeFast 0 and 1. */"]
     for n, u in pipelined(t):
@@ -109,8 +110,16 @@ def gen_h(t):
             % (w["stable"][1], w["paper"][1], w["stable"][0], w["paper"][0]),
             "#define PREE_RADIANCE_DEPTH(pipe_fast) ((pipe_fast) ? %d : %d)" % (p["radiance_depth"][1],
                                                                                 p["radiance_depth"][0]),
-            "",
-            "/* The co-simulation models' pree_top parameters (mk/config.mk passes the same). */"]
+            "", "#endif", ""]
+    return "\n".join(out)
+
+
+def gen_cosim_h(t):
+    top = t["top"]
+    preus = sorted(int(n) for n in top["preus"])
+    out = ["// " + SPDX, "/* cosim_config.h: " + NOTE,
+           " * The pree_top parameters of the co-simulation models (mk/config.mk passes the same). */",
+           "#ifndef COSIM_CONFIG_H", "#define COSIM_CONFIG_H", ""]
     for k, v in top["widths"].items():
         out.append("#define COSIM_%s %d" % (k.upper(), v))
     for n in preus:
@@ -169,7 +178,7 @@ def gen_mk(t):
     return "\n".join(out).replace(" \n", "\n")
 
 
-OUTPUTS = {"rtl/pree_unit_stages.vh": gen_vh, "model/pree/pree_config.h": gen_h, "mk/config.mk": gen_mk}
+OUTPUTS = {"rtl/pree_unit_stages.vh": gen_vh, "model/pree/pree_config.h": gen_h, "host/cosim_config.h": gen_cosim_h, "mk/config.mk": gen_mk}
 
 
 def generate(root, t):

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 /* pree_config.h: GENERATED from config/pree_config.json by scripts/pree_config.py (make config): do not edit.
  * The fp32 units' Stages (a unit's latency is Stages + InRegs), the PREU's latencies that
- * follow from them, and the pree_top parameters of the co-simulation models. */
+ * follow from them (the co-simulation models' parameters are in host/). */
 #ifndef PREE_CONFIG_H
 #define PREE_CONFIG_H
 
@@ -36,22 +36,5 @@
 #define PREE_UPDATE_WINDOW(datapath, pipe_fast) \
     ((pipe_fast) ? ((datapath) ? 53 : 49) : ((datapath) ? 13 : 11))
 #define PREE_RADIANCE_DEPTH(pipe_fast) ((pipe_fast) ? 64 : 12)
-
-/* The co-simulation models' pree_top parameters (mk/config.mk passes the same). */
-#define COSIM_HPAW 18
-#define COSIM_IDXAW 12
-#define COSIM_PXAW 17
-#define COSIM_CNTW 16
-#define COSIM_HPB_4 6
-#define COSIM_PXB_4 4
-#define COSIM_PPC_4 1
-#define COSIM_HPB_8 7
-#define COSIM_PXB_8 5
-#define COSIM_PPC_8 2
-#define COSIM_HPB_16 8
-#define COSIM_PXB_16 6
-#define COSIM_PPC_16 4
-#define COSIM_MAX_PREU 16
-#define COSIM_MAX_PPC 4 /* photon slots (PhotonsPerCycle) of the widest model */
 
 #endif

@@ -21,8 +21,8 @@
  * reports:
  *   PREE_TEST_INTERRUPT  PHASE: SIGINT as the render reaches PHASE (render_test_interrupt)
  *   PREE_TEST_KILL       PHASE: SIGKILL there (engine_checkpoint.sh)
- *   PREE_TEST_CORRUPT_HP N: pree cosim flips one bit of the model's hit point N before it compares
- *                        (fail_trace.sh, mpi_cosim.sh)
+ *   PREE_TEST_CORRUPT_HP N: the co-simulation program flips one bit of the model's hit point N
+ *                        before it compares (fail_trace.sh and the MPI co-simulation check)
  * docs/engine.md, "Environment variables", lists the same; tests/checks/env_knobs.sh fails when
  * a getenv outside this table appears in model/, host/ or drv/, or the docs miss a name. */
 #ifndef PREE_ENV_H
