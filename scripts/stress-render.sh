@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # stress-render.sh: the whole-render part of the stress suite (make stress-render; issue 10,
-# docs/numerics.md).
+# docs/numerics_renders.md).
 #  1. Drift: scenes/cornell3 and the caustic scene scenes/cornell-sphere at 16x12 with 1e6, 1e7
 #     and 1e8 photons, rendered in double, fp32 with the paper's datapath and fp32 with the stable
 #     one; each fp32 image against the double image of the same photons (the photon paths are

@@ -3,7 +3,7 @@
 # Scale invariance with the scene's ray epsilon: copies of cornell3 scaled by 2^10 and 2^-6
 # (scripts/scale-scene.py, `epsilon` scaled with the lengths) render the same image bits as the
 # original, in double and in fp32 (both datapaths); without the scaled epsilon a 2^-10 copy
-# differs (the default epsilon is an absolute 1e-4, docs/numerics.md "Scale invariance").
+# differs (the default epsilon is an absolute 1e-4, docs/numerics_renders.md "Scale invariance").
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 size=(--width 48 --height 36 --photons 20000 --quiet)

@@ -4,7 +4,7 @@
 # reduced size (16x12, 1e5 photons; scales 1e-4, 1, 1e6, 2^10) and says what it should: every drift and
 # scale row, the stable datapath's drift from double below 1e-6 and below the paper datapath's on
 # both scenes, and each scale-1 copy identical to itself. (The scale rows' figures are the host's
-# limits, reported in docs/numerics.md, not judged here.)
+# limits, reported in docs/numerics_renders.md, not judged here.)
 # Usage: tests/checks/stress_render_script.sh   (PREE=path/to/pree to test another build)
 # cost: 36 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
