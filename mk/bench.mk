@@ -11,7 +11,7 @@ bench-scenes: build
 bench-engine: build
 	@scripts/bench-engine.sh $(BUILD)/pree $(BENCH_DIR)
 # The three frame sizes of issue 15 (320x240/768k, 1600x1200/19.2M, 3840x2160/82.9M), re-filter on
-# and off: wall, peak memory, grid entries, candidates (docs/engine.md, "The engine at scale").
+# and off: wall, peak memory, grid entries, candidates (docs/engine_performance.md, "The engine at scale").
 bench-scale: build
 	@scripts/bench-scale.sh $(BUILD)/pree $(BENCH_DIR)
 # Instruction counts per phase under callgrind: repeatable where seconds wander (about a minute).
