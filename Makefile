@@ -36,12 +36,15 @@ LDFLAGS  := -fopenmp $(SANFLAGS)
 
 # Quiet builds: one short line a step (CC model/ppm/grid.o, LINK build/pree, VERILATE
 # build/cosim/vl2_p4_h6_x4_w1); V=1 prints the full commands instead. A recipe line starts with
-# $(call say,TAG,WHAT) and then its command.
+# $(call say,TAG,WHAT) and then its command; inside a shell loop, $(call say_sh,TAG,WHAT,COMMAND)
+# is the shell command that prints the same line (WHAT and COMMAND may name shell variables).
 V ?= 0
 ifeq ($(V),1)
 say =
+say_sh = echo "$(3)"
 else
 say = @printf '  %-9s %s\n' '$(1)' '$(patsubst $(BUILD)/%,%,$(2))';
+say_sh = printf '  %-9s %s\n' '$(1)' "$(2)"
 endif
 
 .PHONY: all deps build run test test-prereqs check bench clean help lint synth sim report

@@ -51,27 +51,27 @@ sim-axi-full: $(BUILD)/pree $(foreach t,$(AXI_FULL_TAGS),$(BUILD)/pree-cosim-axi
 define AXI_VL_RULE
 $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
+	$$(call say,VERILATE,$$(@D))verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_axi --prefix Vpree_axi_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
 	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "$(if $(3),OPT_FAST=-O0 OPT_SLOW=-O0,OPT_FAST=-O2 OPT_SLOW=-O1)" \
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2),$(3)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
+	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2),$(3)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
 	  -DAXI_MODEL_H='"Vpree_axi_$(call cosim_tag,$(1),$(2)).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(findstring s,$(2)),1,0) \
 	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -DAXI_PPC=$(COSIM_PPC_$(1)) -c $$< -o $$@
 $(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
                           $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
                           $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	@mkdir -p $$(@D)
-	$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
+	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
 $(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),))))
 $(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),q))))
 
 $(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(COSIM_CFLAGS) -DCOSIM_DRV_AXI=1 -c $< -o $@
+	$(call say,CC,$@)$(CC) $(COSIM_CFLAGS) -DCOSIM_DRV_AXI=1 -c $< -o $@
 
 lint-axi: | $(DEPS_STAMP)
 	@bash tests/checks/axi_lint.sh

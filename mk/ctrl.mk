@@ -54,32 +54,32 @@ ctrl-build: $(CTRL_ALL) $(CTRL_AFTSO_BENCHES_ALL)
 # Host C: the models and the tools around them.
 $(CTRL_DIR)/%.o: tb/ctrl/%.c $(CTRL_HDR)
 	@mkdir -p $(@D)
-	$(CC) $(CTRL_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(CTRL_CFLAGS) -c $< -o $@
 
 $(CTRL_DIR)/aftso_rule.o: model/pree/aftso_rule.c model/pree/aftso_rule.h
 	@mkdir -p $(@D)
-	$(CC) $(CTRL_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(CTRL_CFLAGS) -c $< -o $@
 CTRL_AFTSO_OBJ := $(CTRL_DIR)/aftso_model.o $(CTRL_DIR)/aftso_rule.o
 $(CTRL_DIR)/aftso_util: $(CTRL_DIR)/aftso_util.o $(CTRL_AFTSO_OBJ)
-	$(CC) $^ -o $@ -lm
+	$(call say,LINK,$@)$(CC) $^ -o $@ -lm
 $(CTRL_DIR)/aftso_vecgen: $(CTRL_DIR)/aftso_vecgen.o $(CTRL_AFTSO_OBJ)
-	$(CC) $^ -o $@ -lm
+	$(call say,LINK,$@)$(CC) $^ -o $@ -lm
 $(CTRL_DIR)/adiso_vecgen: $(CTRL_DIR)/adiso_vecgen.o $(CTRL_DIR)/adiso_model.o
-	$(CC) $^ -o $@ -lm
+	$(call say,LINK,$@)$(CC) $^ -o $@ -lm
 $(CTRL_DIR)/adiso_seq: $(CTRL_DIR)/adiso_seq.o $(CTRL_DIR)/adiso_model.o
-	$(CC) $^ -o $@ -lm
+	$(call say,LINK,$@)$(CC) $^ -o $@ -lm
 
 # Verilator benches, one binary per configuration (the parameters are compile-time).
 define CTRL_AFTSO_RULE
 $(CTRL_DIR)/aftso_$(1)/aftso_bench: $(AFTSO_RTL) tb/ctrl/aftso_bench.cpp $(VHARNESS) $(CTRL_AFTSO_OBJ) $(CTRL_HDR)
-	$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) -GPhotonsPerCycle=$(5) \
+	$$(call say,VERILATE,$$@)$(CTRL_VERILATE) -GNumPreu=$(2) -GEarlyReady=$(3) -GBufDepth=$(4) -GPhotonsPerCycle=$(5) \
 	  -CFLAGS "-O2 -DNUM_PREU=$(2) -DEARLY_READY=$(3) -DBUF_DEPTH=$(4) -DPPC=$(5) -I$(abspath tb/ctrl) -I$(abspath model/pree) $(VHARNESS_INC)" \
 	  --Mdir $$(@D) -o aftso_bench $(AFTSO_RTL) $(abspath tb/ctrl/aftso_bench.cpp) \
 	  $(abspath $(CTRL_AFTSO_OBJ)) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
 endef
 define CTRL_ADISO_RULE
 $(CTRL_DIR)/adiso_p$(1)/adiso_bench: $(ADISO_RTL) tb/ctrl/adiso_bench.cpp $(VHARNESS) $(CTRL_DIR)/adiso_model.o $(CTRL_HDR)
-	$(CTRL_VERILATE) -GNumPreu=$(1) -GPipeDepth=12 \
+	$$(call say,VERILATE,$$@)$(CTRL_VERILATE) -GNumPreu=$(1) -GPipeDepth=12 \
 	  -CFLAGS "-O2 -DNUM_PREU=$(1) -DPIPE_DEPTH=12 -I$(abspath tb/ctrl) $(VHARNESS_INC)" \
 	  --Mdir $$(@D) -o adiso_bench $(ADISO_RTL) $(abspath tb/ctrl/adiso_bench.cpp) \
 	  $(abspath $(CTRL_DIR)/adiso_model.o) >$$(@D).log 2>&1 || { cat $$(@D).log; exit 1; }
@@ -88,18 +88,18 @@ endef
 define CTRL_AFTSO_ICARUS_RULE
 $(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).vvp: tb/ctrl/aftso_tb.v tb/ctrl/vec_tb.vh $(AFTSO_RTL)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -DPREE_ASSERT -Itb/ctrl -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$(filter %.v,$$^)
+	$$(call say,IVERILOG,$$@)iverilog -g2005 -Wall -DPREE_ASSERT -Itb/ctrl -P aftso_tb.NumPreu=$(1) -P aftso_tb.EarlyReady=$(2) -o $$@ $$(filter %.v,$$^)
 $(CTRL_DIR)/icarus/aftso_p$(1)_e$(2).ncyc: $(CTRL_DIR)/aftso_vecgen
 	@mkdir -p $$(@D)
-	$$< --preu $(1) --early-ready $(2) --seed $(1)$(2)7 --cycles 3000 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
+	$$(call say,GEN,$$@)$$< --preu $(1) --early-ready $(2) --seed $(1)$(2)7 --cycles 3000 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
 endef
 define CTRL_ADISO_ICARUS_RULE
 $(CTRL_DIR)/icarus/adiso_p$(1).vvp: tb/ctrl/adiso_tb.v tb/ctrl/vec_tb.vh $(ADISO_RTL)
 	@mkdir -p $$(@D)
-	iverilog -g2005 -Wall -Itb/ctrl -P adiso_tb.NumPreu=$(1) -P adiso_tb.PipeDepth=12 -o $$@ $$(filter %.v,$$^)
+	$$(call say,IVERILOG,$$@)iverilog -g2005 -Wall -Itb/ctrl -P adiso_tb.NumPreu=$(1) -P adiso_tb.PipeDepth=12 -o $$@ $$(filter %.v,$$^)
 $(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
 	@mkdir -p $$(@D)
-	$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
+	$$(call say,GEN,$$@)$$< --preu $(1) --pipe 12 --seed $(1)3 $$(@:.ncyc=.stim) $$(@:.ncyc=.exp) >$$@
 endef
 $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(eval $(call CTRL_AFTSO_RULE,$(c),$(call ctrl_cfg_word,$(c),p),$(call ctrl_cfg_word,$(c),e),$(call ctrl_cfg_buf,$(c)),$(call ctrl_cfg_ppc,$(c)))))
 $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),$(e)))))

@@ -13,5 +13,5 @@ WAVE_SVG := $(patsubst %.json,%.svg,$(wildcard docs/wave/*.json))
 docs-waves: $(WAVE_SVG)
 
 docs/wave/%.svg: docs/wave/%.json | $(FPGA_STAMP)
-	$(abspath $(FPGA_VENV))/bin/wavedrompy --input $< --svg $@.tmp
-	mv $@.tmp $@
+	$(call say,WAVEDROM,$@)$(abspath $(FPGA_VENV))/bin/wavedrompy --input $< --svg $@.tmp
+	@mv $@.tmp $@

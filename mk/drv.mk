@@ -22,17 +22,17 @@ TEST_PREREQS += $(DRV_LIB) $(DRV_PROBE) $(DRV_TEST)
 
 $(DRV_DIR)/%.o: drv/%.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(DRV_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -c $< -o $@
 $(DRV_DIR)/pree_be_verilated.o: drv/pree_be_verilated.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
+	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
 $(DRV_DIR)/pree_drv_test.o: tb/drv/pree_drv_test.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
+	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
 $(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o
-	rm -f $@ && ar rcs $@ $^
+	$(call say,AR,$@)rm -f $@ && ar rcs $@ $^
 $(DRV_PROBE): $(DRV_DIR)/pree_probe.o $(DRV_LIB)
-	$(CC) $(LDFLAGS) $^ -o $@
+	$(call say,LINK,$@)$(CC) $(LDFLAGS) $^ -o $@
 $(DRV_TEST): $(DRV_DIR)/pree_drv_test.o $(DRV_DIR)/pree_drv.o $(DRV_VL_OBJS) $(LIBPREE)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lz -pthread
+	$(call say,LINK,$@)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(DRV_DIR)/*.d)

@@ -158,7 +158,7 @@ synth-fp32: | $(DEPS_STAMP)
 	{ echo "| unit | LUTs | FFs | DSP48E1 | CARRY4 | MUXF7/8 | LUT levels per stage | cells on longest path per stage |"; \
 	  echo "|---|---|---|---|---|---|---|---|"; } > $(FP32_DIR)/synth/resources.md.tmp; \
 	for u in $(FP32_UNITS) $(FP32_FAST); do \
-	  echo "scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; \
+	  $(call say_sh,SYNTH,fp32/synth/$$u,scripts/fp32_synth.sh $$u $(FP32_DIR)/synth); \
 	  scripts/fp32_synth.sh $$u $(FP32_DIR)/synth >/dev/null || { echo "synth-fp32: $$u failed; rerun: scripts/fp32_synth.sh $$u $(FP32_DIR)/synth"; exit 1; }; \
 	  cat $(FP32_DIR)/synth/$$u.row >> $(FP32_DIR)/synth/resources.md.tmp; \
 	done; \

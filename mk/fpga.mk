@@ -37,7 +37,7 @@ fpga-timing: $(FPGA_STAMP) $(if $(filter-out $(FPGA_CONFIGS),$(FPGA_ALL)),,synth
 	{ echo "| configuration | Fmax (MHz) | critical path (nextpnr, register to register) | LUT4 | FF | CCU2C | MULT18 | EBR |"; \
 	  echo "|---|---|---|---|---|---|---|---|"; } > $(FPGA_DIR)/timing.md.tmp; \
 	for c in $(FPGA_CONFIGS); do \
-	  echo "scripts/fpga_timing.sh $$c $(FPGA_DIR)"; \
+	  $(call say_sh,PNR,fpga/$$c,scripts/fpga_timing.sh $$c $(FPGA_DIR)); \
 	  PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_FREQ=$(FPGA_FREQ) FPGA_SEED=$(FPGA_SEED) \
 	    nice -n 19 scripts/fpga_timing.sh $$c $(FPGA_DIR) >/dev/null \
 	    || { echo "fpga-timing: $$c failed; rerun: PATH=$(abspath $(FPGA_VENV))/bin:\$$PATH scripts/fpga_timing.sh $$c $(FPGA_DIR)"; exit 1; }; \

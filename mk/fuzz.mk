@@ -18,7 +18,7 @@ FUZZ_TIME  ?= 600
 
 $(FUZZ_DIR)/fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/fuzz_file.h $(FUZZ_SRC) $(wildcard model/scene/*.h) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_SRC) -o $@ -lassimp -lz -lm
+	$(call say,LINK,$@)$(FUZZ_CC) $(FUZZ_FLAGS) $< $(FUZZ_SRC) -o $@ -lassimp -lz -lm
 
 TEST_PREREQS += $(FUZZ_BINS)
 

@@ -49,10 +49,10 @@ SYNTH_TARGETS += synth-preu
 
 $(PREU_DIR)/%.o: model/pree/%.c $(PREU_HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(PREU_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(PREU_CFLAGS) -c $< -o $@
 $(PREU_DIR)/%.o: tb/preu/%.c $(PREU_HDRS) | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(PREU_CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(PREU_CFLAGS) -c $< -o $@
 
 lint-preu: | $(DEPS_STAMP)
 	for dp in $(PREU_DPS); do for pf in 0 1; do g="-GDatapath=$$dp -GPipeFast=$$pf"; \
@@ -64,9 +64,9 @@ lint-preu: | $(DEPS_STAMP)
 
 # The Icarus vector generator (both datapaths).
 $(PREU_DIR)/preu_vecgen: $(PREU_DIR)/preu_vecgen.o $(PREU_C_OBJ)
-	$(CC) $^ -o $@ -lm
+	$(call say,LINK,$@)$(CC) $^ -o $@ -lm
 $(PREU_DIR)/preu_vec_bad.hex: $(PREU_DIR)/preu_vecgen
-	$(PREU_DIR)/preu_vecgen 100 1 0 $@
+	$(call say,GEN,$@)$(PREU_DIR)/preu_vecgen 100 1 0 $@
 
 # Per configuration $(1) (datapath, f: PipeFast 1): the Verilator bench (the C model objects are linked into the harness;
 # assertions on), the Icarus vectors and simulation, and the same Verilog bench under Verilator
@@ -74,7 +74,7 @@ $(PREU_DIR)/preu_vec_bad.hex: $(PREU_DIR)/preu_vecgen
 define PREU_DP_RULES
 $(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(VHARNESS) $(PREU_HDRS) $(PREU_C_OBJ) | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
+	$$(call say,VERILATE,$$@)verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
 	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) $(patsubst -I%,-I$(CURDIR)/%,$(MODEL_INC)) -I$(CURDIR)/tb/preu $(VHARNESS_INC)" \
 	  $(PREU_SRCS) $(CURDIR)/tb/preu/preu_bench.cpp $(abspath $(PREU_C_OBJ)) >$(PREU_DIR)/vl-build-dp$(1).log 2>&1 \
@@ -85,14 +85,14 @@ sim-preu-vl-dp$(1): $(call preu_bench,$(1))
 	$$< $(PREU_N) $(PREU_SEED)
 
 $(PREU_DIR)/tb_preu_dp$(1)_$(PREU_IV_N)_$(PREU_SEED).vvp: tb/preu/tb_preu.v $(PREU_SRCS) $(PREU_RTL) $(call preu_hex,$(call preu_dp,$(1)))
-	iverilog -g2005 -DPREE_ASSERT -Irtl -s tb_preu -Ptb_preu.NOps=$(PREU_IV_N) -Ptb_preu.Datapath=$(call preu_dp,$(1)) \
+	$$(call say,IVERILOG,$$@)iverilog -g2005 -DPREE_ASSERT -Irtl -s tb_preu -Ptb_preu.NOps=$(PREU_IV_N) -Ptb_preu.Datapath=$(call preu_dp,$(1)) \
 	  -Ptb_preu.PipeFast=$(call preu_pf,$(1)) -Ptb_preu.VecFile='"$(call preu_hex,$(call preu_dp,$(1)))"' -o $$@ tb/preu/tb_preu.v $(PREU_SRCS)
 sim-preu-iv-dp$(1): $(PREU_DIR)/tb_preu_dp$(1)_$(PREU_IV_N)_$(PREU_SEED).vvp
 	vvp -N $$<
 
 $(PREU_DIR)/vlbin_dp$(1)/tb_preu_$(PREU_IV_N)_$(PREU_SEED): tb/preu/tb_preu.v $(PREU_SRCS) $(PREU_RTL) $(call preu_hex,$(call preu_dp,$(1)))
 	@mkdir -p $$(@D)
-	verilator --binary --timing -j 2 -Irtl -DPREE_ASSERT --top-module tb_preu -GNOps=$(PREU_IV_N) \
+	$$(call say,VERILATE,$$@)verilator --binary --timing -j 2 -Irtl -DPREE_ASSERT --top-module tb_preu -GNOps=$(PREU_IV_N) \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -GVecFile='"$(call preu_hex,$(call preu_dp,$(1)))"' -Mdir $(PREU_DIR)/vlbin_dp$(1) \
 	  -o tb_preu_$(PREU_IV_N)_$(PREU_SEED) tb/preu/tb_preu.v $(PREU_SRCS) >$(PREU_DIR)/vlbin-build-dp$(1).log 2>&1 \
 	  || { tail -30 $(PREU_DIR)/vlbin-build-dp$(1).log; exit 1; }

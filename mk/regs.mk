@@ -22,8 +22,8 @@ regs: $(FPGA_STAMP)
 # The parameters of the model it runs (mk/cosim_axi.mk's pree_axi with 4 PREUs, paper datapath).
 $(REGS_DIR)/regs_check.o: tb/regs/regs_check.c tb/regs/pree_axi_regs_table.h | $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(DRV_CFLAGS) -Itb/regs \
+	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -Itb/regs \
 	  '-DREGS_GPARAMS="$(strip $(filter-out -GPipeFast=% -GPhotonsPerCycle=%,$(call COSIM_GPARAMS,4,p)))"' -c $< -o $@
 $(REGS_CHECK): $(REGS_DIR)/regs_check.o $(DRV_VL_OBJS)
-	$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lz -pthread
+	$(call say,LINK,$@)$(CXX) $(LDFLAGS) $^ -o $@ $(LDLIBS) -lz -pthread
 -include $(wildcard $(REGS_DIR)/*.d)

@@ -17,9 +17,9 @@ STRESS_HP  := $(BUILD)/stress/stress_hitpoint
 STRESS_HP_OBJS := $(patsubst tests/stress/%.c,$(BUILD)/stress/%.o,$(wildcard tests/stress/*.c))
 $(BUILD)/stress/%.o: tests/stress/%.c $(DEPS_STAMP)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -c $< -o $@
+	$(call say,CC,$@)$(CC) $(CFLAGS) -c $< -o $@
 $(STRESS_HP): $(STRESS_HP_OBJS) $(LIBPREE)
-	$(CC) $(LDFLAGS) $(STRESS_HP_OBJS) $(LIBPREE) -o $@ -lm
+	$(call say,LINK,$@)$(CC) $(LDFLAGS) $(STRESS_HP_OBJS) $(LIBPREE) -o $@ -lm
 
 TEST_PREREQS += $(STRESS_HP)
 

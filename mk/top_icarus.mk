@@ -82,16 +82,16 @@ SIM_TARGETS  += sim-top-icarus
 # The vector writer: the fp32 PREU model and the radiance order of libpree's objects.
 $(TOPIV_DIR)/top_vecgen: tb/cosim/top_vecgen.c tb/cosim/bench_draw.h $(BUILD)/model/pree/preu_fp32.o $(BUILD)/model/pree/adiso_order.o
 	@mkdir -p $(@D)
-	$(CC) $(TOPIV_CFLAGS) $(filter-out %.h,$^) -o $@ -lm
+	$(call say,LINK,$@)$(CC) $(TOPIV_CFLAGS) $(filter-out %.h,$^) -o $@ -lm
 
 define TOPIV_CFG_RULE
 $(TOPIV_DIR)/top_tb_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) $(wildcard rtl/*.vh) mk/top_icarus.mk | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(1)) -o $$@ tb/cosim/top_tb.v $(TOPIV_RTL)
+	$$(call say,IVERILOG,$$@)$(TOPIV_IVERILOG) $(TOPIV_PAR_$(1)) -o $$@ tb/cosim/top_tb.v $(TOPIV_RTL)
 endef
 define TOPIV_RUN_RULE
 $(TOPIV_DIR)/$(1).meta: $(TOPIV_DIR)/top_vecgen mk/top_icarus.mk
-	$(TOPIV_DIR)/top_vecgen $(TOPIV_GEOM_$(TOPIV_CFG_$(1))) $(TOPIV_ARG_$(1)) $(TOPIV_DIR)/$(1) >$(TOPIV_DIR)/$(1).vecgen.txt
+	$$(call say,GEN,$$@)$(TOPIV_DIR)/top_vecgen $(TOPIV_GEOM_$(TOPIV_CFG_$(1))) $(TOPIV_ARG_$(1)) $(TOPIV_DIR)/$(1) >$(TOPIV_DIR)/$(1).vecgen.txt
 endef
 # A mutant: one RTL file with one edit (the rule fails when the edit no longer applies).
 topiv_mfile = $(or $(TOPIV_FILE_$(1)),rtl/pree_top.v)
