@@ -2,7 +2,7 @@
 # The IEEE-754 binary32 units (rtl/pree_fp32_*.v) and the stable datapath's wide accumulator
 # (rtl/pree_wacc.v, unit "wacc") and count conversion (rtl/pree_u64_to_f32.v, unit "u2f"):
 # Verilator benches, Icarus testbenches over vector files, lint and Yosys synthesis.
-# Documented in docs/fp32_units.md.
+# Documented in docs/fp32_units.md and docs/fp32_verification.md.
 #
 #   make sim-fp32          quick level: Verilator (directed + FP32_QUICK random per unit) and
 #                          Icarus (directed + FP32_IV_QUICK random per unit); part of `make sim`
