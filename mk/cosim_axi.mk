@@ -6,8 +6,8 @@
 #   make synth-axi     Yosys synth_xilinx of pree_axi: the wrapper's own logic (pree_top a black box)
 #                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
 #                      SYNTH_AXI_PREUS (default 4; the reduced flow, synth_axi.sh --fast) into the
-#                      table of docs/integration.md (scripts/fpga_doc.py, markers synth-axi)
-#   make fit-table     the block RAM / URAM fit table of docs/integration.md (scripts/pree_fit.py)
+#                      table of docs/integration_resources.md (scripts/fpga_doc.py, markers synth-axi)
+#   make fit-table     the block RAM / URAM fit table of docs/integration_resources.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
 #                      pree_axi (d: p paper, s stable; n PREUs; f: PipeFast 1), built only when
 #                      asked (the regression builds axi-p4: tests/checks/axi_cosim.sh)
@@ -83,7 +83,7 @@ synth-axi: | $(DEPS_STAMP)
 	  echo '|---|---|---|---|---|---|---|---|'; \
 	  cat $(foreach p,4 8 16,$(AXI_DIR)/synth/own_p$(p).md) $(foreach p,$(SYNTH_AXI_PREUS),$(AXI_DIR)/synth/fast_p$(p).md); } \
 	  > $(AXI_DIR)/synth/resources.md
-	python3 scripts/fpga_doc.py docs/integration.md synth-axi $(AXI_DIR)/synth/resources.md
+	python3 scripts/fpga_doc.py docs/integration_resources.md synth-axi $(AXI_DIR)/synth/resources.md
 
 fit-table:
 	python3 scripts/pree_fit.py

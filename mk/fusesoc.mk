@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
-# (After mk/fpga.mk, whose venv it uses.) The FuseSoC core pree.core (docs/integration.md,
-# "Packaging"): its targets run through FuseSoC 2.4.7 from the hardware tools' venv
+# (After mk/fpga.mk, whose venv it uses.) The FuseSoC core pree.core (docs/packaging.md):
+# its targets run through FuseSoC 2.4.7 from the hardware tools' venv
 # ($(FPGA_VENV), `make fpga-deps`) with the repository as the cores root and a build root under
 # $(BUILD)/fusesoc; no network.
 #

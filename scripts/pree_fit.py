@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
 """pree_fit.py: which pree_axi configurations fit which FPGA parts, by block RAM (and UltraRAM)
-count, from the memories pree_top builds (rtl/pree_top.v; docs/integration.md, "Which part"):
+count, from the memories pree_top builds (rtl/pree_top.v; docs/integration_resources.md, "Memories and fit"):
 
   index table   NumPreu banks of 2^(IdxAW - log2 NumPreu) x HpAW
   hit points    2^HpBankW banks of 2^(HpAW - HpBankW) x (PxAW + 192)  (constant part)
