@@ -140,7 +140,7 @@ static void note_issue(cosim_drv_t *d, int k)
 
 /* The head group is taken in this cycle: against the scheduler's model, it should be taken
  * a constant number of cycles later (the first group's), or the model's counts are not the
- * RTL's (docs/pree_top.md, "Host protocol": the load port's lead). */
+ * RTL's (docs/cosim.md, "The scheduler": the load port's lead). */
 static void note_lag(cosim_drv_t *d)
 {
     const uint64_t c = cosim_rtl_cycle(d->rtl), m = d->pq[d->pq_head & (PQ_CAP - 1)].model_cycle;

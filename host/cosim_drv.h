@@ -44,7 +44,7 @@
 
 /* The load port's lead, in index entries (candidates): in a scheduled stream the first photon
  * waits until this many (or every queued one) are written, and the host keeps this many queued
- * (docs/pree_top.md, "Host protocol": what AFTSO-HpUOC buffers comes out of the lead; through
+ * (docs/cosim.md, "The scheduler": what AFTSO-HpUOC buffers comes out of the lead; through
  * the wrapper, docs/integration.md, the candidate stream runs this far ahead of the photons). */
 #define COSIM_LEAD_ENTRIES(np) (64u * (uint32_t)(np))
 

@@ -69,7 +69,7 @@ typedef struct cosim_sched cosim_sched_t;
 /* The default window (pending photons) for NumPreu PREUs: 128, and COSIM_SCHED_WINDOW_16 with 16.
  * Whole frame of cornell3 (320x240 / 768k), cycle model, 16 PREUs, pixel layout: windows 128,
  * 96, 64, 32 left 482, 362, 176, 65 hazard cycles (99.806% to 99.874% utilization,
- * docs/pree_top.md): with four photons taken a cycle a large window moves more photons ahead of
+ * docs/cosim.md): with four photons taken a cycle a large window moves more photons ahead of
  * older ones, which then become eligible together and meet their neighbours' operations still
  * in flight. With the spatial layout (the default) windows 32 and 128 give the same 658,965
  * cycles. */

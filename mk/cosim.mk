@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # The PREE top (rtl/pree_top.v), its benches (tb/cosim/) and the co-simulation host (host/):
-# docs/pree_top.md.
+# docs/pree_top.md, docs/cosim.md.
 #
 #   make sim-top       Verilator bench of pree_top against the C model (adversarial traces),
 #                      lint, and `pree cosim` of cornell3 at 64x48 / 20k photons (part of `make sim`)

@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 # Icarus bench of the PREE top (rtl/pree_top.v): tb/cosim/top_tb.v plays the host protocol over
 # vectors from tb/cosim/top_vecgen.c (the fp32 model of libpree) and compares every hit-point
-# and pixel word. Small memories so that Icarus runs it in seconds; docs/pree_top.md,
+# and pixel word. Small memories so that Icarus runs it in seconds; docs/cosim.md,
 # "Icarus bench".
 #
 #   make sim-top-icarus          every run below (part of `make sim`), then the mutants
