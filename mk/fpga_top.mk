@@ -1,16 +1,16 @@
 # SPDX-License-Identifier: Apache-2.0
 # (After mk/fpga.mk, whose venv it uses.) The whole PREE placed and routed on the ULX3S's
-# LFE5U-85F (docs/fpga.md, "The whole design"): pree_axi behind the UART bridge of
+# LFE5U-85F (docs/fpga_board.md): pree_axi behind the UART bridge of
 # rtl/board/pree_ulx3s.v, pins in constraints/pree_ulx3s.lpf; scripts/fpga_pnr_top.sh runs each
 # step (Yosys synth_ecp5 of pree_axi alone, then of the board top around it; nextpnr-ecp5 per
 # seed; ecppack of the first seed's result), scripts/fpga_top_report.py writes the tables.
-# Outside `make test`: hours of one core (docs/fpga.md has the measured times).
+# Outside `make test`: hours of one core (docs/fpga_board.md).
 #
 #   make fpga-pnr-top                       everything: $(FPGA_TOP_DIR)/pree_ulx3s.bit and
 #                                           $(FPGA_TOP_DIR)/report.md
 #   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 1)
 #   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters (default: the
-#                                           configuration of docs/fpga.md)
+#                                           configuration of docs/fpga_board.md)
 #   FPGA_TOP_DIR=build/fpga-top-x           another folder (one per configuration)
 
 FPGA_TOP_DIR    ?= $(BUILD)/fpga-top

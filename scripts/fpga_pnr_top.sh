@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# fpga_pnr_top.sh: the whole PREE on the ULX3S's LFE5U-85F (docs/fpga.md, "The whole design"):
+# fpga_pnr_top.sh: the whole PREE on the ULX3S's LFE5U-85F (docs/fpga_board.md):
 # Yosys synth_ecp5, nextpnr-ecp5, ecppack. One step a call, so that make runs each when its
 # inputs change:
 #   fpga_pnr_top.sh core  <dir>         pree_axi alone -> <dir>/pree_axi.json (synth_ecp5; its

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""fpga_top_report.py: the tables of `make fpga-pnr-top` (docs/fpga.md, "The whole design").
+"""fpga_top_report.py: the tables of `make fpga-pnr-top` (docs/fpga_board.md).
 
 Usage: fpga_top_report.py <dir> <seed> [<seed> ...]
 Reads <dir>/pree_ulx3s.json (the netlist nextpnr placed), <dir>/pree_ulx3s.stat.txt (Yosys's

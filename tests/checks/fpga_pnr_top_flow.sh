@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
-# The ULX3S flow of `make fpga-pnr-top` is consistent (docs/fpga.md, "The whole design"), without
+# The ULX3S flow of `make fpga-pnr-top` is consistent (docs/fpga_board.md), without
 # its hours of place and route: constraints/pree_ulx3s.lpf places every port bit of
 # rtl/board/pree_ulx3s.v and nothing else, each on its own pin, with IOBUF settings only for those
 # ports and the 25 MHz FREQUENCY on the clock; the board top lints (verilator -Wall, the EHXPLLL's
