@@ -295,7 +295,7 @@ static void warn_result(const render_job_t *j, const render_options_t *opt, cons
     if (opt->precision == PRECISION_FP32 && st->r0 > 0 && ulp > 0.01 * st->r0)
         fprintf(stderr, "pree render: warning: %s: hit points lie up to %g from the origin, where one binary32 step "
                 "(%g) is %.1f%% of the initial radius %g: fp32 loses accuracy; move the scene towards the origin "
-                "(docs/numerics.md, \"Translation\")\n", j->scene_path, st->hp_coord_max, ulp, 100 * ulp / st->r0, st->r0);
+                "(docs/numerics_renders.md, \"Translation\")\n", j->scene_path, st->hp_coord_max, ulp, 100 * ulp / st->r0, st->r0);
     if (st->hit_points_saturated)
         fprintf(stderr, "pree render: warning: %s: %llu hit points reached the stable datapath's wide-format limit "
                 "(1/r2 or tau/r2 beyond binary32's range: the radius stopped shrinking there; docs/numerics.md)\n",

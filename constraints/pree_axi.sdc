@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 # pree_axi.sdc: SDC timing template for rtl/pree_axi.v (Quartus, Lattice Radiant, Synopsys-style
-# tools; docs/integration.md, "Clocking and CDC"). One clock, every port synchronous to aclk; the
+# tools; docs/integration.md, "Clocking and reset"). One clock, every port synchronous to aclk; the
 # 8 ns period is a placeholder (no pree_axi Fmax measured): set your own.
 create_clock -name aclk -period 8.000 [get_ports aclk]
 

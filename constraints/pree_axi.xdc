@@ -1,5 +1,5 @@
 # SPDX-License-Identifier: Apache-2.0
-# pree_axi.xdc: Vivado timing template for rtl/pree_axi.v (docs/integration.md, "Clocking and CDC").
+# pree_axi.xdc: Vivado timing template for rtl/pree_axi.v (docs/integration.md, "Clocking and reset").
 # One clock: every port of pree_axi is synchronous to aclk. The 8 ns period is a placeholder (no
 # pree_axi Fmax has been measured; docs/fpga.md gives the units' ECP5 figures): set your own.
 create_clock -name aclk -period 8.000 [get_ports aclk]

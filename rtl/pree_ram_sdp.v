@@ -8,7 +8,7 @@
 //        stalled pipeline keep a read result in place.
 // Read and write of the same address at the same edge return the OLD word (read-first). The
 // users in pree_top never depend on this case: their hazard logic keeps an address that is
-// being written away from the read port (see docs/pree_top.md, "Hazards").
+// being written away from the read port (see docs/pree_top.md, "Pipeline, memories and hazards").
 // No reset; the contents are undefined until written.
 //
 // Parameters: Width data bits, AddrW address bits (depth 2^AddrW).

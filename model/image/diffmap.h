@@ -13,7 +13,7 @@
  * Colours: pree_false_colour, black through red and yellow to white (compare.h's heat map), so
  * the picture of an absolute-error field on the linear fitted scale is pree_diff_heatmap's,
  * byte for byte. NaN samples (where a field is undefined, e.g. SSIM's 5-pixel border) are
- * drawn in the background grey. docs/compare.md, "Difference images", gives the definitions. */
+ * drawn in the background grey. docs/compare.md, "`--diff OUT` and `--log`: difference maps", gives the definitions. */
 #ifndef PREE_DIFFMAP_H
 #define PREE_DIFFMAP_H
 

@@ -4,8 +4,8 @@
 # PREU is mapped once). Fails on a latch (after proc) or a combinational loop (before and after
 # mapping); writes one resource row to OUTDIR/<tag>_p<NumPreu>.md.
 #   whole design (tag "whole"): every file of rtl/pree.f, memories sized down (HpAW = 2 HpBankW,
-#     IdxAW 8, PxAW 10): their block RAM count scales with the sizes (docs/integration.md, "Which
-#     part"), the logic does not.
+#     IdxAW 8, PxAW 10): their block RAM count scales with the sizes (docs/integration_resources.md, "Memories
+#     and fit"), the logic does not.
 #   --own (tag "own"): the wrapper's own logic, pree_top a black box, the co-simulation's memory
 #     parameters (HpAW 18, IdxAW 12, PxAW 17). Minutes where the whole design takes far longer.
 #   --fast (tag "fast", whole design): synth_xilinx up to its LUT mapping, which then runs as
