@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cli_pm.c: the photon-map estimator's options (see cli_pm.h). */
+#include <string.h>
 #include "cli_pm.h"
+#include "pm_render.h"
+#include "render_dist.h"
 
 int cli_pm_option(cli_args_t *a, int id, render_options_t *opt)
 {
@@ -87,4 +90,22 @@ int cli_pm_check(cli_args_t *a, const render_options_t *opt)
                                             opt->knn_bench))
         return cli_error(a, "--k, --max-radius, --cluster-bundle, --knn-kernel and --knn-bench need --estimator pm");
     return 0;
+}
+
+int cli_estimator_render(const scene_t *scene, const render_options_t *opt, render_result_t *res, char *err,
+                         size_t errlen)
+{
+    if (opt->estimator != ESTIMATOR_PM) return render_run(scene, opt, res, err, errlen);
+    if (opt->checkpoint || opt->resume || opt->time_limit > 0 || opt->write_at_n) {
+        memset(res, 0, sizeof *res);
+        snprintf(err, errlen, "--checkpoint, --resume, --time-limit and --write-at/--write-every apply to the PPM "
+                 "estimator only");
+        return -1;
+    }
+    if (render_dist_size() > 1) {
+        memset(res, 0, sizeof *res);
+        snprintf(err, errlen, "the photon-map estimator runs in one process (under MPI: one rank)");
+        return -1;
+    }
+    return pm_render(scene, opt, res, err, errlen);
 }

@@ -28,4 +28,11 @@ int cli_pm_option(cli_args_t *a, int id, render_options_t *opt);
 void cli_pm_usage(FILE *f);
 int cli_pm_check(cli_args_t *a, const render_options_t *opt);
 
+/* The render with the estimator opt->estimator names, the one place that chooses it: the
+ * progressive session (render_run, model/ppm/render.h) or the photon-map render (pm_render,
+ * model/pm/pm_render.h), which refuses the progressive render's checkpoints, time limit, series
+ * and MPI ranks. Returns as render_run. */
+int cli_estimator_render(const scene_t *scene, const render_options_t *opt, render_result_t *res, char *err,
+                         size_t errlen);
+
 #endif

@@ -446,7 +446,7 @@ static int render_job(render_options_t *opt_in, render_job_t *jp)
     }
     render_result_t res;
     char wrote[4096] = "";
-    int rc = render_run(&scene, &opt, &res, err, sizeof err);
+    int rc = cli_estimator_render(&scene, &opt, &res, err, sizeof err);
     size_t nonfinite = 0;
     for (size_t i = 0; rc >= 0 && i < (size_t)res.width * res.height * 3; i++) nonfinite += !isfinite(res.rgb[i]);
     if (rc < 0) {

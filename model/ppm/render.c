@@ -11,9 +11,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/resource.h>
-#include <time.h>
-#include <unistd.h>
 #include "hp_order.h"
 #include "cpu_features.h"
 #include "grid_refilter.h"
@@ -24,12 +21,6 @@
 #include "render_check.h"
 #include "render_dist.h"
 #include "render_session.h"
-
-long render_peak_rss_kb(void)
-{
-    struct rusage ru;
-    return getrusage(RUSAGE_SELF, &ru) == 0 ? ru.ru_maxrss : -1;
-}
 
 /* Hit-point state before the first photon: radius r0, no photons, no flux; the update rule's
  * alpha and, in fp32 mode, the datapath's state layout, which holds the weight (so the double
@@ -219,13 +210,6 @@ static int open_grid(render_session_t *s, const char **phase, char *err, size_t 
     return 0;
 }
 
-/* The process's CPU time in seconds (every thread's). */
-static double cpu_seconds(void)
-{
-    struct timespec t;
-    return clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t) ? 0.0 : (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
-
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                               char *err, size_t errlen)
 {
@@ -237,7 +221,7 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->res = res;
     render_stats_t *st = &res->stats;
     s->t_start = omp_get_wtime();
-    s->cpu_start = cpu_seconds();
+    s->cpu_start = render_cpu_seconds();
     const char *phase = "set-up";
     if (!(opt->alpha == 0 || (opt->alpha > 0 && opt->alpha <= 1))) {
         snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
@@ -346,7 +330,7 @@ int render_session_snapshot(render_session_t *s, char *err, size_t errlen)
     }
     int rc = evaluate(s, res->stats.photons_emitted, err, errlen);
     res->stats.sec_total = omp_get_wtime() - s->t_start;
-    res->stats.sec_cpu = cpu_seconds() - s->cpu_start;
+    res->stats.sec_cpu = render_cpu_seconds() - s->cpu_start;
     res->stats.peak_rss_kb = render_peak_rss_kb();
     if (rc == 0 && s->opt.snapshot) rc = s->opt.snapshot(s->opt.snapshot_ctx, res, err, errlen);
     if (hp_order_apply(&res->hp, s->perm) && rc == 0) {
@@ -379,27 +363,11 @@ int render_close(render_session_t *s, char *err, size_t errlen)
     rc = s->interrupted ? 1 : 0;
 done:
     st->sec_total = omp_get_wtime() - s->t_start;
-    st->sec_cpu = cpu_seconds() - s->cpu_start;
+    st->sec_cpu = render_cpu_seconds() - s->cpu_start;
     session_free(s);
     st->peak_rss_kb = render_peak_rss_kb();
     if (st->hit_points) st->peak_bytes_per_hit_point = 1024.0 * (double)st->peak_rss_kb / (double)st->hit_points;
     return rc;
-}
-
-void render_stats_scene(render_stats_t *st, const scene_t *scene)
-{
-    st->scene_spheres = (unsigned long long)scene->num_spheres;
-    for (int m = 0; m < scene->num_meshes; m++) st->scene_triangles += scene->meshes[m].num_triangles;
-    st->scene_lights = (unsigned long long)scene->num_lights;
-    st->scene_mirror = scene->has_mirror;
-    st->scene_glass = scene->has_glass;
-}
-
-void render_result_free(render_result_t *res)
-{
-    free(res->rgb);
-    hitpoints_free(&res->hp);
-    memset(res, 0, sizeof *res);
 }
 
 update_stats_t render_session_update_totals(const render_session_t *s)

@@ -2,7 +2,9 @@
 /* render.h: one progressive photon mapping render: eye pass, grid, photon pass with ordered
  * updates, radiance evaluation. The output image is bit-identical for every thread count.
  *
- * With opt->estimator = ESTIMATOR_PM it is the photon-map estimator instead (model/pm/).
+ * render_run is the progressive estimator only: its caller chooses between it and the photon-map
+ * estimator (model/pm/pm_render.h; `pree render --estimator`: cli/cli_pm.c), and render_run does
+ * not read opt->estimator.
  *
  * render_run() returns 0 (complete, or stopped by the time limit: stats.time_limited), 1
  * (interrupted: the image holds the whole photon blocks done so far) or -1 with a one-line
@@ -78,7 +80,8 @@ typedef struct {
                               * rank of the co-simulation under mpirun runs the whole engine) */
     /* The photon-map estimator (--estimator pm, model/pm/): the k nearest photons of each hit
      * point within max_radius, found by knn_search; photons traced in task units. */
-    estimator_t estimator;   /* ESTIMATOR_PPM (default) or ESTIMATOR_PM */
+    estimator_t estimator;   /* ESTIMATOR_PPM (default) or ESTIMATOR_PM: the caller's choice, which
+                              * the statistics name (render_run itself is the PPM estimator) */
     int knn_k;               /* 0: 50 */
     double max_radius;       /* 0: the PPM initial radius */
     knn_search_t knn_search; /* KNN_CLUSTERED (default), KNN_KDTREE (single pass) or KNN_NAIVE (the oracle) */
@@ -133,9 +136,11 @@ struct render_result {
 
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen);
-/* The process's peak resident memory so far, KiB. */
+/* What both estimators fill in alike (render_result.c): the process's peak resident memory so
+ * far (KiB), its CPU seconds so far (every thread's), and the scene-content figures of the
+ * statistics. */
 long render_peak_rss_kb(void);
-/* The scene-content figures of the statistics. */
+double render_cpu_seconds(void);
 void render_stats_scene(render_stats_t *st, const scene_t *scene);
 
 /* The same render driven step by step by its caller, who may look at each block's operations:

@@ -11,8 +11,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "checkpoint.h"
-#include "render_dist.h"
-#include "pm_render.h"
 #include "pree_env.h"
 #include "render_session.h"
 
@@ -59,20 +57,6 @@ void render_test_interrupt(const char *phase)
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen)
 {
-    if (opt->estimator == ESTIMATOR_PM) {
-        if (opt->checkpoint || opt->resume || opt->time_limit > 0 || opt->write_at_n) {
-            memset(res, 0, sizeof *res);
-            snprintf(err, errlen, "--checkpoint, --resume, --time-limit and --write-at/--write-every apply to the PPM "
-                     "estimator only");
-            return -1;
-        }
-        if (render_dist_size() > 1) {
-            memset(res, 0, sizeof *res);
-            snprintf(err, errlen, "the photon-map estimator runs in one process (under MPI: one rank)");
-            return -1;
-        }
-        return pm_render(scene, opt, res, err, errlen);
-    }
     render_session_t *s = render_open(scene, opt, res, err, errlen);
     if (!s) return -1;
     const uint64_t every = render_checkpoint_every(opt);
