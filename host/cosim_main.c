@@ -213,7 +213,7 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
     if (scene_load(c->scene, &r->scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
     r->have_scene = 1;
     r->dp = r->opt.datapath == DATAPATH_STABLE;
-    /* The update rule's run-time constants, as the render derives them (model/ppm/render.c). */
+    /* The update rule's run-time constants, as the render derives them (model/ppm/render_setup.c). */
     r->alpha = preu_f32(render_alpha(&r->opt));
     r->win = cosim_update_window(r->dp, c->pipefast);
     int hp_bank_w = 0, ppc = 0;

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 /* render_dist.h: the transport of a render over MPI ranks (docs/scale_out.md): built on MPI
- * when make finds mpicc (PREE_MPI), otherwise one rank. Only render.c's distributed photon
- * rounds call it, and only when render_dist_size() > 1 (the program was started by an MPI
- * launcher with more than one rank and cli/cli_mpi.c initialised MPI). */
+ * when make finds mpicc (PREE_MPI), otherwise one rank. Only the distributed photon rounds
+ * (render_round.c, and render_trace.c's poll of their exchange) exchange through it, and only when
+ * render_dist_size() > 1 (the program was started by an MPI launcher with more than one rank and
+ * cli/cli_mpi.c initialised MPI). */
 #ifndef PREE_RENDER_DIST_H
 #define PREE_RENDER_DIST_H
 

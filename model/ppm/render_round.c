@@ -15,7 +15,10 @@
 #include <omp.h>
 #include "render_check.h"
 #include "render_dist.h"
-#include "render_session.h"
+#include "render_round.h"
+#include "render_screen.h"
+#include "render_test_hook.h"
+#include "render_trace.h"
 
 /* The threads' kept lists: one per owning rank when screening, one per part when applying (the
  * same count for both, so that the lists keep their memory from round to round). */
@@ -322,4 +325,22 @@ void render_round_close(render_session_t *s)
     st->mpi_kept_foreign = v[7];
     st->photon_hits = v[8];
     st->photon_segments = v[9];
+}
+
+void render_round_free(render_session_t *s)
+{
+    free(s->own_lo);
+    free(s->counts);
+    render_dist_exchange_wait(s->pending);   /* a failed or stopped render's exchange in flight */
+    for (int k = 0; k < 2; k++) {
+        free(s->slot[k].send);
+        free(s->slot[k].recv);
+        free(s->slot[k].sendcounts);
+        free(s->slot[k].recvcounts);
+    }
+    free(s->rank_of);
+    update_batch_scratch_free(&s->xs);
+    free(s->rhits);
+    free(s->rhit_ptr);
+    free(s->recvbuf);
 }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render_session.h: the render session's state, shared by the phases (render.c) and the
- * driver with its stopping rules and checkpoints (render_run.c). Private to model/ppm. */
+/* render_session.h: the render session's state, which its phases' modules share (render_run.c
+ * lists them in order, docs/engine.md "The render session"), and the small reads of it that
+ * several of them make. Private to model/ppm; each module's functions are in its own header. */
 #ifndef PREE_RENDER_SESSION_H
 #define PREE_RENDER_SESSION_H
 
@@ -78,32 +79,6 @@ struct render_session {
     unsigned long long bytes_sent;   /* this rank's bytes to the other ranks */
 };
 
-/* The photon pass's steps that render_round.c shares (render_trace.c, render_step.c): trace the
- * photons of sequence indices [first, first + count) into the block buffers' slot for block
- * `slot` of a batch, dropping hits that reach no hit point's cell when skipping (0, -1 out of
- * memory, or 1: stopped, the block abandoned); progress on stderr (a failed write only stops the
- * printing); whether the grid is re-filtered, and a re-filter now (0 or -1). */
-int render_trace_block(render_session_t *s, uint64_t first, uint64_t count, unsigned slot);
-void render_progress(render_session_t *s);
-int render_refilter_enabled(const render_session_t *s);
-/* A point of the re-filter schedule passed: the re-filter now (0 or -1, memory), or, when recording
- * the PREE's operations, render_refilter_due's flag raised for the caller. */
-int render_refilter_point(render_session_t *s);
-/* Screen the first `blocks` traced blocks (bb) with the session's T threads into their scratch
- * lists (`lists` of them), each kept candidate in list owner[hit point] (list 0 when owner is
- * NULL). 0 or -1 (memory). */
-int render_screen_block(render_session_t *s, const uint16_t *owner, int lists, unsigned blocks);
-
-/* More than one MPI rank (render_round.c): the partition (0, or -1 with err), a round of photon
- * blocks (1, 0 when ended, -1 with err), and every rank's state and counters to rank 0. */
-int render_round_open(render_session_t *s, char *err, size_t errlen);
-int render_round_step(render_session_t *s, char *err, size_t errlen);
-void render_round_close(render_session_t *s);
-
-/* The batch's cap (screen_blocks) from the scan and PREE_SCREEN_BLOCKS (render_step.c): 0, or
- * -1 with err for a value out of range. */
-int render_screen_blocks_set(render_session_t *s, char *err, size_t errlen);
-
 /* Photons between checkpoints (render_run.c writes one after the block that reaches it). */
 static inline uint64_t render_checkpoint_every(const render_options_t *opt)
 {
@@ -111,7 +86,17 @@ static inline uint64_t render_checkpoint_every(const render_options_t *opt)
 }
 
 /* The update counters summed over the threads. */
-update_stats_t render_session_update_totals(const render_session_t *s);
+static inline update_stats_t render_session_update_totals(const render_session_t *s)
+{
+    update_stats_t u = {0, 0, 0, 0};
+    for (int p = 0; p < s->T; p++) {
+        u.candidates += s->ust[p].candidates;
+        u.skipped_radius += s->ust[p].skipped_radius;
+        u.normal_passed += s->ust[p].normal_passed;
+        u.accepted += s->ust[p].accepted;
+    }
+    return u;
+}
 
 /* Where the photon pass stops next: the series' next point, or the end (render_step.c). */
 static inline uint64_t render_stop_at(const render_session_t *s)
@@ -119,18 +104,5 @@ static inline uint64_t render_stop_at(const render_session_t *s)
     return s->next_write < s->opt.write_at_n && s->opt.write_at[s->next_write] < s->emitted_target
          ? s->opt.write_at[s->next_write] : s->emitted_target;
 }
-
-/* The convergence series' point reached (render.c): the image and statistics of the photons
- * done handed to opt.snapshot, the state left as it was. 0, or -1 with err. */
-int render_session_snapshot(render_session_t *s, char *err, size_t errlen);
-
-/* Continue from opt.resume (render_open, after the grid): 0, or -1 with err. */
-int render_session_resume(render_session_t *s, char *err, size_t errlen);
-
-/* Fault injection for the regression (tests/checks/engine_interrupt.sh): with the environment
- * variable PREE_TEST_INTERRUPT=PHASE, raise SIGINT, through the program's handler, as PHASE
- * (bvh, eye, grid, or blockK: this run's K-th photon block) begins; with PREE_TEST_KILL=PHASE,
- * raise SIGKILL there instead (a crash: what survives is the last checkpoint). */
-void render_test_interrupt(const char *phase);
 
 #endif

@@ -6,7 +6,7 @@
 #include <unistd.h>
 #include "photon_pass.h"
 #include "render_dist.h"
-#include "render_session.h"
+#include "render_trace.h"
 
 /* Photon hits whose cell look-up is fetched ahead of the one being made. */
 #define BUCKET_AHEAD 8
