@@ -12,6 +12,7 @@
 
 #include AXI_MODEL_H
 #include "vharness.h"
+#include "vport.h"
 
 namespace {
 const unsigned SW = AXI_DP ? 320 : 160;   // state bits of a hit point
@@ -64,7 +65,7 @@ struct cosim_rtl {
         t.s_axis_ph_tvalid = a.ph_valid;
         uint64_t keep = 0;
         for (int j = 0; j < AXI_NP; j++) {
-            t.s_axis_cand_tdata[j] = a.cand[j];
+            vport::put32(t.s_axis_cand_tdata, 32 * j, a.cand[j]);   // a word of VlWide, or of QData (2 PREUs)
             if (a.cand_keep >> j & 1u) keep |= 0xfull << (4 * j);
         }
         t.s_axis_cand_tkeep = keep;

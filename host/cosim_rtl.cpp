@@ -12,58 +12,16 @@
 #include <cstring>
 
 #include "vharness.h"
+#include "vport.h"
+
+using vport::get;
+using vport::get32;
+using vport::put;
+using vport::put32;
 
 #ifndef COSIM_MODELS
 #error "COSIM_MODELS (the build's pree_top models) comes from mk/cosim.mk"
 #endif
-
-namespace {
-
-// Bit fields of a port: integral ports (up to 64 bits) and wide ports (VlWide).
-template <typename T>
-void put(T &port, unsigned lsb, unsigned w, uint64_t v)
-{
-    const uint64_t mask = (w >= 64 ? ~0ull : ((1ull << w) - 1)) << lsb;
-    port = static_cast<T>((static_cast<uint64_t>(port) & ~mask) | ((v << lsb) & mask));
-}
-template <std::size_t N>
-void put(VlWide<N> &port, unsigned lsb, unsigned w, uint64_t v)
-{
-    for (unsigned b = 0; b < w; b++) {
-        unsigned bit = lsb + b, word = bit / 32, off = bit % 32;
-        uint32_t x = port[word];
-        x = (x & ~(1u << off)) | (static_cast<uint32_t>((v >> b) & 1u) << off);
-        port[word] = x;
-    }
-}
-template <std::size_t N>
-void put32(VlWide<N> &port, unsigned lsb, uint32_t v)
-{
-    if (lsb % 32 == 0) port[lsb / 32] = v;
-    else put(port, lsb, 32, v);
-}
-template <typename T>
-uint64_t get(const T &port, unsigned lsb, unsigned w)
-{
-    return (static_cast<uint64_t>(port) >> lsb) & (w >= 64 ? ~0ull : ((1ull << w) - 1));
-}
-template <std::size_t N>
-uint64_t get(const VlWide<N> &port, unsigned lsb, unsigned w)
-{
-    uint64_t v = 0;
-    for (unsigned b = 0; b < w; b++) {
-        unsigned bit = lsb + b;
-        v |= static_cast<uint64_t>((port[bit / 32] >> (bit % 32)) & 1u) << b;
-    }
-    return v;
-}
-template <std::size_t N>
-uint32_t get32(const VlWide<N> &port, unsigned lsb)
-{
-    return lsb % 32 == 0 ? port[lsb / 32] : static_cast<uint32_t>(get(port, lsb, 32));
-}
-
-}  // namespace
 
 struct cosim_rtl {
     virtual ~cosim_rtl() {}
@@ -244,12 +202,11 @@ int cosim_rtl_ppc(cosim_rtl_t *r) { return r->ppc(); }
 
 int cosim_rtl_config(int preu, int *hp_bank_w, int *ppc)
 {
-    switch (preu) {
-    case 4: *hp_bank_w = COSIM_HPB_4; *ppc = COSIM_PPC_4; return 0;
-    case 8: *hp_bank_w = COSIM_HPB_8; *ppc = COSIM_PPC_8; return 0;
-    case 16: *hp_bank_w = COSIM_HPB_16; *ppc = COSIM_PPC_16; return 0;
-    default: return -1;
-    }
+#define X(NP) \
+    if (preu == (NP)) { *hp_bank_w = COSIM_HPB_##NP; *ppc = COSIM_PPC_##NP; return 0; }
+    COSIM_PREU_COUNTS
+#undef X
+    return -1;
 }
 void cosim_rtl_set_reset(cosim_rtl_t *r, int on) { r->set_reset(on); }
 

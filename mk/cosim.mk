@@ -12,7 +12,7 @@
 #                      opens on the first photon with markers on the first hazard stall and bank
 #                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
-#   make lint-top      verilator --lint-only -Wall for NumPreu 4, 8, 16, both datapaths, PipeFast 0 and 1,
+#   make lint-top      verilator --lint-only -Wall for NumPreu 2, 4, 8, 16, both datapaths, PipeFast 0 and 1,
 #                      PhotonsPerCycle 1 and NumPreu / 4
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table; SYNTH_TOP_PIPEFAST=1: the deep PREUs
 #
@@ -172,7 +172,7 @@ wave: $(COSIM_BENCH) $(BUILD)/pree $(BUILD)/pree-cosim-p4
 	@echo "gtkwave $(COSIM_DIR)/wave_$(TEST).gtkw"
 
 lint-top: | $(DEPS_STAMP)
-	@set -e; for f in 0 1; do for d in 0 1; do for p in $(COSIM_PREUS); do \
+	@set -e; for f in 0 1; do for d in 0 1; do for p in $(COSIM_ALL_PREUS); do \
 	  ws=1; if [ $$p -gt 4 ]; then ws="1 $$((p / 4))"; fi; for w in $$ws; do \
 	  echo "verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL)"; \
 	  verilator --lint-only -Wall -Irtl --top-module pree_top -GNumPreu=$$p -GDatapath=$$d -GPipeFast=$$f -GPhotonsPerCycle=$$w $(COSIM_RTL); done; done; done; done

@@ -66,8 +66,8 @@ $(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o 
 	@mkdir -p $$(@D)
 	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),))))
-$(foreach p,4 8 16,$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),q))))
+$(foreach p,$(COSIM_ALL_PREUS),$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),))))
+$(foreach p,$(COSIM_ALL_PREUS),$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),q))))
 
 $(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)

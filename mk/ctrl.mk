@@ -3,7 +3,8 @@
 # ADISO-REC (rtl/pree_adiso_rec.v, leaping addresses). C models, Verilator benches against them,
 # Icarus benches over their vectors, lint, Yosys synthesis, utilization. docs/controllers.md.
 #
-#   make ctrl-sim        Verilator + Icarus benches, NumPreu 4/8/16 (part of `make sim`)
+#   make ctrl-sim        Verilator benches, NumPreu 4/8/16; Icarus benches, NumPreu 2/4/8/16
+#                        (part of `make sim`)
 #   make ctrl-sim-full   longer random runs and more seeds (a few minutes)
 #   make ctrl-lint       verilator --lint-only -Wall, every configuration (part of `make lint`)
 #   make ctrl-synth      synth_xilinx resource lines in build/ctrl/synth.txt (part of `make synth`)
@@ -12,6 +13,9 @@
 
 CTRL_DIR      := $(BUILD)/ctrl
 CTRL_PREUS    := 4 8 16
+# The small PREU counts run in the Icarus benches only (no Verilated bench of their own), both
+# controllers and EarlyReady = 1 (pree_top's).
+CTRL_SMALL_PREUS := 2
 CTRL_EARLY    := 0 1
 CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel/pree
 CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/pree/aftso_rule.h
@@ -36,8 +40,8 @@ ctrl_cfg_ppc  = $(or $(call ctrl_cfg_word,$(1),w),1)
 CTRL_AFTSO_BENCHES := $(foreach c,$(CTRL_AFTSO_CFGS),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_AFTSO_BENCHES_ALL := $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(CTRL_DIR)/aftso_$(c)/aftso_bench)
 CTRL_ADISO_BENCHES := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/adiso_p$(p)/adiso_bench)
-CTRL_AFTSO_VVP     := $(foreach c,$(CTRL_AFTSO_STD),$(CTRL_DIR)/icarus/aftso_$(c).vvp)
-CTRL_ADISO_VVP     := $(foreach p,$(CTRL_PREUS),$(CTRL_DIR)/icarus/adiso_p$(p).vvp)
+CTRL_AFTSO_VVP     := $(foreach c,$(CTRL_SMALL_PREUS:%=p%_e1) $(CTRL_AFTSO_STD),$(CTRL_DIR)/icarus/aftso_$(c).vvp)
+CTRL_ADISO_VVP     := $(foreach p,$(CTRL_SMALL_PREUS) $(CTRL_PREUS),$(CTRL_DIR)/icarus/adiso_p$(p).vvp)
 CTRL_VECS          := $(CTRL_AFTSO_VVP:.vvp=.ncyc) $(CTRL_ADISO_VVP:.vvp=.ncyc)
 CTRL_TOOLS         := $(CTRL_DIR)/aftso_util $(CTRL_DIR)/aftso_vecgen $(CTRL_DIR)/adiso_vecgen $(CTRL_DIR)/adiso_seq
 CTRL_ALL           := $(CTRL_AFTSO_BENCHES) $(CTRL_ADISO_BENCHES) $(CTRL_AFTSO_VVP) $(CTRL_ADISO_VVP) \
@@ -103,8 +107,9 @@ $(CTRL_DIR)/icarus/adiso_p$(1).ncyc: $(CTRL_DIR)/adiso_vecgen
 endef
 $(foreach c,$(CTRL_AFTSO_CFGS_ALL),$(eval $(call CTRL_AFTSO_RULE,$(c),$(call ctrl_cfg_word,$(c),p),$(call ctrl_cfg_word,$(c),e),$(call ctrl_cfg_buf,$(c)),$(call ctrl_cfg_ppc,$(c)))))
 $(foreach p,$(CTRL_PREUS),$(foreach e,$(CTRL_EARLY),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),$(e)))))
+$(foreach p,$(CTRL_SMALL_PREUS),$(eval $(call CTRL_AFTSO_ICARUS_RULE,$(p),1)))
 $(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_RULE,$(p))))
-$(foreach p,$(CTRL_PREUS),$(eval $(call CTRL_ADISO_ICARUS_RULE,$(p))))
+$(foreach p,$(CTRL_SMALL_PREUS) $(CTRL_PREUS),$(eval $(call CTRL_ADISO_ICARUS_RULE,$(p))))
 
 # Simulation: every bench once (quick), then longer runs (full).
 ctrl-sim: ctrl-sim-verilator ctrl-sim-icarus

@@ -127,7 +127,9 @@ def gen_cosim_h(t):
         out += ["#define COSIM_HPB_%d %d" % (n, c["HpBankW"]),
                 "#define COSIM_PXB_%d %d" % (n, c["PxBankW"]),
                 "#define COSIM_PPC_%d %d" % (n, c["PhotonsPerCycle"])]
-    out += ["#define COSIM_MAX_PREU %d" % max(preus),
+    out += ["/* X(n) for each PREU count n with a configuration above. */",
+            "#define COSIM_PREU_COUNTS %s" % " ".join("X(%d)" % n for n in preus),
+            "#define COSIM_MAX_PREU %d" % max(preus),
             "#define COSIM_MAX_PPC %d /* photon slots (PhotonsPerCycle) of the widest model */"
             % max(c["PhotonsPerCycle"] for c in top["preus"].values()),
             "", "#endif", ""]
