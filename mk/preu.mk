@@ -55,12 +55,11 @@ $(PREU_DIR)/%.o: tb/preu/%.c $(PREU_HDRS) | $(DEPS_STAMP)
 	$(call say,CC,$@)$(CC) $(PREU_CFLAGS) -c $< -o $@
 
 lint-preu: | $(DEPS_STAMP)
-	for dp in $(PREU_DPS); do for pf in 0 1; do g="-GDatapath=$$dp -GPipeFast=$$pf"; \
-	  verilator --lint-only -Wall -Irtl $$g --top-module pree_preu $(PREU_SRCS) && \
-	  verilator --lint-only -Wall -Irtl $$g -DPREE_ASSERT --top-module pree_preu $(PREU_SRCS) && \
-	  verilator --lint-only -Wall -Irtl $$g -GTagW=1 --top-module pree_preu $(PREU_SRCS) && \
-	  verilator --lint-only -Wall -Irtl $$g -GTagW=8 --top-module pree_preu $(PREU_SRCS) || exit 1; \
-	done; done
+	@for dp in $(PREU_DPS); do for pf in 0 1; do g="-GDatapath=$$dp -GPipeFast=$$pf"; \
+	  for x in "" -DPREE_ASSERT -GTagW=1 -GTagW=8; do \
+	    cmd="verilator --lint-only -Wall -Irtl $$g $$x --top-module pree_preu $(PREU_SRCS)"; \
+	    $(call say_sh,LINT,pree_preu Datapath=$$dp PipeFast=$$pf $$x,$$cmd); $$cmd || exit 1; \
+	done; done; done
 
 # The Icarus vector generator (both datapaths).
 $(PREU_DIR)/preu_vecgen: $(PREU_DIR)/preu_vecgen.o $(PREU_C_OBJ)
@@ -135,12 +134,14 @@ sim-preu-chain: $(foreach dp,$(PREU_DPS),$(call preu_bench,$(dp)))
 # no combinational loops. synth-preu adds the 7-series figures (several minutes a datapath).
 yosys-check-preu: $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_check.ys | $(DEPS_STAMP)
 	@mkdir -p $(PREU_DIR)
-	for dp in $(PREU_DPS); do for pf in 0 1; do \
-	  yosys -q -l $(PREU_DIR)/check_dp$$dp-pf$$pf.log -p 'read_verilog -Irtl $(PREU_SRCS); chparam -set Datapath '$$dp' -set PipeFast '$$pf' pree_preu; script tb/preu/preu_check.ys' || exit 1; \
+	@for dp in $(PREU_DPS); do for pf in 0 1; do \
+	  cmd="yosys -q -l $(PREU_DIR)/check_dp$$dp-pf$$pf.log -p 'read_verilog -Irtl $(PREU_SRCS); chparam -set Datapath $$dp -set PipeFast $$pf pree_preu; script tb/preu/preu_check.ys'"; \
+	  $(call say_sh,YOSYS,preu/check_dp$$dp-pf$$pf,$$cmd); eval "$$cmd" || exit 1; \
 	done; done
 
 synth-preu: yosys-check-preu
-	for dp in $(PREU_DPS); do \
-	  yosys -q -l $(PREU_DIR)/synth_xilinx_dp$$dp.log -p 'read_verilog -Irtl $(PREU_SRCS); chparam -set Datapath '$$dp' pree_preu; synth_xilinx -family xc7 -top pree_preu -flatten -noiopad; tee -o $(PREU_DIR)/synth_xilinx_stat_dp'$$dp'.txt stat' || exit 1; \
+	@for dp in $(PREU_DPS); do \
+	  cmd="yosys -q -l $(PREU_DIR)/synth_xilinx_dp$$dp.log -p 'read_verilog -Irtl $(PREU_SRCS); chparam -set Datapath $$dp pree_preu; synth_xilinx -family xc7 -top pree_preu -flatten -noiopad; tee -o $(PREU_DIR)/synth_xilinx_stat_dp$$dp.txt stat'"; \
+	  $(call say_sh,SYNTH,preu/synth_xilinx_dp$$dp,$$cmd); eval "$$cmd" || exit 1; \
 	  echo "== datapath $$dp"; sed -n '/Number of cells/,$$p' $(PREU_DIR)/synth_xilinx_stat_dp$$dp.txt; \
 	done
