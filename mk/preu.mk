@@ -113,12 +113,12 @@ wave-preu: $(call preu_bench,$(PREU_WAVE_DP))
 
 # The mode-switch assertion must fire when the bench switches modes with operations in flight.
 sim-preu-badswitch: $(PREU_DIR)/preu_vec_bad.hex tb/preu/tb_preu.v $(PREU_SRCS)
-	iverilog -g2005 -DPREE_ASSERT -Irtl -s tb_preu -Ptb_preu.NOps=100 -Ptb_preu.BadSwitch=1 \
+	$(call say,IVERILOG,$(PREU_DIR)/tb_preu_badswitch.vvp)iverilog -g2005 -DPREE_ASSERT -Irtl -s tb_preu -Ptb_preu.NOps=100 -Ptb_preu.BadSwitch=1 \
 	  -Ptb_preu.VecFile='"$(PREU_DIR)/preu_vec_bad.hex"' -o $(PREU_DIR)/tb_preu_badswitch.vvp \
 	  tb/preu/tb_preu.v $(PREU_SRCS)
-	if vvp -N $(PREU_DIR)/tb_preu_badswitch.vvp >$(PREU_DIR)/badswitch.log 2>&1; then \
+	@if vvp -N $(PREU_DIR)/tb_preu_badswitch.vvp >$(PREU_DIR)/badswitch.log 2>&1; then \
 	  echo "sim-preu-badswitch: the run passed, but it switched modes while busy"; exit 1; fi
-	grep -q 'mode_i changed while operations were in flight' $(PREU_DIR)/badswitch.log || \
+	@grep -q 'mode_i changed while operations were in flight' $(PREU_DIR)/badswitch.log || \
 	  { tail -5 $(PREU_DIR)/badswitch.log; echo "sim-preu-badswitch: failed, but not by the assertion"; exit 1; }
 	@echo "sim-preu-badswitch: the mode-switch assertion fired as it must"
 

@@ -103,10 +103,10 @@ topiv_mfile = $(or $(TOPIV_FILE_$(1)),rtl/pree_top.v)
 define TOPIV_MUT_RULE
 $(TOPIV_DIR)/mut_$(1).vvp: tb/cosim/top_tb.v $(TOPIV_RTL) $(wildcard rtl/*.vh) mk/top_icarus.mk | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	sed "$(TOPIV_SED_$(1))" $(call topiv_mfile,$(1)) >$(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1)))
+	$$(call say,SED,$(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))))sed "$(TOPIV_SED_$(1))" $(call topiv_mfile,$(1)) >$(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1)))
 	@if cmp -s $(call topiv_mfile,$(1)) $(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))); then \
 	  echo "mutant $(1): the edit '$(TOPIV_SED_$(1))' no longer applies to $(call topiv_mfile,$(1))"; exit 1; fi
-	$(TOPIV_IVERILOG) $(TOPIV_PAR_$(TOPIV_CFG_$(TOPIV_RUN_$(1)))) -o $$@ tb/cosim/top_tb.v \
+	$$(call say,IVERILOG,$$@)$(TOPIV_IVERILOG) $(TOPIV_PAR_$(TOPIV_CFG_$(TOPIV_RUN_$(1)))) -o $$@ tb/cosim/top_tb.v \
 	  $(TOPIV_DIR)/mut_$(1)_$(notdir $(call topiv_mfile,$(1))) $(filter-out $(call topiv_mfile,$(1)),$(TOPIV_RTL))
 endef
 $(foreach c,$(TOPIV_CFGS),$(eval $(call TOPIV_CFG_RULE,$(c))))
