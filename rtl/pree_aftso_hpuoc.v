@@ -126,20 +126,23 @@ module pree_aftso_hpuoc #(
 `undef PREE_WIDTH_CAST
 
   // above(x, c) = x > c for a constant c < 2^LOW_W, as logic (upper bits not all zero, or the
-  // low bits above c) rather than a subtraction: it maps to two LUT levels, not a carry chain.
+  // low bits above c, compared bit by bit from the top against the constant) rather than a
+  // subtraction: it maps to two LUT levels, not a carry chain. (Written per bit, not as a match
+  // of every value above c, so that elaboration stays linear in LOW_W: Yosys takes minutes to
+  // inline the 2^LOW_W form at 16 lanes.)
   localparam LOW_W = $clog2(2 * NumPreu + 2);
   function above;
     input [ACC_W-1:0] x;
     input [31:0]      c;
-    integer v;
-    reg [ACC_W-1:0] hi;
-    reg [LOW_W-1:0] lo;
+    integer b;
+    reg eq;
     begin
-      hi    = x >> LOW_W;
-      lo    = x[LOW_W-1:0];
-      above = hi != {ACC_W{1'b0}};
-      for (v = 0; v < (1 << LOW_W); v = v + 1)
-        if (v > c && {{(32-LOW_W){1'b0}}, lo} == v) above = 1'b1;
+      above = (x >> LOW_W) != {ACC_W{1'b0}};
+      eq    = c < (1 << LOW_W);      // a larger c: the low bits are never above it
+      for (b = LOW_W - 1; b >= 0; b = b - 1) begin
+        if (!c[b]) above = above | (eq & x[b]);
+        eq = eq & (x[b] == c[b]);
+      end
     end
   endfunction
   // thermo(x): the flags of accuHP x, x > l for l = 0 .. NumPreu.
