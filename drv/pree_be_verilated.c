@@ -4,7 +4,11 @@
  * transactions, submitted beats wait in queues that are offered on the streams while the clock
  * runs (during every transaction and every wait), m_axis beats go to the armed buffer. With a gap
  * probability every offer is held back and every ready dropped at random, and candidate beats
- * carry a random number of candidates in random lanes (as `pree cosim --axi --gap`). */
+ * carry a random number of candidates in random lanes (as `pree cosim --axi --gap`). With a
+ * lead of L candidates, the photon stream starts (at the first beat and after each tlast) once
+ * the candidate stream has moved L candidates since the photon stream stopped, or has none
+ * waiting: the candidates stay ahead of the photons that need them. `pree cosim --axi` runs
+ * pree_drv through this back end on its own model (pree_be_verilated_attach). */
 #include "pree_be_verilated.h"
 
 #include <stdio.h>
@@ -26,7 +30,11 @@ typedef struct {
     int preu, state_words, ppc;   /* ppc: photon slots a beat */
     double gap;
     uint64_t rng, cycles;
+    int own_rtl;              /* close frees the model */
     wqueue_t q[3];            /* PREE_STREAM_HP, _PH, _CAND */
+    uint32_t lead;            /* candidates the photon stream waits for (0: none) */
+    int flowing;              /* a photon beat offered since the stream (re)started */
+    uint64_t cand_taken, lead_from;   /* candidates taken; the lead counts from lead_from */
     uint64_t *ph_last;        /* photon beat numbers with tlast, ascending */
     size_t nlast, last_head, last_cap;
     uint64_t ph_beats;        /* photon beats taken so far (the number of the queue's head) */
@@ -99,11 +107,19 @@ static void receive(vl_t *v, const cosim_axi_out_t *o)
     v->rx_got++;
 }
 
+/* 1 when the photon stream may offer a beat: it flows, or the candidates have their lead. */
+static int led(vl_t *v)
+{
+    if (v->flowing || !v->lead) return 1;
+    if (!avail(&v->q[PREE_STREAM_PH])) v->lead_from = v->cand_taken;   /* stopped: the lead counts from here */
+    return !avail(&v->q[PREE_STREAM_CAND]) || v->cand_taken - v->lead_from >= v->lead;
+}
+
 static void offer(vl_t *v)
 {
     cosim_axi_in_t *in = v->in;
     wqueue_t *q = &v->q[PREE_STREAM_PH];
-    if (!in->ph_valid && avail(q) && !gap(v)) {
+    if (!in->ph_valid && led(v) && avail(q) && !gap(v)) {
         for (int s = 0; s < v->ppc; s++) {
             const uint32_t *w = q->w + q->head + (size_t)s * PREE_PH_SLOT_WORDS;
             memcpy(in->ph[s].pos, w, sizeof in->ph[s].pos);
@@ -112,6 +128,7 @@ static void offer(vl_t *v)
         }
         in->ph_last = v->last_head < v->nlast && v->ph_last[v->last_head] == v->ph_beats;
         in->ph_valid = 1;
+        v->flowing = 1;
     }
     q = &v->q[PREE_STREAM_HP];
     if (!in->hp_valid && avail(q) && !gap(v)) {
@@ -152,11 +169,15 @@ static const cosim_axi_out_t *cycle(vl_t *v)
     if (o->fired & AXI_PH) {
         in->ph_valid = 0;
         v->q[PREE_STREAM_PH].head += (size_t)v->ppc * PREE_PH_SLOT_WORDS;
-        if (in->ph_last) v->last_head++;
+        if (in->ph_last) { v->last_head++; v->flowing = 0; }
         v->ph_beats++;
     }
     if (o->fired & AXI_HP) { in->hp_valid = 0; v->q[PREE_STREAM_HP].head += (size_t)v->state_words + 7; }
-    if (o->fired & AXI_CAND) { in->cand_valid = 0; v->q[PREE_STREAM_CAND].head += v->cand_take; }
+    if (o->fired & AXI_CAND) {
+        in->cand_valid = 0;
+        v->q[PREE_STREAM_CAND].head += v->cand_take;
+        v->cand_taken += v->cand_take;
+    }
     if (o->fired & AXI_M) receive(v, o);
     v->irq = o->irq;
     return o;
@@ -260,27 +281,41 @@ static const char *error(void *ctx) { return ((vl_t *)ctx)->err; }
 static void close_be(void *ctx)
 {
     vl_t *v = ctx;
-    cosim_rtl_free(v->rtl);
+    if (v->own_rtl) cosim_rtl_free(v->rtl);
     for (int s = 0; s < 3; s++) free(v->q[s].w);
     free(v->ph_last);
     free(v);
 }
 
+int pree_be_verilated_attach(pree_backend_t *be, cosim_rtl_t *rtl, int preu, int datapath, double gap_p,
+                             uint64_t seed, uint32_t lead)
+{
+    vl_t *v = calloc(1, sizeof *v);
+    if (!v) return -1;
+    v->rtl = rtl;
+    v->in = cosim_axi_in(rtl);
+    v->preu = preu;
+    v->state_words = datapath ? 10 : 5;
+    v->ppc = cosim_rtl_ppc(rtl);
+    v->gap = gap_p;
+    v->rng = seed * 2862933555777941757ull + 3037000493ull;
+    v->lead = lead;
+    *be = (pree_backend_t){.ctx = v, .reg_read = reg_read, .reg_write = reg_write, .submit = submit,
+                           .receive = receive_arm, .wait = wait_for, .error = error, .close = close_be};
+    return 0;
+}
+
 int pree_be_verilated_open(pree_backend_t *be, int preu, int datapath, double gap_p, uint64_t seed,
                            const char *fst, char *err, size_t errlen)
 {
-    vl_t *v = calloc(1, sizeof *v);
-    if (!v) { snprintf(err, errlen, "out of memory"); return -1; }
-    v->rtl = cosim_rtl_new(preu, datapath, 0, fst, err, errlen);
-    if (!v->rtl) { free(v); return -1; }
-    v->in = cosim_axi_in(v->rtl);
-    v->preu = preu;
-    v->state_words = datapath ? 10 : 5;
-    v->ppc = cosim_rtl_ppc(v->rtl);
-    v->gap = gap_p;
-    v->rng = seed * 2862933555777941757ull + 3037000493ull;
-    *be = (pree_backend_t){.ctx = v, .reg_read = reg_read, .reg_write = reg_write, .submit = submit,
-                           .receive = receive_arm, .wait = wait_for, .error = error, .close = close_be};
+    cosim_rtl_t *rtl = cosim_rtl_new(preu, datapath, 0, fst, err, errlen);
+    if (!rtl) return -1;
+    if (pree_be_verilated_attach(be, rtl, preu, datapath, gap_p, seed, 0)) {
+        cosim_rtl_free(rtl);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    ((vl_t *)be->ctx)->own_rtl = 1;
     return 0;
 }
 

@@ -26,6 +26,8 @@ struct pree_drv {
     pree_backend_t be;
     pree_config_t cfg;
     unsigned timeout_ms;
+    int cnt_work;        /* PREE_CNT_WORK: the driver switches CTRL.CNT_EN around the work */
+    int counting;        /* CTRL.CNT_EN as last written */
     uint32_t *buf;       /* packing buffer */
     size_t cap;          /* its words */
     char err[256];
@@ -108,11 +110,23 @@ static int require_idle(pree_drv_t *d, const char *what)
     return PREE_OK;
 }
 
-static int command(pree_drv_t *d, uint32_t cmd, const char *what)
+/* With PREE_CNT_WORK: the counters on or off (a CTRL write when that changes them). */
+static int count_work(pree_drv_t *d, int on)
+{
+    if (!d->cnt_work || d->counting == on) return PREE_OK;
+    d->counting = on;
+    return wr(d, OFF(CTRL), on ? BM(CTRL, CNT_EN) : 0);
+}
+
+/* A command and the wait for its interrupt; counted: with PREE_CNT_WORK, the counters on from
+ * the command's write until its interrupt is taken. */
+static int command(pree_drv_t *d, uint32_t cmd, const char *what, int counted)
 {
     int rc = require_idle(d, what);
+    if (!rc && counted) rc = count_work(d, 1);
     if (!rc) rc = wr(d, OFF(CMD), cmd);
     if (!rc) rc = wait_for(d, BM(IRQ_STATUS, CMD));
+    if (!rc && counted) rc = count_work(d, 0);
     return rc;
 }
 
@@ -166,7 +180,12 @@ void pree_set_timeout(pree_drv_t *d, unsigned timeout_ms) { d->timeout_ms = time
 int pree_reg_read(pree_drv_t *d, uint32_t offset, uint32_t *value) { return rd(d, offset, value); }
 int pree_reg_write(pree_drv_t *d, uint32_t offset, uint32_t value) { return wr(d, offset, value); }
 int pree_irq_enable(pree_drv_t *d, uint32_t mask) { return wr(d, OFF(IRQ_EN), mask); }
-int pree_counters_enable(pree_drv_t *d, int on) { return wr(d, OFF(CTRL), on ? BM(CTRL, CNT_EN) : 0); }
+int pree_counters_enable(pree_drv_t *d, int on)
+{
+    d->cnt_work = on == PREE_CNT_WORK;
+    d->counting = on == 1;
+    return wr(d, OFF(CTRL), d->counting ? BM(CTRL, CNT_EN) : 0);
+}
 
 int pree_set_constants(pree_drv_t *d, const pree_constants_t *c)
 {
@@ -246,6 +265,10 @@ int pree_send_photons(pree_drv_t *d, const pree_photon_t *ph, const uint32_t *ca
     }
     /* Chunks, photons before their candidates: a back end may hold one submission a stream. */
     size_t i = 0, c = 0;
+    if (n) {
+        const int rc = count_work(d, 1);
+        if (rc) return rc;
+    }
     while (i < n) {
         size_t j = i, m = 0;
         while (j < n && j - i < PH_CHUNK && m + ph[j].n_cand <= CAND_CHUNK) m += ph[j++].n_cand;
@@ -261,12 +284,15 @@ int pree_send_photons(pree_drv_t *d, const pree_photon_t *ph, const uint32_t *ca
  * once STATUS shows no batch pending and all idle. */
 int pree_end_batch(pree_drv_t *d)
 {
-    int rc = submit_photons(d, NULL, 0, NULL, 0, 1);
+    int rc = count_work(d, 1);
+    if (!rc) rc = submit_photons(d, NULL, 0, NULL, 0, 1);
     while (!rc) {
         uint32_t st;
         rc = wait_for(d, BM(IRQ_STATUS, BATCH));
+        if (!rc) rc = count_work(d, 0);
         if (!rc) rc = rd(d, OFF(STATUS), &st);
         if (!rc && !GET(st, STATUS, BATCH_PENDING) && GET(st, STATUS, IDLE)) break;
+        if (!rc) rc = count_work(d, 1);   /* an earlier tlast's interrupt: the batch goes on */
     }
     return rc;
 }
@@ -290,7 +316,7 @@ int pree_clear_pixels(pree_drv_t *d, uint32_t first, uint32_t n)
 {
     int rc = px_range(d, first, n);
     if (!rc) rc = set_range(d, OFF(PX_BASE), OFF(PX_COUNT), first, n);
-    return rc ? rc : command(d, CMD_PX_CLEAR, "clear pixels");
+    return rc ? rc : command(d, CMD_PX_CLEAR, "clear pixels", 0);
 }
 
 int pree_radiance(pree_drv_t *d, uint32_t n_hit, uint32_t ne, uint32_t first, uint32_t npix)
@@ -300,7 +326,7 @@ int pree_radiance(pree_drv_t *d, uint32_t n_hit, uint32_t ne, uint32_t first, ui
     if (!rc) rc = wr(d, OFF(NE), ne);
     if (!rc) rc = wr(d, OFF(N_HIT), n_hit);
     if (!rc) rc = pree_check_err(d);
-    return rc ? rc : command(d, CMD_RAD, "radiance pass");
+    return rc ? rc : command(d, CMD_RAD, "radiance pass", 1);
 }
 
 /* A read command of n beats from first into the packing buffer. */
@@ -310,7 +336,7 @@ static int read_cmd(pree_drv_t *d, uint32_t cmd, uint32_t base_off, uint32_t cou
     int rc = room(d, n * hw);
     if (!rc) rc = set_range(d, base_off, count_off, first, (uint32_t)n);
     if (!rc && d->be.receive(d->be.ctx, d->buf, n, hw, cmd == CMD_PX_READ)) rc = io_fail(d, "m_axis");
-    return rc ? rc : command(d, cmd, cmd == CMD_PX_READ ? "read pixels" : "read hit points");
+    return rc ? rc : command(d, cmd, cmd == CMD_PX_READ ? "read pixels" : "read hit points", 0);
 }
 
 int pree_read_hit_points(pree_drv_t *d, uint32_t first, pree_hit_point_t *hp, size_t n)

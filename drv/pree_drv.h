@@ -105,6 +105,11 @@ const char *pree_error(const pree_drv_t *d);
 const pree_config_t *pree_config(const pree_drv_t *d);
 
 int pree_set_constants(pree_drv_t *d, const pree_constants_t *c);
+/* on: 1 counting (CTRL.CNT_EN), 0 not; PREE_CNT_WORK: the driver counts the engine's work only,
+ * switching CNT_EN on as a batch's first photons go and off once its interrupt is taken
+ * (pree_send_photons .. pree_end_batch), and on around the radiance pass's command; the register
+ * traffic between (loads, reads, checks) is not counted. */
+#define PREE_CNT_WORK 2
 int pree_counters_enable(pree_drv_t *d, int on);
 /* IRQ_EN (bit 0 batch done, bit 1 command done). The driver waits through the back end's wait()
  * on irq_o, so both are on after pree_open; a mask without them leaves waits to time out. */

@@ -25,6 +25,7 @@
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
+AXI_DRV_OBJS := $(BUILD)/drv/pree_drv.o $(BUILD)/drv/pree_be_verilated.o
 AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
 AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
 # The quick builds (flavour q): the same models compiled with g++ -O0, for short co-simulations
@@ -61,6 +62,7 @@ $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.
 	  -DAXI_MODEL_H='"Vpree_axi_$(call cosim_tag,$(1),$(2)).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(findstring s,$(2)),1,0) \
 	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -DAXI_PPC=$(COSIM_PPC_$(1)) -c $$< -o $$@
 $(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \
+                          $(AXI_DRV_OBJS) \
                           $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) \
                           $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
 	@mkdir -p $$(@D)
@@ -68,6 +70,12 @@ $(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o 
 endef
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),))))
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,p s pf sf,$(eval $(call AXI_VL_RULE,$(p),$(d),q))))
+
+# `pree cosim --axi` drives the wrapper through pree_drv on the Verilated back end (mk/drv.mk
+# builds these objects).
+$(HOST_DIR)/cosim_axi.o: host/cosim_axi.c | $(DEPS_STAMP)
+	@mkdir -p $(@D)
+	$(call say,CC,$@)$(CC) $(COSIM_CFLAGS) -Idrv -c $< -o $@
 
 $(HOST_DIR)/cosim_main_axi.o: host/cosim_main.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # level: quick
-# The AXI4 wrapper against the C model: `pree cosim --axi` (build/pree-cosim-axi-p4: host/cosim_axi.c
-# driving rtl/pree_axi.v) on cornell3 32x24 / 3000 photons, 4 PREUs:
+# The AXI4 wrapper against the C model: `pree cosim --axi` (build/pree-cosim-axi-p4: pree_drv on
+# the Verilated rtl/pree_axi.v) on cornell3 32x24 / 3000 photons, 4 PREUs:
 #   - random back-pressure and gaps on every stream and AXI4-Lite channel (--gap 0.3, random
 #     candidate counts and lanes per beat), scheduled order;
 #   - no gaps, photon order (--no-schedule);
