@@ -18,12 +18,12 @@
  * (render_dist_lo: the distributed render's partition), at the local addresses i - lo[rank];
  * it is sent only the operations on them. Without mpirun (or with one rank): nranks 1, and
  * addr i (--layout spatial, the default: the same spatial order) or the eye pass's order
- * (--layout pixel: the model's own index after render_close). */
+ * (--layout pixel: the model's own index after render_radiance). */
 typedef struct {
     int nranks, rank;
     size_t *lo;                 /* nranks + 1 */
     uint32_t *addr;             /* photon-pass index -> this PREE's address, or OTHER_RANK */
-    uint32_t *model;            /* photon-pass index -> the model's index after render_close */
+    uint32_t *model;            /* photon-pass index -> the model's index after render_radiance */
     size_t n_local;
     int spatial;                /* addresses in the photon pass's spatial order (else model's) */
 } cosim_part_t;

@@ -242,16 +242,17 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
     return -1;
 }
 
-/* The engine's photon blocks and the RTL, driven from this loop: each block's operations (the
- * candidates that pass the host's tests) go to the RTL after the model applied them; at the
- * engine's re-filter points the host reads the radii back (cosim_refilter.h); then the RTL
- * drains. 0, or 1 on a failure (its message printed). */
+/* The engine's session phase by phase (render.h: open, eye pass, photon blocks, radiance, close)
+ * and the RTL, driven from this loop: each block's operations (the candidates that pass the
+ * host's tests) go to the RTL after the model applied them; at the engine's re-filter points the
+ * host reads the radii back (cosim_refilter.h); then the RTL drains. 0, or 1 on a failure (its
+ * message printed). */
 static int run_update(cosim_run_t *r)
 {
     char err[1024];
     const double t_start = now();
     render_session_t *rs = render_open(&r->scene, &r->opt, &r->res, err, sizeof err);
-    int rc = !rs ? -1 : 0, streamed = 0;
+    int rc = !rs ? -1 : render_eye_pass(rs, err, sizeof err), streamed = 0;
     if (rc == 0 && cosim_part_open(&r->part, r->res.hp.n, render_hp_address(rs))) {
         snprintf(err, sizeof err, "out of memory");
         rc = -1;
@@ -265,7 +266,8 @@ static int run_update(cosim_run_t *r)
             rc = -1;
     }
     if (rs) {
-        int rc2 = render_close(rs, err, sizeof err);
+        render_radiance(rs, err, sizeof err);
+        int rc2 = render_close(rs);
         if (rc == 0) rc = rc2;
     }
     r->rep.sec_engine = now() - t_start;

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render.c: the render session's open and close (render.h), which render_run.c and a caller
- * that steps the session itself (the co-simulation) share: render_open takes the set-up phases in
- * order (the session's own, the BVH and eye pass, the grid: render_setup.h; the photon pass's
- * counters; a resume: render_checkpoint.h); render_close gathers the MPI ranks' state
- * (render_round.h), frees the photon pass's memory, takes the radiance phase (render_radiance.h)
- * and releases the session.
+/* render.c: the render session's open and close (render.h), the first and last of its phases,
+ * which render_run.c and a caller that steps the session itself (the co-simulation) both call:
+ * render_open takes the session's own set-up (the options only it checks, the threads, the memory
+ * estimate, the image); render_close the times and peak memory of the whole and the release. The
+ * phases between are each in their module: the eye pass (render_eye_pass, render_setup.c), the
+ * photon rounds (render_step.c) and the radiance (render_radiance, render_radiance.c).
  *
  * The photon pass (render_step.c) runs in blocks: photons of a block are traced in parallel into
  * ordered chunk buffers, then each thread updates the hit points it owns from all of the block's
@@ -15,28 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include "mem_check.h"
-#include "render_checkpoint.h"
-#include "render_radiance.h"
 #include "render_round.h"
-#include "render_session.h"
-#include "render_setup.h"
-
-/* What only the photon pass uses: the grid, the traced hits and the candidate lists (freed before
- * the radiance pass, so that its peak does not add to theirs). */
-static void free_photon_pass(render_session_t *s)
-{
-    if (s->bb)
-        for (unsigned c = 0; c < TRACE_CHUNKS * SCREEN_BLOCKS_MAX; c++) photon_hits_free(&s->bb->chunk[c]);
-    grid_free(&s->grid);
-    update_prefilter_free(&s->prefilter);
-    update_batch_free(&s->batch);
-    if (s->scratch)
-        for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
-}
+#include "render_step.h"
 
 static void session_free(render_session_t *s)
 {
-    free_photon_pass(s);
+    render_photon_pass_free(s);
     free(s->bb);
     free(s->perm);
     free(s->owner);
@@ -84,20 +68,6 @@ static int open_session(render_session_t *s, char *err, size_t errlen)
     return 0;
 }
 
-/* The photon pass's target and the threads' update counters and candidate lists. 0, or -1 with
- * err. */
-static int open_photon_pass(render_session_t *s, char *err, size_t errlen)
-{
-    s->emitted_target = render_emitted(s->opt.photons);
-    s->ust = calloc((size_t)s->T, sizeof *s->ust);
-    s->scratch = calloc((size_t)s->T, sizeof *s->scratch);
-    if (!s->ust || !s->scratch) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    return 0;
-}
-
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                               char *err, size_t errlen)
 {
@@ -109,44 +79,22 @@ render_session_t *render_open(const scene_t *scene, const render_options_t *opt,
     s->res = res;
     s->t_start = omp_get_wtime();
     s->cpu_start = render_cpu_seconds();
-    const char *phase = "set-up";
-    if (open_session(s, err, errlen) ||
-        render_setup_eye(s, &phase, err, errlen) ||    /* BVH build, eye pass */
-        render_setup_grid(s, &phase, err, errlen) ||   /* spatial order, initial state, owners, grid */
-        open_photon_pass(s, err, errlen) ||
-        (opt->resume && render_checkpoint_resume(s, err, errlen)))
-        goto fail;
-    s->t_photons = omp_get_wtime();
+    if (open_session(s, err, errlen)) {
+        if (stop_requested(opt->interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the set-up");
+        session_free(s);
+        return NULL;
+    }
     return s;
-fail:
-    if (stop_requested(opt->interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the %s", phase);
-    session_free(s);
-    return NULL;
 }
 
 const update_ops_t *render_block_ops(const render_session_t *s) { return &s->ops; }
 
 const uint32_t *render_hp_address(const render_session_t *s) { return s->perm; }
 
-int render_close(render_session_t *s, char *err, size_t errlen)
+int render_close(render_session_t *s)
 {
-    render_result_t *res = s->res;
-    render_stats_t *st = &res->stats;
-    int rc = -1;
-    if (s->failed) goto done;
-    if (s->interrupted && !s->done_photons) { snprintf(err, errlen, STOP_MESSAGE " during the first photon block"); goto done; }
-    if (s->nranks > 1) {
-        st->upd = render_session_update_totals(s);
-        render_round_close(s);
-        if (s->rank) {   /* rank 0 evaluates and writes */
-            rc = s->interrupted ? 1 : 0;
-            goto done;
-        }
-    }
-    free_photon_pass(s);
-    if (render_radiance_pass(s, err, errlen)) goto done;
-    rc = s->interrupted ? 1 : 0;
-done:
+    render_stats_t *st = &s->res->stats;
+    const int rc = s->failed ? -1 : s->interrupted ? 1 : 0;
     st->sec_total = omp_get_wtime() - s->t_start;
     st->sec_cpu = render_cpu_seconds() - s->cpu_start;
     session_free(s);

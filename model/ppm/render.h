@@ -72,7 +72,7 @@ typedef struct {
     int write_at_n;
     int (*snapshot)(void *ctx, const render_result_t *res, char *err, size_t errlen);
     void *snapshot_ctx;
-    const char *resume;      /* render_open: continue from this checkpoint */
+    const char *resume;      /* render_eye_pass: continue from this checkpoint */
     uint64_t max_memory;     /* bytes the render may hold (mem_check.h); 0: RLIMIT_AS and MemAvailable */
     int record_ops;          /* fp32: record each block's PREE operations (render_block_ops); the
                               * update then runs photon-major on one thread */
@@ -143,12 +143,14 @@ long render_peak_rss_kb(void);
 double render_cpu_seconds(void);
 void render_stats_scene(render_stats_t *st, const scene_t *scene);
 
-/* The same render driven step by step by its caller, who may look at each block's operations:
- *   render_open       eye pass, initial state, grid; NULL with err on failure (res is then to
- *                     be freed by render_result_free). res->hp holds the hit points in the
- *                     photon pass's order from here until render_close.
+/* The same render driven phase by phase by its caller, who may look at each block's operations:
+ *   render_open       the session's own set-up (options, threads, memory, image); NULL with err
+ *                     on failure
+ *   render_eye_pass   BVH, eye pass, initial state, grid, a resume: 0, or -1 with err (res is
+ *                     then to be freed by render_result_free). res->hp holds the hit points in
+ *                     the photon pass's order from here until render_radiance.
  *   render_hp_address photon-pass index -> hit-point address (the order of res->hp before
- *                     render_open reordered it and after render_close restores it)
+ *                     render_eye_pass reordered it and after render_radiance restores it)
  *   render_step       trace and apply the next photon block: 1 (a block done), 0 (no block
  *                     left, or interrupted), -1 with err
  *   render_block_ops  with opt->record_ops: the last block's operations, in photon order
@@ -159,16 +161,19 @@ void render_stats_scene(render_stats_t *st, const scene_t *scene);
  *                     binary32 radius squared of hit point i in the photon pass's order (a
  *                     NaN: not known, kept); with the stable datapath preu_stable_screen_r2 of
  *                     its w. 0, or -1 with err
- *   render_close      radiance, hashes; releases the session; returns as render_run */
+ *   render_radiance   radiance, hashes: 0, or -1 with err (nothing done after a failed phase)
+ *   render_close      releases the session; returns as render_run (-1 after a failed phase) */
 typedef struct render_session render_session_t;
 render_session_t *render_open(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                               char *err, size_t errlen);
+int render_eye_pass(render_session_t *s, char *err, size_t errlen);
 const uint32_t *render_hp_address(const render_session_t *s);
 int render_step(render_session_t *s, char *err, size_t errlen);
 const update_ops_t *render_block_ops(const render_session_t *s);
 int render_refilter_due(const render_session_t *s);
 int render_refilter_from(render_session_t *s, const uint32_t *r2_bits, char *err, size_t errlen);
-int render_close(render_session_t *s, char *err, size_t errlen);
+int render_radiance(render_session_t *s, char *err, size_t errlen);
+int render_close(render_session_t *s);
 void render_result_free(render_result_t *res);
 
 /* The alpha a render uses: opt->alpha, or UPDATE_ALPHA when it is 0 (not set). */

@@ -6,7 +6,7 @@
 
 #include "render_session.h"
 
-/* Continue from opt.resume (render_open, after the grid): the state, the photons done and the
+/* Continue from opt.resume (render_eye_pass, after the grid): the state, the photons done and the
  * pass counters. 0, or -1 with err. */
 int render_checkpoint_resume(render_session_t *s, char *err, size_t errlen);
 

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render_radiance.c: the session's radiance phase (see render_radiance.h): the photon pass's
- * totals, the hit points back in address order, the radiance of each into its pixel through the
- * PREE's radiance pass (model/ppm/radiance.h), the result checks and the hashes. */
+/* render_radiance.c: the session's radiance phase (render_radiance, render.h) and the series'
+ * images (render_radiance.h): under MPI the ranks' state gathered to rank 0 (render_round.h), the
+ * photon pass's memory freed (render_step.h), then the photon pass's totals, the hit points back
+ * in address order, the radiance of each into its pixel through the PREE's radiance pass
+ * (model/ppm/radiance.h), the result checks and the hashes. */
 #include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -9,6 +11,8 @@
 #include "radiance.h"
 #include "render_check.h"
 #include "render_radiance.h"
+#include "render_round.h"
+#include "render_step.h"
 
 /* The PREE (or board) whose radiance pass the fp32 image reproduces (opt: preu, pipe_fast, layout,
  * prees). With
@@ -86,7 +90,9 @@ int render_radiance_snapshot(render_session_t *s, char *err, size_t errlen)
     return rc;
 }
 
-int render_radiance_pass(render_session_t *s, char *err, size_t errlen)
+/* The end of the photon pass: its counters into the statistics, the hit points back in address
+ * order, their radiance into res->rgb, the hashes. 0, or -1 with err. */
+static int radiance_pass(render_session_t *s, char *err, size_t errlen)
 {
     render_result_t *res = s->res;
     pass_totals(s);
@@ -95,4 +101,25 @@ int render_radiance_pass(render_session_t *s, char *err, size_t errlen)
         return -1;
     }
     return evaluate(s, res->stats.photons_emitted, err, errlen);
+}
+
+int render_radiance(render_session_t *s, char *err, size_t errlen)
+{
+    if (s->failed) return -1;
+    if (s->interrupted && !s->done_photons) {
+        snprintf(err, errlen, STOP_MESSAGE " during the first photon block");
+        s->failed = 1;
+        return -1;
+    }
+    if (s->nranks > 1) {
+        s->res->stats.upd = render_session_update_totals(s);
+        render_round_close(s);
+        if (s->rank) return 0;   /* rank 0 evaluates and writes */
+    }
+    render_photon_pass_free(s);
+    if (radiance_pass(s, err, errlen)) {
+        s->failed = 1;
+        return -1;
+    }
+    return 0;
 }

@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render_run.c: a whole render, the session's phases in order (docs/engine.md, "The render
- * session"): open (render.c: the options, the BVH and eye pass, the grid, a resume), the photon
- * rounds (render_step.c, under MPI render_round.c) with the convergence series' points, the
- * checkpoints (render_checkpoint.h) and the time limit, then the radiance and the close
- * (render.c).
+/* render_run.c: a whole render, the session's five phases in order (docs/engine.md, "The render
+ * session"): open, eye pass (render.c, with render_setup.c: the BVH, the hit points, the grid, a
+ * resume), the photon rounds (render_step.c, under MPI render_round.c) with the convergence
+ * series' points, the checkpoints (render_checkpoint.h) and the time limit, the radiance and the
+ * close (render.c, with render_radiance.c).
  *
  * Each hit point receives its photons in index order whatever the blocks, so an interrupted,
  * time-limited or resumed render holds the same bits as an uninterrupted one of the same photon
@@ -14,10 +14,11 @@
 #include "render_session.h"
 
 /* The photon rounds until the last photon, an interrupt, the time limit or a failure (s->failed,
- * with err): a series' image at each of its points, a checkpoint every checkpoint_every photons,
+ * with err; nothing after a failed eye pass): a series' image at each of its points, a checkpoint every checkpoint_every photons,
  * and one when the photon pass ends or stops. */
 static void photon_rounds(render_session_t *s, char *err, size_t errlen)
 {
+    if (s->failed) return;
     const render_options_t *opt = &s->opt;
     const uint64_t every = render_checkpoint_every(opt);
     while (s->next_write < opt->write_at_n && opt->write_at[s->next_write] <= s->done_photons) s->next_write++;
@@ -48,8 +49,10 @@ static void photon_rounds(render_session_t *s, char *err, size_t errlen)
 int render_run(const scene_t *scene, const render_options_t *opt, render_result_t *res,
                char *err, size_t errlen)
 {
-    render_session_t *s = render_open(scene, opt, res, err, errlen);   /* set-up, BVH, eye pass, grid */
+    render_session_t *s = render_open(scene, opt, res, err, errlen);   /* options, threads, image */
     if (!s) return -1;
+    render_eye_pass(s, err, errlen);   /* BVH, hit points, grid, a resume */
     photon_rounds(s, err, errlen);
-    return render_close(s, err, errlen);   /* radiance, hashes; -1 after a failed step, with its message */
+    render_radiance(s, err, errlen);   /* radiance, hashes */
+    return render_close(s);            /* -1 after a failed phase, with its message in err */
 }

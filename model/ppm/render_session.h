@@ -59,7 +59,8 @@ struct render_session {
     int refilter_due;        /* recording the PREE's operations: such a point passed, the caller's
                               * re-filter (render_refilter_from) not yet made */
     uint64_t fingerprint;    /* checkpoint_fingerprint, with a checkpoint or a resume */
-    int failed;              /* a step failed: close only releases */
+    int failed;              /* a phase or step failed: the later phases do nothing, close only
+                              * releases */
     /* More than one MPI rank (render_round.c, docs/scale_out.md): rank `rank` of `nranks` owns
      * the hit points [own_lo[rank], own_lo[rank + 1]) of the spatial order (rank_of[i]: hit point
      * i's rank); the others' are in part T, which no thread applies. */

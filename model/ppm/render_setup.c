@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render_setup.c: the session's set-up phases (see render_setup.h): the BVH and the eye pass,
- * then the grid: the initial radius, the hit points in spatial order with their initial state,
- * their owning threads (and ranks, render_round.h) and the grid of their cells. */
+/* render_setup.c: the session's eye pass (render_eye_pass, render.h), in its steps (see
+ * render_setup.h): the BVH and the eye pass, then the grid: the initial radius, the hit points in
+ * spatial order with their initial state, their owning threads (and ranks, render_round.h) and
+ * the grid of their cells; then the photon pass's counters (render_step.h) and a resume
+ * (render_checkpoint.h). */
 #include <math.h>
 #include <omp.h>
 #include <stdio.h>
@@ -11,6 +13,7 @@
 #include "cpu_features.h"
 #include "hp_order.h"
 #include "mem_check.h"
+#include "render_checkpoint.h"
 #include "render_round.h"
 #include "render_setup.h"
 #include "render_step.h"
@@ -156,5 +159,20 @@ int render_setup_grid(render_session_t *s, const char **phase, char *err, size_t
     st->hit_point_bytes = hitpoints_bytes_each(&res->hp);
     st->grid_entry_bytes = GRID_ENTRY_BYTES;
     st->sec_grid = omp_get_wtime() - t;
+    return 0;
+}
+
+int render_eye_pass(render_session_t *s, char *err, size_t errlen)
+{
+    const char *phase = "set-up";
+    if (render_setup_eye(s, &phase, err, errlen) ||    /* BVH build, eye pass */
+        render_setup_grid(s, &phase, err, errlen) ||   /* spatial order, initial state, owners, grid */
+        render_photon_pass_open(s, err, errlen) ||
+        (s->opt.resume && render_checkpoint_resume(s, err, errlen))) {
+        if (stop_requested(s->opt.interrupt)) snprintf(err, errlen, STOP_MESSAGE " during the %s", phase);
+        s->failed = 1;
+        return -1;
+    }
+    s->t_photons = omp_get_wtime();
     return 0;
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-/* render_setup.h: the session's set-up phases, in the order render_open takes them
- * (render_setup.c). Each sets *phase to the name of the step under way (an interrupt's message
+/* render_setup.h: the eye pass's steps, in the order render_eye_pass (render.h, also in
+ * render_setup.c) takes them. Each sets *phase to the name of the step under way (an interrupt's message
  * says where it stopped) and returns 0, or -1 with err. */
 #ifndef PREE_RENDER_SETUP_H
 #define PREE_RENDER_SETUP_H

@@ -200,6 +200,33 @@ static int step_batch(render_session_t *s, char *err, size_t errlen)
     return n ? 1 : 0;
 }
 
+/* The photon pass's target and the threads' update counters and candidate lists. 0, or -1 with
+ * err. */
+int render_photon_pass_open(render_session_t *s, char *err, size_t errlen)
+{
+    s->emitted_target = render_emitted(s->opt.photons);
+    s->ust = calloc((size_t)s->T, sizeof *s->ust);
+    s->scratch = calloc((size_t)s->T, sizeof *s->scratch);
+    if (!s->ust || !s->scratch) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    return 0;
+}
+
+/* What only the photon pass uses: the grid, the traced hits and the candidate lists (freed before
+ * the radiance pass, so that its peak does not add to theirs). */
+void render_photon_pass_free(render_session_t *s)
+{
+    if (s->bb)
+        for (unsigned c = 0; c < TRACE_CHUNKS * SCREEN_BLOCKS_MAX; c++) photon_hits_free(&s->bb->chunk[c]);
+    grid_free(&s->grid);
+    update_prefilter_free(&s->prefilter);
+    update_batch_free(&s->batch);
+    if (s->scratch)
+        for (int p = 0; p < s->T; p++) update_batch_scratch_free(&s->scratch[p]);
+}
+
 int render_step(render_session_t *s, char *err, size_t errlen)
 {
     if (s->nranks > 1) {
