@@ -7,7 +7,7 @@ Reads <dir>/pree_ulx3s.json (the netlist nextpnr placed), <dir>/pree_ulx3s.stat.
 cell counts), and per seed <dir>/seed<N>.report.json (nextpnr --report) and seed<N>.time (wall,
 user and system seconds). Prints three Markdown tables: Fmax per seed with the critical path
 (nextpnr's worst register-to-register path of the core clock: its start and end registers and
-their RTL source lines, its delay split into logic and routing, its cells by type) and nextpnr's
+their RTL source lines, its delay split into logic and routing, its logic levels and cells by type) and nextpnr's
 run time; the placed design's use of every resource of the part (nextpnr, first seed); Yosys's
 cell counts.
 """
@@ -42,9 +42,9 @@ def path_summary(path, types):
     routes = [e for e in path if e["type"] == "routing"]
     start, end = reg_name(path[0]["from"]["cell"]), reg_name(path[-1]["to"]["cell"])
     cells = ", ".join("%d %s" % (n, t) for t, n in sorted(count.items(), key=lambda x: -x[1]))
-    return "%s (%s) -> %s (%s): %.2f ns (%.2f logic, %.2f routing); %s" % (
+    return "%s (%s) -> %s (%s): %.2f ns (%.2f logic, %.2f routing); %d logic levels: %s" % (
         start, src(routes[0]) if routes else "?", end, src(routes[-1]) if routes else "?",
-        logic + route, logic, route, cells or "no logic cell")
+        logic + route, logic, route, sum(count.values()), cells or "no logic cell")
 
 
 def main():
