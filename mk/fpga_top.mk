@@ -6,8 +6,9 @@
 # seed; ecppack of the first seed's result), scripts/fpga_top_report.py writes the tables.
 # Outside `make test`: hours of one core (docs/fpga_board.md).
 #
-#   make fpga-pnr-top                       everything: $(FPGA_TOP_DIR)/pree_ulx3s.bit and
-#                                           $(FPGA_TOP_DIR)/report.md
+#   make fpga-pnr-top                       everything: $(FPGA_TOP_DIR)/pree_ulx3s.bit,
+#                                           $(FPGA_TOP_DIR)/report.md and the first seed's
+#                                           floorplan, $(FPGA_TOP_DIR)/floorplan.png
 #   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 1)
 #   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters (default: the
 #                                           configuration of docs/fpga_board.md)
@@ -29,7 +30,7 @@ $(shell mkdir -p $(FPGA_TOP_DIR) && { echo '$(FPGA_TOP_PARAMS)' | cmp -s - $(FPG
 endif
 
 .PHONY: fpga-pnr-top
-fpga-pnr-top: $(FPGA_TOP_DIR)/pree_ulx3s.bit $(FPGA_TOP_DIR)/report.md
+fpga-pnr-top: $(FPGA_TOP_DIR)/pree_ulx3s.bit $(FPGA_TOP_DIR)/report.md $(FPGA_TOP_DIR)/floorplan.png
 	@cat $(FPGA_TOP_DIR)/report.md
 
 $(FPGA_TOP_DIR)/pree_axi.json: $(shell grep -v '^//' rtl/pree.f) $(wildcard rtl/*.vh) rtl/pree.f \
@@ -44,6 +45,9 @@ $(FPGA_TOP_DIR)/seed%.config: $(FPGA_TOP_DIR)/pree_ulx3s.json constraints/pree_u
 
 $(FPGA_TOP_DIR)/pree_ulx3s.bit: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config
 	$(FPGA_TOP_RUN) pack $(FPGA_TOP_DIR) $(FPGA_TOP_FIRST)
+
+$(FPGA_TOP_DIR)/floorplan.png: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config scripts/fpga_floorplan.py
+	python3 scripts/fpga_floorplan.py $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json $@
 
 $(FPGA_TOP_DIR)/report.md: $(foreach s,$(FPGA_TOP_SEEDS),$(FPGA_TOP_DIR)/seed$(s).config) scripts/fpga_top_report.py
 	python3 scripts/fpga_top_report.py $(FPGA_TOP_DIR) $(FPGA_TOP_SEEDS) > $@.tmp && mv $@.tmp $@

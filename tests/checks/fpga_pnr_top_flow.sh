@@ -6,7 +6,8 @@
 # ports and the 25 MHz FREQUENCY on the clock; the board top lints (verilator -Wall, the EHXPLLL's
 # ports from Yosys's ECP5 cell library in the tools' venv); and the UART bridge, in front of the
 # real pree_axi (rtl/board/pree_uart_axi.v), passes its bench (tb/board/uart_bridge_tb.v, Icarus: register reads and writes,
-# hit points pushed and read back through CMD 2, the overrun flag).
+# hit points pushed and read back through CMD 2, the overrun flag); the floorplan script
+# (scripts/fpga_floorplan.py) draws a three-cell placed design and refuses an unplaced one.
 # cost: 40 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
@@ -52,3 +53,32 @@ run iverilog -g2005 -Irtl -o "$TMP/bridge.vvp" -s uart_bridge_tb -c rtl/pree.f $
 echo "+ vvp -N $TMP/bridge.vvp"
 vvp -N "$TMP/bridge.vvp" >"$TMP/bridge.log" 2>&1 || { tail -5 "$TMP/bridge.log"; fail "uart_bridge_tb failed: vvp -N $TMP/bridge.vvp"; }
 grep "uart_bridge_tb: PASS" "$TMP/bridge.log" || fail "uart_bridge_tb: no PASS line: $(tail -3 "$TMP/bridge.log")"
+# The floorplan of the routed design (scripts/fpga_floorplan.py) on a three-cell design: the
+# PNG has the part's grid, each tile coloured by the part with the most cells in it; a design
+# without placement is refused without a half-written picture.
+cat > "$TMP/routed.json" <<'JSON'
+{"modules": {"pree_ulx3s": {"cells": {
+  "u_link.u_pree.u_top.g_preu[1].u_preu.a": {"attributes": {"NEXTPNR_BEL": "X3/Y2/SLICEA"}},
+  "u_link.u_pree.u_top.g_preu[1].u_preu.b": {"attributes": {"NEXTPNR_BEL": "X3/Y2/SLICEB"}},
+  "u_link.u_pree.u_top.u_hpmem.c": {"attributes": {"NEXTPNR_BEL": "X3/Y2/SLICEC"}}}}}}
+JSON
+run python3 scripts/fpga_floorplan.py "$TMP/routed.json" "$TMP/fp.png" > "$TMP/fp.txt"
+python3 - "$TMP/fp.png" <<'PY' || fail "scripts/fpga_floorplan.py: wrong picture $TMP/fp.png"
+import struct, sys, zlib
+b = open(sys.argv[1], "rb").read()
+w, h = struct.unpack(">II", b[16:24])
+n = struct.unpack(">I", b[33:37])[0]
+raw = zlib.decompress(b[41:41 + n])
+px = lambda x, y: tuple(raw[y * (3 * w + 1) + 1 + 3 * x:][:3])
+assert (w, h) == (127 * 6, 96 * 6), (w, h)
+assert px(3 * 6, 2 * 6) == (0, 170, 80), px(3 * 6, 2 * 6)      # PREU 1 holds 2 of the 3 cells
+assert px(4 * 6, 2 * 6) == (225, 225, 225), px(4 * 6, 2 * 6)   # an empty tile
+print("ok: floorplan %d x %d, tile X3/Y2 PREU 1's colour" % (w, h))
+PY
+echo '{"modules": {"pree_ulx3s": {"cells": {"a": {"attributes": {}}}}}}' > "$TMP/unplaced.json"
+if python3 scripts/fpga_floorplan.py "$TMP/unplaced.json" "$TMP/none.png" 2> "$TMP/err.txt"; then
+  fail "scripts/fpga_floorplan.py drew a design without placement"
+fi
+[ ! -e "$TMP/none.png" ] && [ ! -e "$TMP/none.png.tmp" ] || fail "fpga_floorplan.py left a picture behind"
+grep -q "no placed cell" "$TMP/err.txt" || fail "fpga_floorplan.py: no one-line error: $(cat "$TMP/err.txt")"
+echo "ok: unplaced design refused: $(cat "$TMP/err.txt")"
