@@ -16,7 +16,7 @@
 
 FPGA_TOP_DIR    ?= $(BUILD)/fpga-top
 FPGA_TOP_SEEDS  ?= 1
-FPGA_TOP_PARAMS ?= NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=1
+FPGA_TOP_PARAMS ?= NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
 FPGA_TOP_RUN     = PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_TOP_PARAMS="$(FPGA_TOP_PARAMS)" \
                    nice -n 10 scripts/fpga_pnr_top.sh
 FPGA_TOP_BOARD  := rtl/pree_reset_sync.v $(wildcard rtl/board/*.v)

@@ -28,7 +28,7 @@ set -euo pipefail
 step=$1; dir=$2
 cd "$(dirname "$0")/.."
 mkdir -p "$dir"
-params=${FPGA_TOP_PARAMS:-NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=1}
+params=${FPGA_TOP_PARAMS:-NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0}
 axi_names="NumPreu HpAW HpBankW IdxAW PxAW PxBankW CntW Datapath PipeFast PhFifoAW RingAW CountW"   # pree_uart_axi passes them on
 board_rtl="rtl/pree_reset_sync.v rtl/board/pree_uart_rx.v rtl/board/pree_uart_tx.v rtl/board/pree_uart_bridge.v rtl/board/pree_uart_axi.v rtl/board/pree_ulx3s.v"
 
