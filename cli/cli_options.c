@@ -170,8 +170,8 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
         opt->photons = (uint64_t)v;
         return 0;
     case CLI_PREU:
-        if (cli_int(a, 2, 16, &v)) return 2;
-        if (v & (v - 1)) return cli_error(a, "--preu: %lld is not 2, 4, 8 or 16", v);
+        if (cli_int(a, 1, 16, &v)) return 2;
+        if (v & (v - 1)) return cli_error(a, "--preu: %lld is not 1, 2, 4, 8 or 16", v);
         opt->preu = (int)v;
         return 0;
     case CLI_THREADS:

@@ -73,7 +73,7 @@ static void render_usage(FILE *f)
         "                         or scalar (an absent one is an error); the same bits at every level\n"
         "  --preu P               fp32: the PREE whose radiance pass the image reproduces bit for bit\n"
         "  --pipe-fast            (the order of each pixel's additions, docs/pree_top.md): its PREU count\n"
-        "  --layout L             (2, 4, 8 or 16, default 4), its deep PREU pipelines (PipeFast = 1), its\n"
+        "  --layout L             (1, 2, 4, 8, 16; default 4), its deep PREU pipelines (PipeFast = 1), its\n"
         "                         hit-point layout (spatial, the default, or pixel); 'pree cosim' with\n"
         "                         the same scene and options writes the same image\n"
         "  --prees N              fp32: the image of a board of N such PREEs, each holding its run of\n"

@@ -2,7 +2,7 @@
 /* main.c: the `pree` program: git-style subcommands over the PREE reference engine.
  *
  * `pree cosim` is a program of its own (host/, built with the Verilated RTL only when asked):
- * one per RTL configuration, build/pree-cosim-p2 .. -p16 (paper datapath) and -s2 .. -s16
+ * one per RTL configuration, build/pree-cosim-p1 .. -p16 (paper datapath) and -s1 .. -s16
  * (stable), with an f after the count for PipeFast = 1 (-p4f). `pree cosim ...` runs the one its
  * --preu, --datapath and --pipe-fast name, from the directory this program lives in, with the
  * same arguments. */
@@ -44,7 +44,8 @@ static int run_cosim(int argc, char **argv)
         else if (i + 1 < argc && !strcmp(argv[i], "--preu")) preu = argv[++i];
         else if (i + 1 < argc && !strcmp(argv[i], "--datapath")) dp = argv[++i];
     }
-    if (strcmp(preu, "2") && strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16")) preu = "4";
+    if (strcmp(preu, "1") && strcmp(preu, "2") && strcmp(preu, "4") && strcmp(preu, "8") && strcmp(preu, "16"))
+        preu = "4";
     const char d = strcmp(dp, "stable") ? 'p' : 's';
     char self[PATH_MAX], path[PATH_MAX + 32];
     ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);

@@ -17,7 +17,7 @@ static void cosim_usage(FILE *f)
         "usage: pree cosim SCENE [options]\n"
         "  --width W --height H --photons N --grid G --no-skip --threads T   as for 'pree render'\n"
         "                         (--threads: the eye pass and the double reference render)\n"
-        "  --preu P               PREUs in the RTL: 2, 4, 8 or 16 (default 4)\n"
+        "  --preu P               PREUs in the RTL: 1, 2, 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
         "  --trace FILE.fst       write an FST waveform of the whole run (slow)\n"

@@ -45,8 +45,10 @@
 /* The load port's lead, in index entries (candidates): in a scheduled stream the first photon
  * waits until this many (or every queued one) are written, and the host keeps this many queued
  * (docs/cosim.md, "The scheduler": what AFTSO-HpUOC buffers comes out of the lead; through
- * the wrapper, docs/integration.md, the candidate stream runs this far ahead of the photons). */
-#define COSIM_LEAD_ENTRIES(np) (64u * (uint32_t)(np))
+ * the wrapper, docs/integration.md, the candidate stream runs this far ahead of the photons).
+ * 64 x NumPreu, and never below 4 PREUs' 256: a photon with more candidates than the lead,
+ * written NumPreu a cycle, reaches the RTL later than the scheduler's model planned. */
+#define COSIM_LEAD_ENTRIES(np) (64u * (uint32_t)((np) > 4 ? (np) : 4))
 
 #include <stddef.h>
 #include <stdint.h>

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cosim_rtl.h: a C interface to the Verilated pree_top (rtl/pree_top.v), one model per PREU
- * count (2, 4, 8, 16), datapath (0 paper, 1 stable) and PipeFast (0, 1), built by mk/cosim.mk with
+ * count (1, 2, 4, 8, 16), datapath (0 paper, 1 stable) and PipeFast (0, 1), built by mk/cosim.mk with
  * the parameters below (the stable datapath's models only for the counts in
  * COSIM_STABLE_PREUS, the PipeFast = 1 models only for those in COSIM_FAST_PREUS).
  *

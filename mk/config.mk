@@ -47,6 +47,9 @@ FP32_DEEP := add_fast mul_fast sqr_fast div_fast wacc_fast u2f_fast div2 div12 d
 # photons a cycle; the PREU counts with models; the regression's models (paper, stable and
 # PipeFast 1 counts, further tags, and the AXI wrapper's).
 COSIM_WIDTH_PARAMS := -GHpAW=18 -GIdxAW=12 -GPxAW=17 -GCntW=16
+COSIM_HPB_1 := 4
+COSIM_PXB_1 := 2
+COSIM_PPC_1 := 1
 COSIM_HPB_2 := 5
 COSIM_PXB_2 := 3
 COSIM_PPC_2 := 1
@@ -59,7 +62,7 @@ COSIM_PPC_8 := 2
 COSIM_HPB_16 := 8
 COSIM_PXB_16 := 6
 COSIM_PPC_16 := 4
-COSIM_ALL_PREUS := 2 4 8 16
+COSIM_ALL_PREUS := 1 2 4 8 16
 COSIM_DATAPATHS := p s
 COSIM_PREUS := 4 8 16
 COSIM_STABLE_PREUS ?= 4

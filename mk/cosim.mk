@@ -12,7 +12,7 @@
 #                      opens on the first photon with markers on the first hazard stall and bank
 #                      conflicts (scripts/wave-view.py, which also lists their cycles); t = cosim (cornell3 32x24,
 #                      2k photons) or one of the bench scenarios: random, one, dense, mixed
-#   make lint-top      verilator --lint-only -Wall for NumPreu 2, 4, 8, 16, both datapaths, PipeFast 0 and 1,
+#   make lint-top      verilator --lint-only -Wall for NumPreu 1, 2, 4, 8, 16, both datapaths, PipeFast 0 and 1,
 #                      PhotonsPerCycle 1 and NumPreu / 4
 #   make synth-top     Yosys synth_xilinx of pree_top, NumPreu 4 (small memories): resource table; SYNTH_TOP_PIPEFAST=1: the deep PREUs
 #

@@ -15,7 +15,7 @@ CTRL_DIR      := $(BUILD)/ctrl
 CTRL_PREUS    := 4 8 16
 # The small PREU counts run in the Icarus benches only (no Verilated bench of their own), both
 # controllers and EarlyReady = 1 (pree_top's).
-CTRL_SMALL_PREUS := 2
+CTRL_SMALL_PREUS := 1 2
 CTRL_EARLY    := 0 1
 CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel/pree
 CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/pree/aftso_rule.h

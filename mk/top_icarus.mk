@@ -17,18 +17,23 @@ TOPIV_IVERILOG := iverilog -g2005 -Wall -DPREE_ASSERT -Irtl -s top_tb
 
 # Configurations: pree_top parameters (bench side) and the matching vecgen geometry.
 # HpAW/IdxAW/PxAW as the vectors were written; HpBankW/PxBankW are the bench's choice.
-TOPIV_CFGS := p2 p4 p8 p16
+TOPIV_CFGS := p1 p2 p4 p8 p16
+TOPIV_GEOM_p1  := --preu 1 --hp-aw 10 --idx-aw 7 --px-aw 9
 TOPIV_GEOM_p2  := --preu 2 --hp-aw 10 --idx-aw 7 --px-aw 9
 TOPIV_GEOM_p4  := --preu 4 --hp-aw 10 --idx-aw 7 --px-aw 9
 TOPIV_GEOM_p8  := --preu 8 --hp-aw 11 --idx-aw 8 --px-aw 10
 TOPIV_GEOM_p16 := --preu 16 --hp-aw 11 --idx-aw 8 --px-aw 10
+TOPIV_PAR_p1   := -P top_tb.NumPreu=1 -P top_tb.HpAW=10 -P top_tb.HpBankW=1 -P top_tb.IdxAW=7 -P top_tb.PxAW=9 -P top_tb.PxBankW=1
 TOPIV_PAR_p2   := -P top_tb.NumPreu=2 -P top_tb.HpAW=10 -P top_tb.HpBankW=2 -P top_tb.IdxAW=7 -P top_tb.PxAW=9 -P top_tb.PxBankW=1
 TOPIV_PAR_p4   := -P top_tb.NumPreu=4 -P top_tb.HpAW=10 -P top_tb.HpBankW=3 -P top_tb.IdxAW=7 -P top_tb.PxAW=9 -P top_tb.PxBankW=2
 TOPIV_PAR_p8   := -P top_tb.NumPreu=8 -P top_tb.HpAW=11 -P top_tb.HpBankW=4 -P top_tb.IdxAW=8 -P top_tb.PxAW=10 -P top_tb.PxBankW=3
 TOPIV_PAR_p16  := -P top_tb.NumPreu=16 -P top_tb.HpAW=11 -P top_tb.HpBankW=5 -P top_tb.IdxAW=8 -P top_tb.PxAW=10 -P top_tb.PxBankW=4
 
 # Runs: configuration, vecgen scenario arguments, bench plusargs (gap percent, seed).
-TOPIV_RUNS := p2_mixed p4_random p4_one p4_dense p4_mixed p4_abank p8_random p8_dense p16_random
+TOPIV_RUNS := p1_mixed p2_mixed p4_random p4_one p4_dense p4_mixed p4_abank p8_random p8_dense p16_random
+TOPIV_CFG_p1_mixed   := p1
+TOPIV_ARG_p1_mixed   := --scenario mixed --photons 16 --hp 120 --seed 11
+TOPIV_PLUS_p1_mixed  := +gap=20 +seed=11
 TOPIV_CFG_p2_mixed   := p2
 TOPIV_ARG_p2_mixed   := --scenario mixed --photons 24 --hp 120 --place random --seed 10
 TOPIV_PLUS_p2_mixed  := +gap=20 +seed=10

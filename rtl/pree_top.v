@@ -40,10 +40,10 @@
 `default_nettype none
 
 module pree_top #(
-  parameter NumPreu = 4,    // PREUs (a power of two, >= 2)
+  parameter NumPreu = 4,    // PREUs (a power of two: 1, 2, 4, ...)
   parameter HpAW    = 18,   // hit-point address bits
   parameter HpBankW = 4,    // log2 of the hit-point banks (1 .. HpAW/2)
-  parameter IdxAW   = 12,   // index-table address bits (> log2 NumPreu)
+  parameter IdxAW   = 12,   // index-table address bits (> log2 NumPreu, > 1)
   parameter PxAW    = 17,   // pixel address bits
   parameter PxBankW = 4,    // log2 of the pixel banks (1 .. PxAW-1)
   parameter CntW    = 16,   // bits of a photon's candidate count N^P
@@ -101,9 +101,12 @@ module pree_top #(
 `include "pree_hp_bank.vh"
 
   localparam LANE_W    = $clog2(NumPreu);
-  localparam IDX_ROW_W = IdxAW - LANE_W;
+  // The index table's banks: NumPreu, and two for one PREU, so that no bank field is zero bits wide.
+  localparam IDX_BANK_W = (LANE_W > 0) ? LANE_W : 1;
+  localparam IDX_BANKS  = 1 << IDX_BANK_W;
+  localparam IDX_ROW_W  = IdxAW - IDX_BANK_W;
   localparam KEY_W     = HpAW > PxAW ? HpAW : PxAW;          // hazard key: hit point or pixel
-  localparam ABANK_W   = LANE_W > HpBankW ? LANE_W : HpBankW; // stage-A bank number
+  localparam ABANK_W   = IDX_BANK_W > HpBankW ? IDX_BANK_W : HpBankW; // stage-A bank number
   localparam BBANK_W   = HpBankW > PxBankW ? HpBankW : PxBankW; // stage-B bank number
   localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
   localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
@@ -137,8 +140,8 @@ module pree_top #(
     if (StateW != ((Datapath != 0) ? 320 : 160)) begin : g_bad_statew
       pree_top_statew_is_set_by_datapath u_fail ();
     end
-    if ((1 << LANE_W) != NumPreu || NumPreu < 2) begin : g_bad_numpreu
-      pree_top_numpreu_must_be_a_power_of_two_at_least_2 u_fail ();
+    if ((1 << LANE_W) != NumPreu) begin : g_bad_numpreu
+      pree_top_numpreu_must_be_a_power_of_two u_fail ();
     end
   endgenerate
 
@@ -188,8 +191,8 @@ module pree_top #(
   wire                       a_short;
   wire                       a_go;        // A may read (PipeFast 0: B empties in this cycle)
 
-  pree_top_offer #(.Reg(A_REG), .NumPreu(NumPreu), .IdxAW(IdxAW), .HpAW(HpAW), .HpBankW(HpBankW),
-                   .BankW(ABANK_W), .DataW(PH_W)) u_offer (
+  pree_top_offer #(.Reg(A_REG), .NumPreu(NumPreu), .IdxAW(IdxAW), .IdxBankW(IDX_BANK_W), .HpAW(HpAW),
+                   .HpBankW(HpBankW), .BankW(ABANK_W), .DataW(PH_W)) u_offer (
     .clk_i(clk_i), .rst_ni(rst_ni), .mode_i(mode_i), .pop_i(a_all), .full_o(a_full), .af_valid_i(af_valid),
     .af_ref_i(af_ref), .af_last_i(af_last), .af_data_i(af_data), .ad_valid_i(ad_valid),
     .ad_addr_i(ad_addr), .valid_o(a_valid), .idx_o(a_idx), .hp_o(a_hp), .bank_o(a_bank),
@@ -201,17 +204,17 @@ module pree_top #(
     .photons_done_o(photons_done_o));
 
   // ===============================================================================================
-  // Index table: NumPreu banks; bank = address mod NumPreu (its low LANE_W bits). A's lanes read
-  // it (update mode), the load port's lanes write it. The bank outputs are an array, so that a
-  // lane's selection is an NumPreu:1 multiplexer on an LANE_W-bit index.
-  wire [HpAW-1:0]         idx_rd [0:NumPreu-1];
-  wire [NumPreu*HpAW-1:0] idx_rdata;
+  // Index table: IDX_BANKS banks (NumPreu; 2 for one PREU); bank = the address's low IDX_BANK_W
+  // bits. A's lanes read it (update mode), the load port's lanes write it. The bank outputs are an
+  // array, so that a lane's selection is an IDX_BANKS:1 multiplexer on an IDX_BANK_W-bit index.
+  wire [HpAW-1:0]           idx_rd [0:IDX_BANKS-1];
+  wire [IDX_BANKS*HpAW-1:0] idx_rdata;
 
-  pree_ram_banks #(.BankW(LANE_W), .RowW(IDX_ROW_W), .Width(HpAW), .Lanes(NumPreu)) u_idx (
+  pree_ram_banks #(.BankW(IDX_BANK_W), .RowW(IDX_ROW_W), .Width(HpAW), .Lanes(NumPreu)) u_idx (
     .clk_i(clk_i), .rd_i(a_rd & {NumPreu{~mode_i}}), .rd_addr_i(a_idx), .wr_i(idx_we_i),
     .wr_addr_i(idx_addr_i), .wr_data_i(idx_data_i), .rdata_o(idx_rdata));
   generate
-    for (gb = 0; gb < NumPreu; gb = gb + 1) begin : g_idx
+    for (gb = 0; gb < IDX_BANKS; gb = gb + 1) begin : g_idx
       assign idx_rd[gb] = idx_rdata[gb*HpAW +: HpAW];
     end
   endgenerate
@@ -272,7 +275,7 @@ module pree_top #(
   always @* begin : r_lanes
     integer l;
     for (l = 0; l < NumPreu; l = l + 1) begin
-      r_hp[l*HpAW +: HpAW]          = idx_rd[b_abank_q[l*ABANK_W +: LANE_W]];
+      r_hp[l*HpAW +: HpAW]          = idx_rd[b_abank_q[l*ABANK_W +: IDX_BANK_W]];
       r_key[l*KEY_W +: KEY_W]       = {KEY_W{1'b0}};
       r_bank[l*BBANK_W +: BBANK_W]  = {BBANK_W{1'b0}};
       r_rec[l*REC_W +: REC_W]       = {REC_W{1'b0}};
@@ -442,8 +445,8 @@ module pree_top #(
       for (a = 0; a < NumPreu; a = a + 1)
         for (b = 0; b < a; b = b + 1)
           if (idx_we_i[a] && idx_we_i[b] &&
-              idx_addr_i[a*IdxAW +: LANE_W] == idx_addr_i[b*IdxAW +: LANE_W])
-            $fatal(1, "pree_top: two index writes in bank %0d", idx_addr_i[a*IdxAW +: LANE_W]);
+              idx_addr_i[a*IdxAW +: IDX_BANK_W] == idx_addr_i[b*IdxAW +: IDX_BANK_W])
+            $fatal(1, "pree_top: two index writes in bank %0d", idx_addr_i[a*IdxAW +: IDX_BANK_W]);
     end
   end
 `endif

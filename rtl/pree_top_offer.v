@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // pree_top_offer: the offer stage A reads (docs/pree_top.md, "Pipeline, memories and hazards"):
 // the controller's lanes (update: AFTSO-HpUOC's index-entry addresses and photons; radiance:
-// ADISO-REC's hit-point addresses) with each lane's bank (update: the index table's, the address
-// mod NumPreu; radiance: the hit-point memory's, hp_bank of the address).
+// ADISO-REC's hit-point addresses) with each lane's bank (update: the index table's, the address's
+// low IdxBankW bits; radiance: the hit-point memory's, hp_bank of the address).
 // Reg = 1 (PipeFast 1): a two-offer buffer. Slot 0 is the offer A reads (from flip-flops); slot 1
 // holds one more. The controller's offer is taken whenever slot 1 is free (full_o low, a
 // register), and stored when it has a valid lane; A leaves slot 0 once it has read every lane of
@@ -16,9 +16,10 @@ module pree_top_offer #(
   parameter Reg     = 1,    // 1 the register, 0 none
   parameter NumPreu = 4,    // lanes
   parameter IdxAW   = 12,   // index-table address bits
+  parameter IdxBankW = 2,   // log2 of the index-table banks (pree_top: log2 NumPreu, at least 1)
   parameter HpAW    = 18,   // hit-point address bits
   parameter HpBankW = 4,    // log2 of the hit-point banks
-  parameter BankW   = 4,    // a lane's bank number: the wider of log2 NumPreu and HpBankW
+  parameter BankW   = 4,    // a lane's bank number: the wider of IdxBankW and HpBankW
   parameter DataW   = 192   // a lane's photon (update)
 ) (
   input  wire                       clk_i,
@@ -44,7 +45,6 @@ module pree_top_offer #(
 
 `include "pree_hp_bank.vh"
 
-  localparam LANE_W = $clog2(NumPreu);
   localparam ADDR_W = IdxAW > HpAW ? IdxAW : HpAW;   // a lane's address, either kind
 
   // The controller's lanes: valid, address and bank.
@@ -61,7 +61,7 @@ module pree_top_offer #(
         bank[l*BankW +: HpBankW] = hp_bank(ad_addr_i[l*HpAW +: 2*HpBankW]);
       end else begin
         addr[l*ADDR_W +: IdxAW]  = af_ref_i[l*IdxAW +: IdxAW];
-        bank[l*BankW +: LANE_W]  = af_ref_i[l*IdxAW +: LANE_W];
+        bank[l*BankW +: IdxBankW] = af_ref_i[l*IdxAW +: IdxBankW];
       end
     end
   end

@@ -81,7 +81,7 @@ static int parse_args(int argc, char **argv, vecgen_opts_t *o)
         else { fprintf(stderr, "top_vecgen: unknown option %s\n", a); return 2; }
     }
     const int bad_sc = draw_scenario(o->scenario, &o->sc);
-    if (!o->out || bad_sc || o->preu < 2 || o->preu > 64 || (o->preu & (o->preu - 1)) || o->hp_aw < 4 ||
+    if (!o->out || bad_sc || o->preu < 1 || o->preu > 64 || (o->preu & (o->preu - 1)) || o->hp_aw < 4 ||
         o->hp_aw > 24 || o->idx_aw < 6 || o->idx_aw > 16 || o->px_aw < 2 || o->px_aw > 24 || o->photons < 1) {
         fprintf(stderr, "usage: top_vecgen --preu P --hp-aw A --idx-aw I --px-aw X [--scenario "
                         "random|one|dense|mixed] [--photons N] [--hp N] [--seed S] [--place packed|random] OUT\n");
