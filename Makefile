@@ -10,6 +10,11 @@ SHELL := /bin/bash
 BUILD   ?= build
 OUT     ?= out
 THREADS ?= 2
+# The C++ optimisation of the unit-bench models (PREU, controllers, fp32 units): -O1 on the code
+# that runs every cycle and -O0 on the rest compiles in about a third of the CPU time of
+# Verilator's default -Os, and the benches run as fast (the deep stable PREU bench: 129 -> 43 CPU s
+# to build, 3.9 s for 50,000 operations either way).
+VL_BENCH_OPT := -MAKEFLAGS "OPT_FAST=-O1 OPT_SLOW=-O0 OPT_GLOBAL=-O0"
 
 # Compiler flags. -ffp-contract=off and no fast-math are part of the bit-exactness contract:
 # the fp32 model must round every operation exactly once, as the RTL does.

@@ -21,10 +21,10 @@ CTRL_CFLAGS   := -std=c11 -O2 -g $(WARN) -Itb/ctrl -Imodel/pree
 CTRL_HDR      := $(wildcard tb/ctrl/*.h) model/pree/aftso_rule.h
 AFTSO_RTL     := rtl/pree_aftso_hpuoc.v
 ADISO_RTL     := rtl/pree_adiso_rec.v
-# Verilator: -O3 and the default output split favour simulation speed (OPT_FAST in the manual);
+# Verilator: -O3 and the default output split favour simulation speed; VL_BENCH_OPT (Makefile) the build time;
 # X values are randomised so that a missing reset shows up as a mismatch; PREE_ASSERT turns on
 # the RTL's simulation-only invariant checks.
-CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) --x-assign unique --x-initial unique +define+PREE_ASSERT
+CTRL_VERILATE := verilator --cc --exe --build -O3 -j $(THREADS) $(VL_BENCH_OPT) --x-assign unique --x-initial unique +define+PREE_ASSERT
 
 # AFTSO configurations pP_eE[_bB][_wW]: NumPreu P, EarlyReady E, BufDepth B (default 4),
 # PhotonsPerCycle W (default 1). The regression runs EarlyReady = 1 (the default) for every

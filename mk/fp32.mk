@@ -72,7 +72,7 @@ $(FP32_DIR)/fp32_vecgen: tb/fp32/fp32_vecgen.c $(FP32_DIR)/fp32_gen.o $(FP32_GEN
 define FP32_UNIT_RULES
 $(FP32_DIR)/vl_$(1)/fp32_bench_$(1): $(FP32_RTL) tb/fpga/MULT18X18D.v tb/fp32/fp32_bench.cpp $(VHARNESS) $(FP32_DIR)/fp32_gen.o $(FP32_GEN_DEPS)
 	@mkdir -p $$(@D)
-	$$(call say,VERILATE,$$@)verilator --cc --exe --build -O3 -j 1 --x-assign unique --x-initial unique $(3) \
+	$$(call say,VERILATE,$$@)verilator --cc --exe --build -O3 -j 1 $(VL_BENCH_OPT) --x-assign unique --x-initial unique $(3) \
 	  -Mdir $(FP32_DIR)/vl_$(1) --top-module $(call fp32_top,$(2)) -y rtl rtl/$(call fp32_top,$(2)).v \
 	  $(abspath tb/fp32/fp32_bench.cpp) $(abspath $(FP32_DIR)/fp32_gen.o) \
 	  -CFLAGS "-O2 -DFP32_UNIT_$(shell echo $(2) | tr a-z A-Z) $(4) -I$(abspath tb/fp32) -I$(abspath model) $(VHARNESS_INC)" \

@@ -73,7 +73,7 @@ $(PREU_DIR)/preu_vec_bad.hex: $(PREU_DIR)/preu_vecgen
 define PREU_DP_RULES
 $(call preu_bench,$(1)): $(PREU_SRCS) $(PREU_RTL) tb/preu/preu_bench.cpp $(VHARNESS) $(PREU_HDRS) $(PREU_C_OBJ) | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
-	$$(call say,VERILATE,$$@)verilator --cc --exe --build -j 2 -O3 --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
+	$$(call say,VERILATE,$$@)verilator --cc --exe --build -j 2 -O3 $(VL_BENCH_OPT) --trace-fst -Irtl -DPREE_ASSERT --top-module pree_preu \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -Mdir $(PREU_DIR)/vl_dp$(1) -o preu_bench \
 	  -CFLAGS "-O2 $(FPFLAGS) -DPREU_DATAPATH=$(call preu_dp,$(1)) $(patsubst -I%,-I$(CURDIR)/%,$(MODEL_INC)) -I$(CURDIR)/tb/preu $(VHARNESS_INC)" \
 	  $(PREU_SRCS) $(CURDIR)/tb/preu/preu_bench.cpp $(abspath $(PREU_C_OBJ)) >$(PREU_DIR)/vl-build-dp$(1).log 2>&1 \
@@ -91,7 +91,7 @@ sim-preu-iv-dp$(1): $(PREU_DIR)/tb_preu_dp$(1)_$(PREU_IV_N)_$(PREU_SEED).vvp
 
 $(PREU_DIR)/vlbin_dp$(1)/tb_preu_$(PREU_IV_N)_$(PREU_SEED): tb/preu/tb_preu.v $(PREU_SRCS) $(PREU_RTL) $(call preu_hex,$(call preu_dp,$(1)))
 	@mkdir -p $$(@D)
-	$$(call say,VERILATE,$$@)verilator --binary --timing -j 2 -Irtl -DPREE_ASSERT --top-module tb_preu -GNOps=$(PREU_IV_N) \
+	$$(call say,VERILATE,$$@)verilator --binary --timing -j 2 $(VL_BENCH_OPT) -Irtl -DPREE_ASSERT --top-module tb_preu -GNOps=$(PREU_IV_N) \
 	  -GDatapath=$(call preu_dp,$(1)) -GPipeFast=$(call preu_pf,$(1)) -GVecFile='"$(call preu_hex,$(call preu_dp,$(1)))"' -Mdir $(PREU_DIR)/vlbin_dp$(1) \
 	  -o tb_preu_$(PREU_IV_N)_$(PREU_SEED) tb/preu/tb_preu.v $(PREU_SRCS) >$(PREU_DIR)/vlbin-build-dp$(1).log 2>&1 \
 	  || { tail -30 $(PREU_DIR)/vlbin-build-dp$(1).log; exit 1; }

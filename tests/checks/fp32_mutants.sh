@@ -45,7 +45,7 @@ for m in "${mutants[@]}"; do
     echo "mutant $i ($what): the edit did not apply to rtl/$file"; fail=1; continue
   fi
   U=$(echo "$unit" | tr a-z A-Z); top=$(top_of "$unit")
-  build=(verilator --cc --exe --build -O0 -j 1 -Mdir "$dir/vl" --top-module "$top"
+  build=(verilator --cc --exe --build -O0 -j 1 -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0" -Mdir "$dir/vl" --top-module "$top"
          -y "$dir/rtl" "$dir/rtl/$top.v" "$PWD/tb/fp32/fp32_bench.cpp" "$PWD/build/fp32/fp32_gen.o"
          -CFLAGS "-O0 -DFP32_UNIT_$U -I$PWD/tb/fp32 -I$PWD/model -I$PWD/tb/lib" -o bench)
   if ! "${build[@]}" >"$dir/build.log" 2>&1; then
