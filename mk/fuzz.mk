@@ -5,7 +5,7 @@
 #   make fuzz [FUZZ_TIME=600]  each harness FUZZ_TIME seconds on a working corpus in
 #                              build/fuzz/corpus-NAME (seeded from tests/fuzz/corpus/NAME);
 #                              a crash is saved as build/fuzz/crash-NAME-* and fails the target
-# The short run inside make test: tests/checks/fuzz_short.sh (30 s a harness).
+# The short run inside make test: tests/checks/fuzz_short.sh (20 s a harness).
 FUZZ_CC    ?= clang-14
 FUZZ_DIR   := $(BUILD)/fuzz
 FUZZ_NAMES := scene mesh pbrt

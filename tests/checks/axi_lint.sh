@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The integration kit's filelist and the AXI4 wrapper: rtl/pree.f names every rtl/*.v once;
-# verilator --lint-only -Wall of pree_axi through it (NumPreu 1, 2, 4, 8, 16; both datapaths; the wrapper
-# bench's narrow counts; 2, 4 and 8 photons a beat; PipeFast 1 and unit stages; out-of-range
-# parameters refused by name); Icarus
-# (-g2005) elaborates pree_axi and pree_reset_sync through it.
+# verilator --lint-only -Wall of pree_axi through it (NumPreu 1, 2, 4, 8, 16 and both datapaths, which
+# is also pree_top's lint in its paper configuration, see top_lint.sh; the wrapper bench's narrow
+# counts; 2, 4 and 8 photons a beat; PipeFast 1 and unit stages; out-of-range parameters refused by
+# name); Icarus (-g2005) elaborates pree_axi and pree_reset_sync through it.
 # cost: 70 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"

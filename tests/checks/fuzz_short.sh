@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The short fuzz run of make test: each libFuzzer harness (tests/fuzz, make fuzz for long runs)
-# for FUZZ_SHORT seconds (default 30) on a copy of its seed corpus. Fails on any crash, hang
+# for FUZZ_SHORT seconds (default 20) on a copy of its seed corpus. Fails on any crash, hang
 # (10 s a unit), leak or sanitizer report, naming the input that gave it.
-# cost: 93 (its seconds in a serial run; the runner starts costly checks first)
+# cost: 63 (its seconds in a serial run; the runner starts costly checks first)
 . "$(dirname "$0")/../lib/check.sh"
-secs=${FUZZ_SHORT:-30}
+secs=${FUZZ_SHORT:-20}
 export LSAN_OPTIONS=suppressions=$ROOT/tests/lsan.supp:print_suppressions=0
 for n in scene mesh pbrt; do
   bin="$ROOT/build/fuzz/fuzz_$n"
