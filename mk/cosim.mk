@@ -43,7 +43,7 @@ VERILATOR_ROOT_DIR := $(shell verilator --getenv VERILATOR_ROOT 2>/dev/null)
 # $(1): PREU count, $(2): p (paper) or s (stable), with f for PipeFast = 1 (pf, sf); the model's
 # tag (p4, s4, p4f, ...) names its directory, its class and its program.
 cosim_tag     = $(subst f,,$(2))$(1)$(findstring f,$(2))
-COSIM_MDIR    = $(COSIM_DIR)/vl2_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
+COSIM_MDIR    = $(COSIM_DIR)/vl2$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
 COSIM_GPARAMS = -GNumPreu=$(1) $(COSIM_WIDTH_PARAMS) \
                 -GHpBankW=$(COSIM_HPB_$(1)) -GPxBankW=$(COSIM_PXB_$(1)) -GPhotonsPerCycle=$(COSIM_PPC_$(1)) \
                 -GDatapath=$(if $(findstring s,$(2)),1,0) -GPipeFast=$(if $(findstring f,$(2)),1,0)
@@ -67,7 +67,7 @@ COSIM_PROGS  := $(foreach m,$(COSIM_MODELS),$(BUILD)/pree-cosim-$(call cosim_mta
 # which holds the public WIN_UPD), and COSIM_MODELS, the list the host instantiates its template
 # from, X(class, PREU count, datapath, PipeFast) each.
 cosim_cls    = Vpree_top_$(call cosim_mtag,$(1))
-cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m))) \
+cosim_models = $(foreach m,$(1),-isystem $(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)),$(2)) \
                  -include $(call cosim_cls,$(m)).h -include $(call cosim_cls,$(m))_pree_top.h) \
                '-DCOSIM_MODELS=$(foreach m,$(1),X($(call cosim_cls,$(m)),$(call cosim_n,$(m)),$(if $(findstring s,$(call cosim_d,$(m))),1,0),$(if $(findstring f,$(call cosim_d,$(m))),1,0)))'
 
@@ -78,13 +78,15 @@ SYNTH_TARGETS += synth-top
 
 .PHONY: sim-top sim-full lint-top synth-top wave
 
-# One Verilated model per PREU count and datapath.
+# One Verilated model per PREU count and datapath; $(3): the flavour, empty or q (the quick build:
+# its C++ compiled with g++ -O0, the same cycles, a slower simulation, a build many times
+# cheaper; build/cosim/quick/pree-cosim-<tag>, for make sim-axi-full AXI_FULL_QUICK=1).
 define COSIM_VL_RULE
-$(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a: $(COSIM_RTL) $(COSIM_INCS) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+$(call COSIM_MDIR,$(1),$(2),$(3))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a: $(COSIM_RTL) $(COSIM_INCS) tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@mkdir -p $$(@D)
 	$$(call say,VERILATE,$$(@D))verilator --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast --trace-fst \
 	  -Irtl --top-module pree_top --prefix Vpree_top_$(call cosim_tag,$(1),$(2)) --Mdir $$(@D) tb/cosim/pree_top.vlt \
-	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" \
+	  $(call COSIM_GPARAMS,$(1),$(2)) -MAKEFLAGS "$(if $(3),OPT_FAST=-O0 OPT_SLOW=-O0,OPT_FAST=-O2 OPT_SLOW=-O1)" \
 	  $(COSIM_RTL) >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 endef
 $(foreach m,$(COSIM_MODELS),$(eval $(call COSIM_VL_RULE,$(call cosim_n,$(m)),$(call cosim_d,$(m)))))
@@ -100,15 +102,17 @@ $(COSIM_VLIB): $(COSIM_VLRT:%=$(COSIM_DIR)/vlrt/%.o)
 # built for tests/checks/cosim_deep.sh anyway, for the bench's deep-pipeline traces).
 COSIM_RTL_FLAGS = $(COSIM_VLRT_FLAGS) -g $(WARN) -MMD -MP $(MODEL_INC) -Ihost $(VHARNESS_INC)
 define COSIM_PROG_RULE
-$(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
+$(HOST_DIR)/cosim_rtl$(3)_$(call cosim_tag,$(1),$(2)).o: host/cosim_rtl.cpp $(call COSIM_MDIR,$(1),$(2),$(3))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2)) -c $$< -o $$@
-$(BUILD)/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(COSIM_MAIN_OBJS) $(HOST_OBJS) $(HOST_DIR)/cosim_rtl_$(call cosim_tag,$(1),$(2)).o \
-                          $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
+	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(call cosim_models,$(1):$(2),$(3)) -c $$< -o $$@
+$(if $(3),$(COSIM_DIR)/quick,$(BUILD))/pree-cosim-$(call cosim_tag,$(1),$(2)): $(HOST_DIR)/cosim_main.o $(COSIM_MAIN_OBJS) $(HOST_OBJS) $(HOST_DIR)/cosim_rtl$(3)_$(call cosim_tag,$(1),$(2)).o \
+                          $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE) $(call COSIM_MDIR,$(1),$(2),$(3))/Vpree_top_$(call cosim_tag,$(1),$(2))__ALL.a $(COSIM_VLIB)
+	@mkdir -p $$(@D)
 	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(eval $(call COSIM_PROG_RULE,$(p),$(d)))))
 $(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(if $(filter $(p):$(d),$(COSIM_MODELS)),,$(eval $(call COSIM_VL_RULE,$(p),$(d))))))
+$(foreach p,$(COSIM_ALL_PREUS),$(foreach d,$(COSIM_DATAPATHS) $(COSIM_DATAPATHS:%=%f),$(eval $(call COSIM_PROG_RULE,$(p),$(d),q))$(eval $(call COSIM_VL_RULE,$(p),$(d),q))))
 
 COSIM_BENCH_MODELS := $(COSIM_MODELS) $(if $(filter 4:pf,$(COSIM_MODELS)),,4:pf)
 COSIM_BENCH_LIBS   := $(foreach m,$(COSIM_BENCH_MODELS),$(call COSIM_MDIR,$(call cosim_n,$(m)),$(call cosim_d,$(m)))/Vpree_top_$(call cosim_mtag,$(m))__ALL.a)

@@ -21,6 +21,9 @@
 #                      (tb/axi/axi_cosim_full.sh): AXI_FULL_TAGS (default p4 p8 p16 p4f p8f p16f
 #                      s4 s4f), AXI_FULL_OPTS (default the whole frame, cornell3 320x240 / 768k
 #                      photons), --gap AXI_FULL_GAP (0.3); the table in build/axi/full/table.md.
+#                      AXI_FULL_QUICK=1: the quick builds of both sides (g++ -O0, the same cycles;
+#                      build/cosim/quick/pree-cosim-<tag> for pree_top alone, mk/cosim.mk);
+#                      AXI_FULL_GAP_TAGS: the tags that also run with --gap (default all).
 #                      Outside `make test`: its 16 models take hours to build here
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
@@ -41,8 +44,9 @@ LINT_TARGETS  += lint-axi
 .PHONY: lint-axi synth-axi fit-table sim-axi-wide sim-axi-full
 sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
 	@bash tb/axi/axi_cosim_wide.sh
-sim-axi-full: $(BUILD)/pree $(foreach t,$(AXI_FULL_TAGS),$(BUILD)/pree-cosim-axi-$(t) $(BUILD)/pree-cosim-$(t))
-	@AXI_FULL_OPTS="$(AXI_FULL_OPTS)" bash tb/axi/axi_cosim_full.sh $(AXI_DIR)/full $(AXI_FULL_TAGS)
+AXI_FULL_PROGS = $(foreach t,$(AXI_FULL_TAGS),$(if $(AXI_FULL_QUICK),$(AXI_DIR)/quick/pree-cosim-axi-$(t) $(COSIM_DIR)/quick/pree-cosim-$(t),$(BUILD)/pree-cosim-axi-$(t) $(BUILD)/pree-cosim-$(t)))
+sim-axi-full: $(BUILD)/pree $(AXI_FULL_PROGS)
+	@AXI_FULL_OPTS="$(AXI_FULL_OPTS)" AXI_FULL_QUICK="$(AXI_FULL_QUICK)" $(if $(AXI_FULL_GAP_TAGS),AXI_FULL_GAP_TAGS="$(AXI_FULL_GAP_TAGS)") bash tb/axi/axi_cosim_full.sh $(AXI_DIR)/full $(AXI_FULL_TAGS)
 
 # The wrapper's models take the co-simulation's pree_top parameters (PipeFast included: d = pf,
 # sf; PhotonsPerCycle NumPreu / 4, photon slots a beat). $(1): PREU count, $(2): p, s, pf or sf,
