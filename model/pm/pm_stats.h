@@ -23,6 +23,8 @@ typedef struct {
     unsigned long long photons_stored;   /* diffuse photon hits in the map */
     unsigned long long k;                /* neighbours asked for */
     double max_radius;                   /* r0 */
+    /* The clustered search's work counters below depend on the threads' schedule (each thread's
+     * bound guess carries from the cluster it searched last); with one thread they repeat. */
     unsigned long long clusters;         /* clustered search: clusters of <= 16 shading points */
     unsigned long long clusters_sparse;  /* ... spread too wide for a shared scope: a scope a member */
     unsigned long long widened;          /* ... members not certain within their own bound, searched
