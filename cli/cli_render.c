@@ -89,6 +89,8 @@ static void render_usage(FILE *f)
         "                         options, outputs are in FILE); with --photons N, extended to N; other\n"
         "                         outputs may be given, options that change the bits may not. The\n"
         "                         same bits as an uninterrupted render, for any --threads\n"
+        "  --hide-lights          the image without the area lights' own emitted radiance (the photon\n"
+        "                         radiance alone; by default the camera sees the lights)\n"
         "  --light-sampling S     uniform (default: photon i from light i mod L) or power (each light\n"
         "                         with probability its share of the total flux)\n"
         "  --write-every N        a convergence series: also write every output at N, 2N, ... photons\n"

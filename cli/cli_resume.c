@@ -11,7 +11,7 @@
 /* The options that change the bits: a resume may not change them. */
 static const char *const BIT_OPTIONS[] = {"--width", "--height", "--photon-offset", "--precision", "--datapath",
                                           "--alpha", "--grid", "--no-skip", "--preu", "--pipe-fast", "--layout",
-                                          "--prees", "--light-sampling"};
+                                          "--prees", "--light-sampling", "--hide-lights"};
 
 typedef struct { char *p; size_t left; int full; } buf_t;
 
@@ -73,6 +73,8 @@ int cli_resume_note(const render_options_t *o, const cli_resume_job_t *j, char *
         (unsigned long long)(o->checkpoint_every ? o->checkpoint_every : RENDER_CHECKPOINT_EVERY));
     if (o->no_skip) add(&b, "--no-skip\n");
     if (o->pipe_fast) add(&b, "--pipe-fast\n");
+    if (o->hide_lights) add(&b, "--hide-lights\n");
+
     for (int k = 0; k < j->nout; k++) {
         if (absolute("--out", j->outs[k], 0, path, sizeof path)) return 2;
         add(&b, "--out %s\n", path);

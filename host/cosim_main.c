@@ -333,7 +333,7 @@ static int check_board(cosim_run_t *r, int fail, int *status, int *agreed)
     }
     rep->mpi_ranks = r->part.nranks;
     rep->ranks = r->figs;
-    return cosim_image_out(&r->c, &r->scene, &r->opt, r->Lr, r->rgb, rep) ? 1 : 0;
+    return cosim_image_out(&r->c, &r->scene, &r->opt, r->Lr, r->res.emitted, r->rgb, rep) ? 1 : 0;
 }
 
 /* One PREE: its hit-point memory against the fp32 model's final state, then the radiance pass
@@ -367,7 +367,7 @@ static int check_one(cosim_run_t *r)
     rep->img_diff = (unsigned long long)img;
     rep->sec_rad_rtl = now() - t0;
     cosim_drv_counters(r->ctx.drv, rep->cnt_all);
-    return cosim_image_out(&r->c, &r->scene, &r->opt, r->Lr, r->rgb, rep);
+    return cosim_image_out(&r->c, &r->scene, &r->opt, r->Lr, r->res.emitted, r->rgb, rep);
 }
 
 static void run_free(cosim_run_t *r)

@@ -5,6 +5,7 @@
 #include "cosim_outputs.h"
 #include "fp32_ops.h"
 #include "image.h"
+#include "radiance.h"
 
 static void to_float(const double *rgb, size_t n, float *out)
 {
@@ -45,11 +46,12 @@ static int reference_metrics(const scene_t *scene, const render_options_t *opt, 
 }
 
 int cosim_image_out(const cosim_args_t *c, const scene_t *scene, const render_options_t *opt, const uint32_t *Lr,
-                    double *rgb, cosim_report_t *rep)
+                    const double *emitted, double *rgb, cosim_report_t *rep)
 {
     char err[1024];
     const size_t npix = (size_t)opt->width * (size_t)opt->height;
     for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
+    radiance_add_emitted(rgb, emitted, npix, PRECISION_FP32);   /* as the fp32 render adds them */
     if (c->out && pree_image_write(c->out, opt->width, opt->height, rgb, err, sizeof err)) {
         fprintf(stderr, "pree cosim: %s\n", err);
         return -1;

@@ -8,10 +8,11 @@
 #include "cosim_report.h"
 #include "scene.h"
 
-/* The RTL's image (binary32 words Lr, widened into rgb) to --out, and with a reference its
- * metrics in rep: 0, or -1 with a message printed. */
+/* The RTL's image (binary32 words Lr, widened into rgb, plus the emitted radiance the eye pass
+ * met, NULL: none, as radiance_add_emitted adds it in the fp32 render) to --out, and with a
+ * reference its metrics in rep: 0, or -1 with a message printed. */
 int cosim_image_out(const cosim_args_t *c, const scene_t *scene, const render_options_t *opt, const uint32_t *Lr,
-                    double *rgb, cosim_report_t *rep);
+                    const double *emitted, double *rgb, cosim_report_t *rep);
 
 /* The report's figures, its JSON (--stats) and the closing line: the exit status (0 when both
  * comparisons show 0 differing words, or with --model-only), or 1 when the JSON is not written. */

@@ -8,6 +8,7 @@
 #include "grid.h"
 #include "pm_estimate.h"
 #include "pm_render.h"
+#include "radiance.h"
 
 static void phase(const render_options_t *opt, const char *what)
 {
@@ -23,11 +24,13 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     eye_stats_t es;
     phase(opt, "eye pass");
     res->hp.with_object = 1;   /* the clusters group by object */
-    if (eye_pass(scene, tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
+    const eye_pass_opts_t eo = {opt->width, opt->height, !opt->hide_lights};
+    if (eye_pass(scene, tr, &eo, &res->hp, &res->emitted, &es, opt->interrupt, err, errlen)) return -1;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
+    st->emitter_hits = es.emitter_hits;
     st->r0 = res->hp.n ? grid_initial_radius(&res->hp, opt->width, opt->height) : 0;
     t = omp_get_wtime();
     double c0 = pm_cpu_now();
@@ -86,6 +89,7 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
         /* Pixels summed in hit-point order: the same bits for any thread count. */
         for (size_t i = 0; i < res->hp.n; i++)
             for (int a = 0; a < 3; a++) res->rgb[(size_t)res->hp.pixel[i] * 3 + a] += L[3 * i + a];
+        radiance_add_emitted(res->rgb, res->emitted, npix, PRECISION_DOUBLE);
         st->image_hash = fnv1a(FNV1A_BASIS, res->rgb, npix * 3 * sizeof *res->rgb);
         st->state_hash = fnv1a(FNV1A_BASIS, L, res->hp.n * 3 * sizeof *L);
     }

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include "emitters.h"
 #include "eye_pass.h"
 #include "optics.h"
 
@@ -13,18 +14,34 @@
 typedef struct {
     const scene_t *scene;
     const tracer_t *tr;
+    const emitters_t *em;   /* the area lights the eye sees (em->n 0: none) */
+    double *emitted;        /* their radiance, 3 a pixel (NULL when em->n is 0); a row is one
+                             * thread's, so each pixel's sum is in path order */
     hitpoints_t *out;
     eye_stats_t st;
     int failed;
 } eye_ctx_t;
 
-/* Follow one eye path segment; depth counts segments (the first hit has depth 1). */
+/* Follow one eye path segment; depth counts segments (the first hit has depth 1). The emitted
+ * radiance the segment meets before its surface goes to the pixel, weighted as a hit point there
+ * would be. */
 static void eye_trace(eye_ctx_t *c, vec3 o, vec3 d, int depth, vec3 throughput, int32_t pixel)
 {
     hit_t h;
     depth++;
     c->st.rays++;
-    if (depth >= c->scene->max_depth || !tracer_intersect(c->tr, o, d, &h)) return;
+    if (depth >= c->scene->max_depth) return;
+    const int hit = tracer_intersect(c->tr, o, d, &h);
+    vec3 Le;
+    if (c->em->n && emitters_seen(c->em, o, d, hit ? h.t : INFINITY, &Le)) {
+        double *px = c->emitted + 3 * (size_t)pixel;
+        const vec3 e = v3_mul(Le, throughput);
+        px[0] += e.x;
+        px[1] += e.y;
+        px[2] += e.z;
+        c->st.emitter_hits++;
+    }
+    if (!hit) return;
     const material_t *m = &c->scene->materials[h.material];
     vec3 nl = v3_dot(h.n, d) < 0 ? h.n : v3_scale(h.n, -1.0);
     switch (m->kind) {
@@ -77,24 +94,35 @@ int eye_camera_check(const camera_t *cam, int w, int h, char *err, size_t errlen
     return 0;
 }
 
-int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t *out,
-             eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen)
+int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *eo, hitpoints_t *out,
+             double **emitted_out, eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen)
 {
     const camera_t *cam = &scene->camera;
+    const int w = eo->width, h = eo->height;
     vec3 dir, cx, cy;
     camera_axes(cam, w, h, &dir, &cx, &cy);
     if (eye_camera_check(cam, w, h, err, errlen)) return -1;
+    const size_t npix = (size_t)w * (size_t)h;
+    emitters_t em = {NULL, 0, 0};
+    double *emitted = NULL;
+    *emitted_out = NULL;
+    if (eo->see_lights && emitters_init(&em, scene)) { snprintf(err, errlen, "out of memory"); return -1; }
+    if (em.n && !(emitted = calloc(npix * 3, sizeof *emitted))) {
+        emitters_free(&em);
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
     /* Rows are traced in parallel into row buffers and appended in row order, EYE_CHUNK_ROWS at a
      * time, so that the buffers never hold more than a band of the image beside the result. */
     hitpoints_t *rows = calloc(EYE_CHUNK_ROWS, sizeof *rows);
-    if (!rows) { snprintf(err, errlen, "out of memory"); return -1; }
-    eye_stats_t total = {0, 0};
+    if (!rows) { emitters_free(&em); free(emitted); snprintf(err, errlen, "out of memory"); return -1; }
+    eye_stats_t total = {0, 0, 0};
     int failed = 0, stopped = 0;
     for (int y0 = 0; y0 < h && !failed && !stopped; y0 += EYE_CHUNK_ROWS) {
         const int y1 = y0 + EYE_CHUNK_ROWS < h ? y0 + EYE_CHUNK_ROWS : h;
 #pragma omp parallel reduction(+ : failed, stopped)
         {
-            eye_ctx_t c = {scene, tr, NULL, {0, 0}, 0};
+            eye_ctx_t c = {scene, tr, &em, emitted, NULL, {0, 0, 0}, 0};
 #pragma omp for schedule(dynamic, 1)
             for (int y = y0; y < y1; y++) {
                 if (stopped || stop_requested(stop)) { stopped = 1; continue; }
@@ -109,6 +137,7 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
             {
                 total.rays += c.st.rays;
                 total.glass_splits += c.st.glass_splits;
+                total.emitter_hits += c.st.emitter_hits;
             }
             failed += c.failed;
         }
@@ -118,11 +147,15 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, int w, int h, hitpoints_t
         }
     }
     free(rows);
+    emitters_free(&em);
     if (!failed && !stopped && hitpoints_trim(out)) failed = 1;
     if (failed || stopped) {
+        free(emitted);
         snprintf(err, errlen, "%s", failed ? "out of memory in the eye pass" : STOP_MESSAGE);
         return -1;
     }
+    if (total.emitter_hits) *emitted_out = emitted;
+    else free(emitted);
     *stats = total;
     return 0;
 }

@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-/* eye_pass.h: the ray-tracing pass: one ray through each pixel centre, followed through
- * mirror and glass chains (glass branches into reflected then refracted paths) to the first
- * diffuse surface, where a hit point is stored, even one of weight zero.
+/* eye_pass.h: the ray-tracing pass: one ray through each pixel centre, followed through mirror
+ * and glass chains (glass branches into reflected then refracted paths) to the first diffuse
+ * surface, where a hit point is stored, even one of weight zero. With see_lights, each segment
+ * of the path that meets an area light's front face on its way (model/trace/emitters.h) adds
+ * that light's radiance, times the path's throughput, to the pixel's emitted radiance: what the
+ * camera sees of the lights directly and through mirrors and glass. The hit points do not
+ * depend on see_lights.
  *
  * The result is in the reference program's creation order (pixels row by row from the top,
  * then path order) for any thread count. Returns 0, or -1 with err filled (out of memory, or
@@ -17,13 +21,21 @@
 typedef struct {
     unsigned long long rays;          /* eye ray segments traced */
     unsigned long long glass_splits;  /* glass hits that branched into two paths */
+    unsigned long long emitter_hits;  /* segments that met an area light's front face */
 } eye_stats_t;
+
+typedef struct {
+    int width, height;   /* the image */
+    int see_lights;      /* 1: the emitted radiance the eye paths meet (*emitted) */
+} eye_pass_opts_t;
 
 /* 0 when every eye ray of a width x height image starts within +-1e17 and has a direction
  * (what the tracer takes), else -1 with a one-line message in err. */
 int eye_camera_check(const camera_t *cam, int width, int height, char *err, size_t errlen);
 
-int eye_pass(const scene_t *scene, const tracer_t *tr, int width, int height,
-             hitpoints_t *out, eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen);
+/* The hit points into out; *emitted: 3 doubles a pixel (malloc'd, the caller frees), or NULL
+ * when see_lights is 0 or no eye path met a light. */
+int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *opts, hitpoints_t *out,
+             double **emitted, eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen);
 
 #endif

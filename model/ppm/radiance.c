@@ -58,6 +58,17 @@ static int board_words(const hitpoints_t *h, const radiance_pree_t *pree, uint64
     return rc;
 }
 
+void radiance_add_emitted(double *rgb, const double *emitted, size_t num_pixels, precision_t prec)
+{
+    if (!emitted) return;
+    for (size_t j = 0; j < num_pixels * 3; j++) {
+        if (emitted[j] == 0) continue;
+        rgb[j] = prec == PRECISION_FP32
+               ? (double)fp32_from_bits(fp32_add(fp32_to_bits((float)rgb[j]), preu_f32(emitted[j])))
+               : rgb[j] + emitted[j];
+    }
+}
+
 int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, const radiance_pree_t *pree, uint64_t emitted,
                            int skip_zero, double *rgb, size_t num_pixels, unsigned long long *skipped)
 {

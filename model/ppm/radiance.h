@@ -49,6 +49,12 @@ int radiance_evaluate_preu(const hitpoints_t *h, precision_t prec, const radianc
  * or -1 as above. */
 int radiance_fp32_words(const hitpoints_t *h, const radiance_pree_t *pree, uint64_t emitted, int skip_zero,
                         uint32_t *L, unsigned long long *skipped);
+/* The emitted radiance the eye paths met (render_result_t.emitted; NULL: none) added to the
+ * image rgb, after the radiance pass, on the host: in double, or in fp32 mode as binary32 (rgb
+ * holds binary32 values; emitted rounded once to binary32, then one binary32 addition), so the
+ * fp32 image stays binary32 and an image from the RTL's pixel words gets the same bits. Pixels
+ * that meet no light are untouched. */
+void radiance_add_emitted(double *rgb, const double *emitted, size_t num_pixels, precision_t prec);
 /* A board's image: PREE r's pixel words `part` added to the sums L in binary32 (first: PREE 0,
  * whose words L takes as they are). */
 void radiance_board_add(uint32_t *L, const uint32_t *part, size_t words, int first);

@@ -55,6 +55,8 @@ typedef struct {
     hp_layout_t layout;      /* its hit-point layout */
     int prees;               /* > 1: a board of this many such PREEs (model/ppm/radiance.h), which holds
                               * the spatial layout (layout is then not read) */
+    int hide_lights;         /* 1: the camera does not see the area lights' emitted radiance (the image
+                             * is the photon radiance alone); 0 (default): it does (eye_pass.h) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
     volatile sig_atomic_t *interrupt;   /* set to stop: the photon block in progress is abandoned */
     double time_limit;       /* render_run: > 0: stop after the block in progress once this many
@@ -95,6 +97,7 @@ typedef struct {
 
 typedef struct {
     unsigned long long hit_points, hit_points_zero_weight, eye_rays, glass_splits;
+    unsigned long long emitter_hits;   /* eye ray segments that met an area light's front face */
     unsigned long long photons_emitted, photon_segments, photon_hits, photon_hits_no_cell;
     update_stats_t upd;
     unsigned long long radiance_skipped;
@@ -130,6 +133,9 @@ typedef struct {
 struct render_result {
     int width, height;
     double *rgb;             /* linear radiance, 3 per pixel, top row first */
+    double *emitted;         /* the area lights' radiance the eye paths meet, 3 per pixel, which rgb
+                              * includes (radiance_add_emitted); NULL when they meet none or
+                              * opt.hide_lights */
     hitpoints_t hp;          /* final hit-point state */
     render_stats_t stats;
 };

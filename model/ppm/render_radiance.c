@@ -52,6 +52,7 @@ static int evaluate(render_session_t *s, uint64_t photons, char *err, size_t err
         snprintf(err, errlen, "out of memory in radiance evaluation");
         return -1;
     }
+    radiance_add_emitted(res->rgb, res->emitted, s->npix, s->opt.precision);   /* what the camera sees of the lights */
     st->sec_radiance = omp_get_wtime() - t;
     if (s->opt.precision == PRECISION_FP32 && render_fp32_result_check(res, err, errlen)) return -1;
     render_hash_results(res, s->opt.precision);

@@ -31,6 +31,7 @@ void render_stats_scene(render_stats_t *st, const scene_t *scene)
 void render_result_free(render_result_t *res)
 {
     free(res->rgb);
+    free(res->emitted);
     hitpoints_free(&res->hp);
     memset(res, 0, sizeof *res);
 }

@@ -78,7 +78,8 @@ int render_setup_eye(render_session_t *s, const char **phase, char *err, size_t 
     st->sec_bvh = omp_get_wtime() - t;
     t = step_begin(phase, "eye pass", "eye");
     eye_stats_t es;
-    if (eye_pass(s->scene, s->tr, opt->width, opt->height, &res->hp, &es, opt->interrupt, err, errlen)) return -1;
+    const eye_pass_opts_t eo = {opt->width, opt->height, !opt->hide_lights};
+    if (eye_pass(s->scene, s->tr, &eo, &res->hp, &res->emitted, &es, opt->interrupt, err, errlen)) return -1;
     if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(s->scene, opt, &res->hp);
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;
@@ -87,6 +88,7 @@ int render_setup_eye(render_session_t *s, const char **phase, char *err, size_t 
         return -1;
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
+    st->emitter_hits = es.emitter_hits;
     for (size_t i = 0; i < res->hp.n; i++) st->hit_points_zero_weight += hitpoints_zero_weight(&res->hp, i);
     return 0;
 }

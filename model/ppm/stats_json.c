@@ -12,7 +12,7 @@
 
 static const json_field_t counts[] = {
     S(hit_points_saturated, JF_U64), S(hit_points, JF_U64), S(hit_points_zero_weight, JF_U64),
-    S(eye_rays, JF_U64), S(glass_splits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
+    S(eye_rays, JF_U64), S(glass_splits, JF_U64), S(emitter_hits, JF_U64), SK(r0, JF_REAL, "initial_radius"),
     SK(hp_coord_max, JF_REAL, "hit_point_coord_max"),
     SK(r_safe, JF_REAL, "safe_radius"), S(grid_entries, JF_U64), S(grid_entries_final, JF_U64),
     S(grid_refilters, JF_U64), S(photons_emitted, JF_U64),

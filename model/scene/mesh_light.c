@@ -36,6 +36,7 @@ int mesh_light_add(scene_t *s, const vec3 *c, size_t n, vec3 power, int is_flux,
     memset(l, 0, sizeof *l);
     l->kind = LIGHT_AREA;
     l->flux = is_flux ? power : v3_scale(power, PREE_PI * area);
+    l->radiance = is_flux ? v3_scale(power, 1.0 / (PREE_PI * area)) : power;
     l->tris = tris;
     l->num_tris = k;
     l->area = area;

@@ -50,6 +50,8 @@ typedef struct {
     light_tri_t *tris;  /* area lights */
     size_t num_tris;
     double area;
+    vec3 radiance;      /* area lights: the radiance leaving each front face (flux / (pi * area)
+                         * where the light was given by its flux), what the camera sees */
 } light_t;
 
 typedef struct {

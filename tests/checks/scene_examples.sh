@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 # The example scenes (scenes/examples/, docs/scene_format.md "Example scenes") render: each at
-# 64x48 with 20,000 photons to the image and state hashes recorded when they were written, with
-# photons reaching its diffuse surfaces; and scripts/make-run.sh (make run SCENE=...) runs the
+# 64x48 with 20,000 photons to the image and state hashes recorded (room and mesh show their area
+# light: tests/checks/visible_lights.sh), with photons reaching its diffuse surfaces; and scripts/make-run.sh (make run SCENE=...) runs the
 # whole software comparison on one of them, naming every output after the scene.
 # cost: 8
 source "$(dirname "$0")/../lib/check.sh"
@@ -14,8 +14,8 @@ while read -r name hashes; do
   [ "$(json "$TMP/$name.json" photon_hits)" -gt 1000 ] || fail "$name: almost no photon reaches a diffuse surface"
   expect_eq "$name image/state hashes" "$(json "$TMP/$name.json" image_hash)/$(json "$TMP/$name.json" state_hash)" "$hashes"
 done <<'LIST'
-room 8c57d794ad86c8f4/a75dabb2c8d4338c
-mesh 166600a133a04844/70a0fb00dfc453b4
+room c159ae7088d7116a/a75dabb2c8d4338c
+mesh d959035a075d58c7/70a0fb00dfc453b4
 caustics 92bd103be5cddae2/354758e09d683cea
 LIST
 mkdir -p "$TMP/bin" && cp "$PREE" "$TMP/bin/pree"   # alone: no co-simulation program beside it
