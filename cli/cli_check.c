@@ -30,7 +30,8 @@ static void report(const char *path, const scene_t *s, const render_options_t *o
            s->num_materials, s->num_spheres, s->num_meshes, tris, s->num_lights);
     printf("point_lights %llu\narea_lights %llu\nmax_depth %d\nimage %dx%d\n", (unsigned long long)s->num_lights - area,
            area, s->max_depth, opt->width, opt->height);
-    printf("hit_points_estimate %llu (one a pixel; mirrors and glass may add more)\n", pix);
+    printf("hit_points_estimate %llu (one an eye ray; mirrors and glass may add more)\n",
+           pix * (unsigned long long)(opt->eye_rays > 1 ? opt->eye_rays : 1));
     printf("memory_estimate_bytes %llu (%.2f GiB)\n", (unsigned long long)mem, (double)mem / (1u << 30));
     /* Each material as the engine takes it (an MTL material as the MTL rule classified it). */
     static const char *const kinds[] = {"diffuse", "mirror", "glass"};
@@ -104,7 +105,8 @@ int pree_cmd_check(int argc, char **argv)
     if (scene.film_height && !(size_given & 2)) opt.height = scene.film_height;
     unsigned long long tris = 0;
     for (int m = 0; m < scene.num_meshes; m++) tris += (unsigned long long)scene.meshes[m].num_triangles;
-    uint64_t mem = mem_estimate_start(tris, (uint64_t)opt.width * (uint64_t)opt.height);
+    uint64_t mem = mem_estimate_start(tris, (uint64_t)opt.width * (uint64_t)opt.height,
+                                      opt.eye_rays > 1 ? (uint64_t)opt.eye_rays : 1);
     int rc = 0;
     if (eye_camera_check(&scene.camera, opt.width, opt.height, err, sizeof err) ||
         mem_check(mem, opt.max_memory, MEM_START_WHAT, err, sizeof err)) {

@@ -187,6 +187,11 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
     case CLI_PIPE_FAST: opt->pipe_fast = 1; return 0;
     case CLI_NO_SKIP: opt->no_skip = 1; return 0;
     case CLI_HIDE_LIGHTS: opt->hide_lights = 1; return 0;
+    case CLI_EYE_RAYS:
+        if (cli_int(a, 1, EYE_RAYS_MAX, &v)) return 2;
+        opt->eye_rays = (int)v;
+        return 0;
+    case CLI_EXPOSURE: return cli_real(a, -30, 0, 30, &opt->exposure);
     case CLI_QUIET: opt->progress = 0; return 0;
     default: return 1;
     }

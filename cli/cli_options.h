@@ -16,7 +16,8 @@
 enum {
     CLI_HELP = 'h',
     CLI_WIDTH = 0x100, CLI_HEIGHT, CLI_PHOTONS, CLI_PREU, CLI_GRID, CLI_NO_SKIP, CLI_QUIET,
-    CLI_DATAPATH, CLI_ALPHA, CLI_THREADS, CLI_PIPE_FAST, CLI_LAYOUT, CLI_HIDE_LIGHTS,
+    CLI_DATAPATH, CLI_ALPHA, CLI_THREADS, CLI_PIPE_FAST, CLI_LAYOUT, CLI_HIDE_LIGHTS, CLI_EYE_RAYS,
+    CLI_EXPOSURE,
     CLI_OWN = 0x200
 };
 
@@ -35,7 +36,9 @@ enum {
     {"threads", required_argument, NULL, CLI_THREADS},                                \
     {"pipe-fast", no_argument, NULL, CLI_PIPE_FAST},                                  \
     {"layout", required_argument, NULL, CLI_LAYOUT},                                  \
-    {"hide-lights", no_argument, NULL, CLI_HIDE_LIGHTS}
+    {"hide-lights", no_argument, NULL, CLI_HIDE_LIGHTS},                              \
+    {"eye-rays", required_argument, NULL, CLI_EYE_RAYS},                              \
+    {"exposure", required_argument, NULL, CLI_EXPOSURE}
 
 typedef struct {
     int argc;
@@ -75,7 +78,8 @@ int cli_real(cli_args_t *a, double lo, int lo_open, double hi, double *out);
 int cli_keyword(cli_args_t *a, const char *const *names, int n);
 /* Apply one of CLI_RENDER_LONGOPTS (not --help): --width/--height (at least min_size),
  * --photons, --preu, --grid, --no-skip, --quiet, --datapath paper|stable, --alpha A,
- * --threads T, --pipe-fast, --layout spatial|pixel, --hide-lights.
+ * --threads T, --pipe-fast, --layout spatial|pixel, --hide-lights, --eye-rays N (1..EYE_RAYS_MAX),
+ * --exposure EV (-30..30).
  * Returns 1 when id is not one of them, 0 when it was taken, 2 on an error (printed). */
 int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size);
 /* 0 when path ends in .png, .ppm or .exr; else 2 with the error printed. */

@@ -45,7 +45,7 @@ static int write_image(const char *path, const char *scene, const render_options
         "pree:precision", opt->precision == PRECISION_FP32 ? "fp32" : "double",
         "pree:datapath", stats_datapath_name(opt), "pree:grid", stats_grid_name(opt->grid),
         "pree:alpha", alpha, "pree:version", pree_version(), "pree:image_hash", hash, NULL};
-    return pree_image_write_meta(path, res->width, res->height, res->rgb, meta, err, errlen);
+    return pree_image_write_scaled(path, res->width, res->height, res->rgb, meta, exp2(opt->exposure), err, errlen);
 }
 
 static void render_usage(FILE *f)
@@ -89,6 +89,11 @@ static void render_usage(FILE *f)
         "                         options, outputs are in FILE); with --photons N, extended to N; other\n"
         "                         outputs may be given, options that change the bits may not. The\n"
         "                         same bits as an uninterrupted render, for any --threads\n"
+        "  --eye-rays N           eye rays a pixel, 1..256 (default 1, through its centre): N > 1 rays\n"
+        "                         at jittered points of the pixel, each of weight 1/N (anti-aliasing;\n"
+        "                         N times the hit points)\n"
+        "  --exposure EV          scale the PNG and PPM outputs by 2^EV before the tone curve, EV in\n"
+        "                         [-30, 30] (default 0); EXR outputs hold the linear radiance as it is\n"
         "  --hide-lights          the image without the area lights' own emitted radiance (the photon\n"
         "                         radiance alone; by default the camera sees the lights)\n"
         "  --light-sampling S     uniform (default: photon i from light i mod L) or power (each light\n"

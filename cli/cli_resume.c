@@ -11,7 +11,7 @@
 /* The options that change the bits: a resume may not change them. */
 static const char *const BIT_OPTIONS[] = {"--width", "--height", "--photon-offset", "--precision", "--datapath",
                                           "--alpha", "--grid", "--no-skip", "--preu", "--pipe-fast", "--layout",
-                                          "--prees", "--light-sampling", "--hide-lights"};
+                                          "--prees", "--light-sampling", "--hide-lights", "--eye-rays"};
 
 typedef struct { char *p; size_t left; int full; } buf_t;
 
@@ -66,15 +66,19 @@ int cli_resume_note(const render_options_t *o, const cli_resume_job_t *j, char *
         add(&b, "scene %s\n", path);
     }
     add(&b, "--width %d\n--height %d\n--photons %llu\n--photon-offset %llu\n--precision %s\n--datapath %s\n"
-            "--alpha %s\n--grid %s\n--preu %d\n--layout %s\n--prees %d\n--checkpoint-every %llu\n",
+            "--alpha %s\n--grid %s\n--preu %d\n--layout %s\n--prees %d\n--checkpoint-every %llu\n--eye-rays %d\n",
         o->width, o->height, (unsigned long long)o->photons, (unsigned long long)o->photon_offset,
         precision[o->precision == PRECISION_FP32], datapath[o->datapath == DATAPATH_STABLE], alpha, grid,
         o->preu ? o->preu : 4, layout[o->layout == HP_LAYOUT_PIXEL], o->prees > 1 ? o->prees : 1,
-        (unsigned long long)(o->checkpoint_every ? o->checkpoint_every : RENDER_CHECKPOINT_EVERY));
+        (unsigned long long)(o->checkpoint_every ? o->checkpoint_every : RENDER_CHECKPOINT_EVERY),
+        o->eye_rays > 1 ? o->eye_rays : 1);
     if (o->no_skip) add(&b, "--no-skip\n");
     if (o->pipe_fast) add(&b, "--pipe-fast\n");
     if (o->hide_lights) add(&b, "--hide-lights\n");
-
+    if (o->exposure != 0) {
+        shortest(o->exposure, alpha, sizeof alpha);
+        add(&b, "--exposure %s\n", alpha);
+    }
     for (int k = 0; k < j->nout; k++) {
         if (absolute("--out", j->outs[k], 0, path, sizeof path)) return 2;
         add(&b, "--out %s\n", path);

@@ -20,6 +20,7 @@ static void cosim_usage(FILE *f)
         "  --preu P               PREUs in the RTL: 1, 2, 4, 8 or 16 (default 4)\n"
         "  --datapath D --alpha A  the PREU datapath (paper or stable) and alpha, as for 'pree render'\n"
         "  --pipe-fast            the RTL with PipeFast = 1 (the deep PREU pipeline, docs/fpga.md)\n"
+        "  --eye-rays N --exposure EV   as for 'pree render'\n"
         "  --hide-lights          as for 'pree render' (the host adds the lights' emitted radiance\n"
         "                         the eye sees to the RTL's pixels for --out; the pixel words\n"
         "                         compared are the RTL's own)\n"

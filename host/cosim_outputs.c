@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cosim_outputs.c: the outputs of cosim_outputs.h. */
+#include <math.h>
 #include <stdio.h>
 #include "compare.h"
 #include "cosim_outputs.h"
@@ -52,7 +53,8 @@ int cosim_image_out(const cosim_args_t *c, const scene_t *scene, const render_op
     const size_t npix = (size_t)opt->width * (size_t)opt->height;
     for (size_t j = 0; j < npix * 3; j++) rgb[j] = (double)fp32_from_bits(Lr[j]);
     radiance_add_emitted(rgb, emitted, npix, PRECISION_FP32);   /* as the fp32 render adds them */
-    if (c->out && pree_image_write(c->out, opt->width, opt->height, rgb, err, sizeof err)) {
+    if (c->out && pree_image_write_scaled(c->out, opt->width, opt->height, rgb, NULL, exp2(opt->exposure), err,
+                                          sizeof err)) {
         fprintf(stderr, "pree cosim: %s\n", err);
         return -1;
     }

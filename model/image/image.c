@@ -234,6 +234,12 @@ int pree_image_write(const char *path, int w, int h, const double *rgb, char *er
 int pree_image_write_meta(const char *path, int w, int h, const double *rgb, const char *const *meta,
                           char *err, size_t errlen)
 {
+    return pree_image_write_scaled(path, w, h, rgb, meta, 1.0, err, errlen);
+}
+
+int pree_image_write_scaled(const char *path, int w, int h, const double *rgb, const char *const *meta,
+                            double ldr_scale, char *err, size_t errlen)
+{
     const char *ext = extension(path);
     int is_exr = !strcasecmp(ext, "exr");
     if (!is_exr && strcasecmp(ext, "png") && strcasecmp(ext, "ppm"))
@@ -247,7 +253,7 @@ int pree_image_write_meta(const char *path, int w, int h, const double *rgb, con
         for (size_t i = 0; i < n; i++) f[i] = (float)rgb[i];
     } else {
         unsigned char *u = pix;
-        for (size_t i = 0; i < n; i++) u[i] = (unsigned char)pree_tonemap8(rgb[i]);
+        for (size_t i = 0; i < n; i++) u[i] = (unsigned char)pree_tonemap8(ldr_scale * rgb[i]);
     }
     int rc = write_atomic(path, ext, w, h, is_exr, pix, is_exr ? meta : NULL, err, errlen);
     free(pix);

@@ -8,6 +8,7 @@
  *   pree_tonemap8              smallppm's toInt: linear radiance to an 8-bit value
  *   pree_image_write           write double RGB pixels; format chosen by the file extension
  *   pree_image_write_meta      the same, with name/value metadata in EXR headers
+ *   pree_image_write_scaled    the same, 8-bit outputs scaled (an exposure) before the tone curve
  *   pree_image_write_u8        write 8-bit RGB values as they are (.png or .ppm)
  *   pree_image_read            read a .png, .ppm/.pnm or .exr file into a pree_image_t
  *
@@ -62,6 +63,12 @@ int pree_image_write(const char *path, int w, int h, const double *rgb, char *er
  * NULL name; NULL for none) in the file's header; .png and .ppm files get none. */
 int pree_image_write_meta(const char *path, int w, int h, const double *rgb, const char *const *meta,
                           char *err, size_t errlen);
+
+/* pree_image_write_meta, where .png and .ppm files take pree_tonemap8(ldr_scale * L) (an
+ * exposure: ldr_scale = 2^EV; 1 gives the same bytes as pree_image_write_meta); .exr files keep
+ * the linear radiance as it is. */
+int pree_image_write_scaled(const char *path, int w, int h, const double *rgb, const char *const *meta,
+                            double ldr_scale, char *err, size_t errlen);
 
 /* Write 8-bit RGB values unchanged (3 bytes per pixel, row-major, top row first) to a .png,
  * or to a .ppm in the same ASCII layout as above. Atomic like pree_image_write. */

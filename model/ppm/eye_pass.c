@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include "emitters.h"
 #include "eye_pass.h"
+#include "halton.h"
 #include "optics.h"
 
 /* Image rows traced together before they join the result (a band of the image). */
@@ -94,6 +95,39 @@ int eye_camera_check(const camera_t *cam, int w, int h, char *err, size_t errlen
     return 0;
 }
 
+/* The rotation (s, t) of pixel p's jitter pattern: two 32-bit halves of a 64-bit mix of p
+ * (splitmix64's finalizer), each over 2^32. */
+static void eye_jitter_shift(uint64_t p, double *s, double *t)
+{
+    uint64_t z = p + 0x9e3779b97f4a7c15ull;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    z ^= z >> 31;
+    *s = (double)(uint32_t)z * 0x1p-32;
+    *t = (double)(uint32_t)(z >> 32) * 0x1p-32;
+}
+
+/* The eye rays of pixel (x, y): through its centre (rays <= 1), or jittered (eye_pass.h). */
+static void eye_pixel(eye_ctx_t *c, const camera_t *cam, vec3 dir, vec3 cx, vec3 cy, int w, int h, int rays, int x, int y)
+{
+    const int32_t pixel = y * w + x;
+    if (rays <= 1) {
+        vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
+        eye_trace(c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(1, 1, 1), pixel);
+        return;
+    }
+    double s, t;
+    eye_jitter_shift((uint64_t)pixel, &s, &t);
+    const double wgt = 1.0 / rays;
+    for (int k = 0; k < rays; k++) {
+        double u = halton(0, k) + s, v = halton(1, k) + t;
+        u -= u >= 1;
+        v -= v >= 1;
+        vec3 d = v3_add(v3_add(v3_scale(cx, (x + u) / w - 0.5), v3_scale(cy, -(y + v) / h + 0.5)), dir);
+        eye_trace(c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(wgt, wgt, wgt), pixel);
+    }
+}
+
 int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *eo, hitpoints_t *out,
              double **emitted_out, eye_stats_t *stats, const stop_flag_t *stop, char *err, size_t errlen)
 {
@@ -128,10 +162,7 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *eo
                 if (stopped || stop_requested(stop)) { stopped = 1; continue; }
                 c.out = &rows[y - y0];
                 c.out->with_object = out->with_object;
-                for (int x = 0; x < w; x++) {
-                    vec3 d = v3_add(v3_add(v3_scale(cx, (x + 0.5) / w - 0.5), v3_scale(cy, -(y + 0.5) / h + 0.5)), dir);
-                    eye_trace(&c, v3_add(cam->origin, v3_scale(d, cam->near)), v3_norm(d), 0, v3(1, 1, 1), y * w + x);
-                }
+                for (int x = 0; x < w; x++) eye_pixel(&c, cam, dir, cx, cy, w, h, eo->rays, x, y);
             }
 #pragma omp critical
             {

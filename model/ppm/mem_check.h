@@ -20,12 +20,14 @@
 #define MEM_TRIANGLE_BYTES 128u
 #define MEM_BASE_BYTES (64u << 20)
 
-/* The estimate before the BVH and the image are built: one hit point a pixel assumed. */
-static inline uint64_t mem_estimate_start(uint64_t triangles, uint64_t pixels)
+/* The estimate before the BVH and the image are built: one hit point an eye ray assumed
+ * (eye_rays a pixel). */
+static inline uint64_t mem_estimate_start(uint64_t triangles, uint64_t pixels, uint64_t eye_rays)
 {
-    return MEM_BASE_BYTES + triangles * MEM_TRIANGLE_BYTES + pixels * (MEM_PIXEL_BYTES + MEM_HIT_POINT_BYTES);
+    return MEM_BASE_BYTES + triangles * MEM_TRIANGLE_BYTES + pixels * MEM_PIXEL_BYTES
+         + pixels * eye_rays * MEM_HIT_POINT_BYTES;
 }
-#define MEM_START_WHAT "one hit point a pixel assumed"
+#define MEM_START_WHAT "one hit point an eye ray assumed"
 
 /* The bytes this process holds now (resident), and its virtual size; 0 when unknown. */
 uint64_t mem_resident_bytes(void);

@@ -44,6 +44,10 @@ static int open_session(render_session_t *s, char *err, size_t errlen)
         snprintf(err, errlen, "alpha %g is not in (0, 1]", opt->alpha);
         return -1;
     }
+    if (opt->eye_rays < 0 || opt->eye_rays > EYE_RAYS_MAX) {
+        snprintf(err, errlen, "%d eye rays a pixel is not in 1..%d", opt->eye_rays, EYE_RAYS_MAX);
+        return -1;
+    }
     if (opt->record_ops && opt->precision != PRECISION_FP32) {
         snprintf(err, errlen, "recording the PREE operations needs --precision fp32");
         return -1;
@@ -54,8 +58,9 @@ static int open_session(render_session_t *s, char *err, size_t errlen)
     st->threads = s->T;
     s->skip = !opt->no_skip && opt->grid == GRID_CELLS;
     s->npix = (size_t)opt->width * (size_t)opt->height;
-    /* Memory: before anything large, with one hit point a pixel; again with the true count. */
-    if (mem_check(mem_estimate_start(st->scene_triangles, s->npix), opt->max_memory, MEM_START_WHAT, err, errlen))
+    /* Memory: before anything large, with one hit point an eye ray; again with the true count. */
+    if (mem_check(mem_estimate_start(st->scene_triangles, s->npix, opt->eye_rays > 1 ? (uint64_t)opt->eye_rays : 1),
+                  opt->max_memory, MEM_START_WHAT, err, errlen))
         return -1;
     s->bb = calloc(1, sizeof *s->bb);
     res->rgb = calloc(s->npix * 3, sizeof *res->rgb);

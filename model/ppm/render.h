@@ -55,6 +55,9 @@ typedef struct {
     hp_layout_t layout;      /* its hit-point layout */
     int prees;               /* > 1: a board of this many such PREEs (model/ppm/radiance.h), which holds
                               * the spatial layout (layout is then not read) */
+    int eye_rays;            /* eye rays a pixel (eye_pass.h; 0 or 1: one, through the pixel's centre) */
+    double exposure;         /* not read by the engine: its callers scale what they write as 8-bit
+                              * images (PNG, PPM) by 2^exposure before the tone curve */
     int hide_lights;         /* 1: the camera does not see the area lights' emitted radiance (the image
                              * is the photon radiance alone); 0 (default): it does (eye_pass.h) */
     int progress;            /* 1: progress on stderr (a running line on a terminal, else every 10%) */
