@@ -18,7 +18,7 @@
 #   make synth-preu      the checks, then synth_xilinx (7-series, flattened, no I/O buffers) per
 #                        datapath: figures in build/preu/synth_xilinx_stat_dp{0,1}.txt (minutes)
 
-PREU_RTL    := rtl/pree_preu.v rtl/pree_preu_plan.vh rtl/pree_unit_stages.vh
+PREU_RTL    := rtl/pree_preu.v rtl/pree_preu_lat.vh rtl/pree_preu_plan.vh rtl/pree_unit_stages.vh
 PREU_UNITS  := $(wildcard rtl/pree_fp32_*.v) rtl/pree_wacc.v rtl/pree_u64_to_f32.v
 PREU_SRCS   := rtl/pree_preu.v $(PREU_UNITS)
 PREU_DIR    := $(BUILD)/preu

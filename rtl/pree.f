@@ -4,7 +4,7 @@
 // Generated from pree.core's rtl fileset by `make pree-f` (scripts/pree_filelist.py): edit the core.
 // The include directory is rtl/: -Irtl for Verilator and Icarus, +incdir+rtl or Vivado's
 // include_dirs elsewhere. Include files:
-//   rtl/pree_unit_stages.vh, rtl/pree_preu_plan.vh, rtl/pree_hp_bank.vh, rtl/pree_axi_regs.vh.
+//   rtl/pree_unit_stages.vh, rtl/pree_preu_plan.vh, rtl/pree_preu_lat.vh, rtl/pree_hp_bank.vh, rtl/pree_axi_regs.vh.
 rtl/pree_ram_sdp.v
 rtl/pree_ram_banks.v
 rtl/pree_reset_sync.v

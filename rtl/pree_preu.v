@@ -71,23 +71,17 @@ module pree_preu #(
   output wire              busy_o       // an operation is in flight; mode_i must hold
 );
 
-`include "pree_preu_plan.vh"
+`include "pree_preu_lat.vh"
 
   localparam        STABLE = (Datapath != 0);
   localparam [31:0] ONE    = 32'h3F80_0000;  // 1.0f
   localparam [31:0] INV_PI = 32'h3EA2_F983;  // (float)(1.0 / 3.14159265358979)
   localparam [31:0] PI     = 32'h4049_0FDB;  // (float)3.14159265358979
-  // Each unit's latency: its operand registers (IR) and its Stages (the unit's, below: A - IR ..).
+  // Each unit's latency (pree_preu_lat.vh) by the plan's letters: its operand registers (IR) and
+  // its Stages (the unit's, below: A - IR ..). UPD_LATENCY and RAD_LATENCY come from there too.
   localparam IR = preu_in_regs(PipeFast);
-  localparam A = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
-  localparam M = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
-  localparam Q = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
-  localparam D = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
-  localparam U = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
-  localparam W = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
-  // The latencies and the pixel-sum request stage, public to the Verilator benches.
-  localparam UPD_LATENCY /*verilator public*/ = preu_upd_latency(Datapath, A, M, Q, D, U, W);
-  localparam RAD_LATENCY /*verilator public*/ = preu_rad_latency(A, M, D);
+  localparam A = LAT_ADD, M = LAT_MUL, Q = LAT_SQR, D = LAT_DIV, U = LAT_U2F, W = LAT_WACC;
+  // The pixel-sum request stage, public to the Verilator benches.
   localparam LREQ_STAGE  /*verilator public*/ = RAD_LATENCY - A - 1;
   localparam LAST = preu_max(UPD_LATENCY, RAD_LATENCY);
   // Stages in which units are fed (update: S_*, radiance: R_*); CMP_S: the comparison.

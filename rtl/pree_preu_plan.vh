@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // pree_preu_plan.vh: the PREU's stage plan as constant functions of its units' latencies, written
-// once and included inside pree_preu (which builds the plan) and pree_top (which sizes its hazard
-// windows and ADISO-REC's depth from it). a, m, q, d, u, w: the latencies of pree_fp32_add, _mul,
-// _sqr, _div, pree_u64_to_f32 and pree_wacc in the PREU (preu_unit_lat: each unit's InRegs +
-// Stages); the comparator is combinational. docs/preu_datapath.md gives the plan and its figures.
+// once for pree_preu (which builds the plan), pree_top (which sizes its hazard windows and
+// ADISO-REC's depth from it) and the formal PREU stub, through pree_preu_lat.vh, which includes it
+// and resolves the latencies from their parameters. a, m, q, d, u, w: the latencies of
+// pree_fp32_add, _mul, _sqr, _div, pree_u64_to_f32 and pree_wacc in the PREU (preu_unit_lat: each
+// unit's InRegs + Stages); the comparator is combinational. docs/preu_datapath.md gives the plan
+// and its figures.
 //
 // Update (both datapaths): d = pos - pos (add, stage 0), q = d * d (sqr, stage a), s = qx + qy
 // (add, a + q), d2 = s + qz (add, 2a + q, ready at 3a + q).

@@ -97,7 +97,7 @@ module pree_top #(
   output wire [(7+NumPreu)*CtrW-1:0] cnt_o
 );
 
-`include "pree_preu_plan.vh"
+`include "pree_preu_lat.vh"
 `include "pree_hp_bank.vh"
 
   localparam LANE_W    = $clog2(NumPreu);
@@ -110,21 +110,14 @@ module pree_top #(
   localparam BBANK_W   = HpBankW > PxBankW ? HpBankW : PxBankW; // stage-B bank number
   localparam CONST_W   = PxAW + 192;                          // {pixel, f, pos}
   localparam STATE_W   = StateW;                              // paper {n, r2, tau}, stable {k, w, T}
-  // The PREU's latencies (rtl/pree_preu_plan.vh) and the hazard windows they set (public to the
+  // The PREU's latencies (rtl/pree_preu_lat.vh) and the hazard windows they set (public to the
   // co-simulation host): update, issue + C + the update stages (11 paper / 13 stable with
   // PipeFast 0); radiance, from the pixel read (lreq, RAD_LAT - AddStages - 1 after issue) to
   // its write (RAD_LAT after issue): the add's latency + 1 (3 with PipeFast 0). RAD_LAT is also
   // ADISO-REC's depth, which sets the radiance pass's issue order (public, for the host's check).
-  localparam ST_ADD    = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
-  localparam ST_MUL    = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
-  localparam ST_DIV    = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
-  localparam ST_SQR    = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
-  localparam ST_U2F    = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
-  localparam ST_WACC   = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
-  localparam UPD_LAT   = preu_upd_latency(Datapath, ST_ADD, ST_MUL, ST_SQR, ST_DIV, ST_U2F, ST_WACC);
-  localparam RAD_LAT /*verilator public*/ = preu_rad_latency(ST_ADD, ST_MUL, ST_DIV);
-  localparam WIN_UPD /*verilator public*/ = 1 + UPD_LAT;
-  localparam WIN_RAD /*verilator public*/ = ST_ADD + 1;
+  localparam RAD_LAT /*verilator public*/ = RAD_LATENCY;
+  localparam WIN_UPD /*verilator public*/ = 1 + UPD_LATENCY;
+  localparam WIN_RAD /*verilator public*/ = LAT_ADD + 1;
   // PipeFast 1's registered flow control (public to the co-simulation host): A's two-offer buffer
   // (pree_top_offer) and B's two-slot queue (pree_top_queue).
   localparam REG_FLOW /*verilator public*/ = (PipeFast != 0) ? 1 : 0;

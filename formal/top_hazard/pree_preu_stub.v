@@ -3,8 +3,8 @@
 // parameters), read instead of rtl/pree_preu.v. It keeps the PREU's timing contract and leaves
 // its data free:
 //   - an operation presented with valid_i leaves with valid_o and its tag exactly UPD_LATENCY
-//     cycles later in update mode, RAD_LATENCY in radiance mode (rtl/pree_preu_plan.vh, the
-//     same plan pree_preu builds from its units' latencies);
+//     cycles later in update mode, RAD_LATENCY in radiance mode (rtl/pree_preu_lat.vh, the
+//     same latencies pree_preu builds its plan from);
 //   - in radiance mode lreq_o and lreq_tag_o ask for the pixel sum in stage RAD_LATENCY - (the
 //     add's latency) - 1;
 //   - busy_o while an operation is in flight;
@@ -49,18 +49,11 @@ module pree_preu #(
   output wire              busy_o
 );
 
-`include "pree_preu_plan.vh"
+`include "pree_preu_lat.vh"
 
-  localparam A = preu_unit_lat(PREU_ADD, PipeFast, AddStages);
-  localparam M = preu_unit_lat(PREU_MUL, PipeFast, MulStages);
-  localparam Q = preu_unit_lat(PREU_SQR, PipeFast, SqrStages);
-  localparam D = preu_unit_lat(PREU_DIV, PipeFast, DivStages);
-  localparam U = preu_unit_lat(PREU_U2F, PipeFast, U2fStages);
-  localparam W = preu_unit_lat(PREU_WACC, PipeFast, WaccStages);
-  localparam UPD_LAT = preu_upd_latency(Datapath, A, M, Q, D, U, W);
-  localparam RAD_LAT = preu_rad_latency(A, M, D);
-  localparam LREQ    = RAD_LAT - A - 1;
-  localparam DEPTH   = (UPD_LAT > RAD_LAT) ? UPD_LAT : RAD_LAT;
+  // The latencies as pree_preu has them (rtl/pree_preu_lat.vh): UPD_LATENCY, RAD_LATENCY.
+  localparam LREQ    = RAD_LATENCY - LAT_ADD - 1;
+  localparam DEPTH   = (UPD_LATENCY > RAD_LATENCY) ? UPD_LATENCY : RAD_LATENCY;
 
   // Stage s (1 .. DEPTH) holds the operation presented s cycles ago: valid, mode, tag.
   reg [DEPTH:1]      v_q;
@@ -78,10 +71,10 @@ module pree_preu #(
     for (s = 2; s <= DEPTH; s = s + 1) t_q[s] <= t_q[s-1];
   end
 
-  wire upd_out = v_q[UPD_LAT] && !m_q[UPD_LAT];
-  wire rad_out = v_q[RAD_LAT] && m_q[RAD_LAT];
+  wire upd_out = v_q[UPD_LATENCY] && !m_q[UPD_LATENCY];
+  wire rad_out = v_q[RAD_LATENCY] && m_q[RAD_LATENCY];
   assign valid_o    = upd_out || rad_out;
-  assign tag_o      = upd_out ? t_q[UPD_LAT] : t_q[RAD_LAT];
+  assign tag_o      = upd_out ? t_q[UPD_LATENCY] : t_q[RAD_LATENCY];
   assign lreq_o     = (LREQ == 0) ? (valid_i && mode_i) : (v_q[LREQ] && m_q[LREQ]);
   assign lreq_tag_o = (LREQ == 0) ? tag_i : t_q[LREQ];
   assign busy_o     = |v_q;
