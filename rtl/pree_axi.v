@@ -41,19 +41,20 @@
 // while CMD 1 runs. Streams and commands never overlap: streams move only while no command runs,
 // and a command starts only when everything is idle.
 //
-// Parameters: those of pree_top a user chooses (NumPreu, the memory sizes, CntW, Datapath,
-// PipeFast and the PREU units' Stages; CtrW is the register map's 48), checked together at
-// elaboration (a missing module named after the problem), and PhotonsPerCycle (photon slots a
-// beat on s_axis_ph, 1 to 8, passed to pree_top: its wide intake; NumPreu / 4 lets 8 and 16
-// PREUs reach pree_top's own utilization), PhFifoAW (log2 of the photon FIFO depth, in beats),
-// RingAW (log2 of the in-flight photon ring: a give waits while 2^RingAW - PhotonsPerCycle
-// photons are between pree_top's intake and photons_done_o; default 4 + log2 PhotonsPerCycle,
-// more than twice PhotonsPerCycle entries), CountW (bits of the running counts: photons in,
-// given and done, candidates in and retired; they wrap, and every comparison between them is
-// modulo 2^CountW; PH_IN, PH_DONE and CAND_IN read them zero-extended; at least IdxAW +
-// PhFifoAW + log2 PhotonsPerCycle + 1 and more than RingAW, so that the distances compared stay
-// below 2^(CountW-1); 32 unless a simulation or a proof wants to reach the wrap-around in a few
-// hundred photons).
+// Parameters: those of pree_top a user chooses (NumPreu, the memory sizes, CntW, Datapath, PipeFast
+// and the PREU units' Stages; CtrW is the register map's 48), which pree_top checks at elaboration
+// (a missing module named after the problem, pree_top_*); this wrapper checks its own the same way
+// (pree_axi_*: the photon slots, the ring, the running counts, the 32-bit register slots of PxAW,
+// HpAW and CntW). Its own: PhotonsPerCycle (photon slots a beat on s_axis_ph, 1 to 8, passed to
+// pree_top: its wide intake; NumPreu / 4 lets 8 and 16 PREUs reach pree_top's own utilization),
+// PhFifoAW (log2 of the photon FIFO depth, in beats), RingAW (log2 of the in-flight photon ring: a
+// give waits while 2^RingAW - PhotonsPerCycle photons are between pree_top's intake and
+// photons_done_o; default 4 + log2 PhotonsPerCycle, more than twice PhotonsPerCycle entries),
+// CountW (bits of the running counts: photons in, given and done, candidates in and retired; they
+// wrap, and every comparison between them is modulo 2^CountW; PH_IN, PH_DONE and CAND_IN read them
+// zero-extended; at least IdxAW + PhFifoAW + log2 PhotonsPerCycle + 1 and more than RingAW, so that
+// the distances compared stay below 2^(CountW-1); 32 unless a simulation or a proof wants to reach
+// the wrap-around in a few hundred photons).
 `default_nettype none
 
 module pree_axi #(
@@ -147,40 +148,6 @@ module pree_axi #(
     if (CountW > 32 || CountW < IdxAW + PhFifoAW + $clog2(PhotonsPerCycle) + 1 ||
         CountW <= RingAW) begin : g_bad_countw
       pree_axi_countw_is_32_at_most_and_idxaw_plus_phfifoaw_plus_log2_ppc_plus_1_at_least u_fail ();
-    end
-    if (Datapath < 0 || Datapath > 1) begin : g_bad_datapath
-      pree_axi_datapath_is_0_paper_or_1_stable u_fail ();
-    end
-    if (PipeFast < 0 || PipeFast > 1) begin : g_bad_pipefast
-      pree_axi_pipefast_is_0_or_1 u_fail ();
-    end
-    // A unit's stages: 0 (its default for PipeFast) or what the unit builds (its header).
-    if (AddStages < 0 || AddStages > 7) begin : g_bad_add
-      pree_axi_addstages_is_0_or_1_to_7 u_fail ();
-    end
-    if (MulStages < 0 || MulStages > 8) begin : g_bad_mul
-      pree_axi_mulstages_is_0_or_1_to_8 u_fail ();
-    end
-    if (SqrStages < 0 || SqrStages > 6) begin : g_bad_sqr
-      pree_axi_sqrstages_is_0_or_1_to_6 u_fail ();
-    end
-    if (DivStages < 0 || DivStages == 1 || DivStages > 31) begin : g_bad_div
-      pree_axi_divstages_is_0_or_2_to_31 u_fail ();
-    end
-    if (U2fStages < 0 || U2fStages > 5) begin : g_bad_u2f
-      pree_axi_u2fstages_is_0_or_1_to_5 u_fail ();
-    end
-    if (WaccStages < 0 || WaccStages > 5) begin : g_bad_wacc
-      pree_axi_waccstages_is_0_or_1_to_5 u_fail ();
-    end
-    if (HpBankW < 1 || 2 * HpBankW > HpAW) begin : g_bad_hpbankw
-      pree_axi_hpbankw_is_1_to_half_of_hpaw u_fail ();
-    end
-    if (PxBankW < 1 || PxBankW >= PxAW) begin : g_bad_pxbankw
-      pree_axi_pxbankw_is_1_to_pxaw_minus_1 u_fail ();
-    end
-    if ((1 << IdxAW) <= NumPreu) begin : g_bad_idxaw
-      pree_axi_index_table_needs_more_entries_than_preus u_fail ();
     end
   endgenerate
 

@@ -127,14 +127,52 @@ module pree_top #(
   // the key), the wider.
   localparam REC_W   = (HpAW + PH_W > 192 + STATE_W) ? HpAW + PH_W : 192 + STATE_W;
 
-  // Parameter checks (elaboration fails on a module that does not exist): StateW follows
-  // Datapath; NumPreu is a power of two (index-table banks and ADISO groups are cut by bits).
+  // Parameter checks, whatever the configuration (elaboration fails on a module that does not
+  // exist, named after the problem): StateW follows Datapath; NumPreu is a power of two
+  // (index-table banks and ADISO groups are cut by bits); Datapath and PipeFast are 0 or 1; each
+  // unit's Stages is 0 (its default for PipeFast) or what the unit builds (its header), also for
+  // units the datapath leaves out (u2f and wacc are the stable one's); the memories' banks leave
+  // rows (HpBankW 1 .. HpAW / 2, PxBankW 1 .. PxAW - 1), and so do the index table's (IdxAW above
+  // log2 NumPreu and above 1).
   generate
     if (StateW != ((Datapath != 0) ? 320 : 160)) begin : g_bad_statew
       pree_top_statew_is_set_by_datapath u_fail ();
     end
     if ((1 << LANE_W) != NumPreu) begin : g_bad_numpreu
       pree_top_numpreu_must_be_a_power_of_two u_fail ();
+    end
+    if (Datapath < 0 || Datapath > 1) begin : g_bad_datapath
+      pree_top_datapath_is_0_paper_or_1_stable u_fail ();
+    end
+    if (PipeFast < 0 || PipeFast > 1) begin : g_bad_pipefast
+      pree_top_pipefast_is_0_or_1 u_fail ();
+    end
+    if (AddStages < 0 || AddStages > 7) begin : g_bad_add
+      pree_top_addstages_is_0_or_1_to_7 u_fail ();
+    end
+    if (MulStages < 0 || MulStages > 8) begin : g_bad_mul
+      pree_top_mulstages_is_0_or_1_to_8 u_fail ();
+    end
+    if (SqrStages < 0 || SqrStages > 6) begin : g_bad_sqr
+      pree_top_sqrstages_is_0_or_1_to_6 u_fail ();
+    end
+    if (DivStages < 0 || DivStages == 1 || DivStages > 31) begin : g_bad_div
+      pree_top_divstages_is_0_or_2_to_31 u_fail ();
+    end
+    if (U2fStages < 0 || U2fStages > 5) begin : g_bad_u2f
+      pree_top_u2fstages_is_0_or_1_to_5 u_fail ();
+    end
+    if (WaccStages < 0 || WaccStages > 5) begin : g_bad_wacc
+      pree_top_waccstages_is_0_or_1_to_5 u_fail ();
+    end
+    if (HpBankW < 1 || 2 * HpBankW > HpAW) begin : g_bad_hpbankw
+      pree_top_hpbankw_is_1_to_half_of_hpaw u_fail ();
+    end
+    if (PxBankW < 1 || PxBankW >= PxAW) begin : g_bad_pxbankw
+      pree_top_pxbankw_is_1_to_pxaw_minus_1 u_fail ();
+    end
+    if (IdxAW <= IDX_BANK_W) begin : g_bad_idxaw
+      pree_top_idxaw_is_above_log2_numpreu_and_1 u_fail ();
     end
   endgenerate
 

@@ -27,12 +27,13 @@ run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=2 -GHpAW=6
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=8 -GPhotonsPerCycle=2 -f rtl/pree.f
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=16 -GPhotonsPerCycle=4 -GPipeFast=1 -f rtl/pree.f
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GNumPreu=16 -GPhotonsPerCycle=8 -GDatapath=1 -f rtl/pree.f
-# The deep PREU pipeline and per-unit stages through the wrapper.
-run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -f rtl/pree.f
+# The deep PREU pipeline and per-unit stages through the wrapper (pree_top alone at PipeFast 1 and
+# its default stages: top_lint.sh).
 run verilator --lint-only -Wall -Irtl --top-module pree_axi -GPipeFast=1 -GDivStages=18 -GAddStages=3 -f rtl/pree.f
 # A combination out of range stops elaboration with a module named after the problem.
-for bad in "DivStages=1:pree_axi_divstages_is_0_or_2_to_31" "PipeFast=2:pree_axi_pipefast_is_0_or_1" \
-           "HpBankW=10:pree_axi_hpbankw_is_1_to_half_of_hpaw" "PhotonsPerCycle=9:pree_axi_photons_per_cycle_is_1_to_8" \
+# pree_top's parameters are refused by pree_top (pree_top_*), the wrapper's own by the wrapper.
+for bad in "DivStages=1:pree_top_divstages_is_0_or_2_to_31" "PipeFast=2:pree_top_pipefast_is_0_or_1" \
+           "HpBankW=10:pree_top_hpbankw_is_1_to_half_of_hpaw" "PhotonsPerCycle=9:pree_axi_photons_per_cycle_is_1_to_8" \
            "RingAW=1:pree_axi_ring_holds_more_than_twice_photons_per_cycle"; do
   if verilator --lint-only -Wall -Irtl --top-module pree_axi -G${bad%%:*} -f rtl/pree.f >"$TMP/bad.log" 2>&1; then
     fail "pree_axi elaborated with ${bad%%:*}"
