@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cli_options.c: option scanning (getopt_long) and strict value parsing. */
 #include <errno.h>
+#include <omp.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -174,10 +175,16 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
         if (v & (v - 1)) return cli_error(a, "--preu: %lld is not 1, 2, 4, 8 or 16", v);
         opt->preu = (int)v;
         return 0;
-    case CLI_THREADS:
+    case CLI_THREADS: {
+        static int warned;   /* once a process (a resume parses its command line twice) */
         if (cli_int(a, 1, 1024, &v)) return 2;
         opt->threads = (int)v;
+        const int hw = omp_get_num_procs();
+        if (v > hw && !warned++)
+            fprintf(stderr, "pree %s: warning: --threads %lld is more than the %d hardware threads: the extra "
+                    "threads take turns on them (slower, the same image)\n", a->cmd, v, hw);
         return 0;
+    }
     case CLI_LAYOUT: {
         static const char *const names[] = {"spatial", "pixel"};
         if ((k = cli_keyword(a, names, 2)) < 0) return 2;

@@ -98,6 +98,9 @@ static void render_usage(FILE *f)
         "                         radiance alone; by default the camera sees the lights)\n"
         "  --light-sampling S     uniform (default: photon i from light i mod L) or power (each light\n"
         "                         with probability its share of the total flux)\n"
+        "  --max-bounces W        photon paths stop at their hit after W bounces (1 to 1000; default:\n"
+        "                         the scene's max_depth alone): shorter, more even tracing tasks, a\n"
+        "                         darker image (docs/photon_map.md, \"Capping photon paths\")\n"
         "  --write-every N        a convergence series: also write every output at N, 2N, ... photons\n"
         "  --write-at N,N,...     and/or at these counts (100k, 1.5M: whole thousands), each NAME.EXT as\n"
         "                         NAME-COUNT.EXT with the bits of a render of COUNT photons\n"
@@ -113,7 +116,7 @@ static void render_usage(FILE *f)
 
 enum { OPT_PHOTON_OFFSET = CLI_OWN, OPT_PRECISION, OPT_SCAN, OPT_OUT, OPT_STATS, OPT_CHECKPOINT,
        OPT_CHECKPOINT_EVERY, OPT_RESUME, OPT_TIME_LIMIT, OPT_MAX_MEMORY, OPT_PREES, OPT_WRITE_EVERY, OPT_WRITE_AT,
-       OPT_LIGHT_SAMPLING, OPT_SIMD };
+       OPT_LIGHT_SAMPLING, OPT_SIMD, OPT_MAX_BOUNCES };
 
 static const struct option render_longopts[] = {
     CLI_RENDER_LONGOPTS,
@@ -133,6 +136,7 @@ static const struct option render_longopts[] = {
     {"write-every", required_argument, NULL, OPT_WRITE_EVERY},
     {"write-at", required_argument, NULL, OPT_WRITE_AT},
     {"light-sampling", required_argument, NULL, OPT_LIGHT_SAMPLING},
+    {"max-bounces", required_argument, NULL, OPT_MAX_BOUNCES},
     {NULL, 0, NULL, 0}
 };
 
@@ -148,6 +152,7 @@ typedef struct {
     int ngiven;
     cli_series_t series;    /* --write-every, --write-at */
     int light_power;        /* --light-sampling power */
+    int max_bounces;        /* --max-bounces W (0: none) */
 } render_job_t;
 
 /* Parse the command line into opt and j: -1 to go on, else the exit status (0 after --help). */
@@ -204,6 +209,10 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
             j->light_power = k;
             break;
         }
+        case OPT_MAX_BOUNCES:
+            if (cli_int(&a, 1, 1000, &v)) return 2;
+            j->max_bounces = (int)v;
+            break;
         case OPT_SIMD:
             if (cpu_simd_parse(a.val, &k))
                 return cli_error(&a, "--simd %s: expected auto, avx512, avx2 or scalar", a.val);
@@ -244,7 +253,8 @@ static int parse_args(int argc, char **argv, render_options_t *opt, render_job_t
 static int job_note(const render_options_t *opt, const render_job_t *j, char *note, size_t len)
 {
     static char series[16 * CLI_SERIES_MAX + 64];
-    const int n = snprintf(series, sizeof series, "--light-sampling %s\n", j->light_power ? "power" : "uniform");
+    int n = snprintf(series, sizeof series, "--light-sampling %s\n", j->light_power ? "power" : "uniform");
+    if (j->max_bounces) n += snprintf(series + n, sizeof series - (size_t)n, "--max-bounces %d\n", j->max_bounces);
     cli_series_note(&j->series, series + n, sizeof series - (size_t)n);
     const cli_resume_job_t rj = {.scene = j->scene_path, .stats = j->stats_path, .outs = j->outs, .nout = j->nout,
                                  .series = series};
@@ -399,6 +409,7 @@ static int prepare_job(render_options_t *opt, render_job_t *j, scene_t *scene)
         fprintf(stderr, "pree render: %s\n", err);
         return 1;
     }
+    scene->max_bounces = j->max_bounces;
     if (scene->film_width && !given(j, "--width")) opt->width = scene->film_width;
     if (scene->film_height && !given(j, "--height")) opt->height = scene->film_height;
     if (scene->film_photons && !given(j, "--photons")) opt->photons = scene->film_photons;

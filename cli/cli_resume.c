@@ -11,7 +11,8 @@
 /* The options that change the bits: a resume may not change them. */
 static const char *const BIT_OPTIONS[] = {"--width", "--height", "--photon-offset", "--precision", "--datapath",
                                           "--alpha", "--grid", "--no-skip", "--preu", "--pipe-fast", "--layout",
-                                          "--prees", "--light-sampling", "--hide-lights", "--eye-rays"};
+                                          "--prees", "--light-sampling", "--hide-lights", "--eye-rays",
+                                          "--max-bounces"};
 
 typedef struct { char *p; size_t left; int full; } buf_t;
 

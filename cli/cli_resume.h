@@ -4,9 +4,10 @@
  * render's command line in a canonical form, one option a line ("--width 320"; a flag alone;
  * "scene PATH" first; paths absolute). On a resume the options given on the command line that
  * change the bits (the fingerprint's: size, precision, datapath, alpha, grid, skips, PREUs,
- * PipeFast, layout, PREEs, photon offset, light sampling) must equal the note's, or the resume is refused naming
- * the option and both values; the others replace the note's: more photons, other outputs (any
- * --out replaces the note's images, --stats its statistics), other checkpoint settings. */
+ * PipeFast, layout, PREEs, photon offset, light sampling, max bounces) must equal the note's,
+ * or the resume is refused naming the option and both values; the others replace the note's:
+ * more photons, other outputs (any --out replaces the note's images, --stats its statistics),
+ * other checkpoint settings. */
 #ifndef PREE_CLI_RESUME_H
 #define PREE_CLI_RESUME_H
 

@@ -9,15 +9,42 @@
 
 typedef struct {
     photon_hits_t hits;
+    unsigned path_max;   /* segments of its longest photon path */
     int failed;
 } unit_t;
 
-static void trace_unit(const scene_t *scene, const tracer_t *tr, const photon_map_opts_t *o, uint64_t u,
-                       uint64_t units, unit_t *out)
+/* Trace unit u unless interrupted (done[u] set when traced): the seconds it took. */
+static double trace_unit(const scene_t *scene, const tracer_t *tr, const photon_map_opts_t *o, uint64_t u,
+                         uint64_t units, unit_t *out, unsigned char *done)
 {
+    if (o->interrupt && *o->interrupt) return 0;
+    const double t = omp_get_wtime();
     uint64_t first = u * o->task, last = u + 1 == units ? o->photons : first + o->task;
-    for (uint64_t k = first; k < last && !out->failed; k++)
+    for (uint64_t k = first; k < last && !out->failed; k++) {
+        const unsigned long long before = out->hits.segments;
         if (photon_trace(scene, tr, o->offset + k, &out->hits)) out->failed = 1;
+        const unsigned len = (unsigned)(out->hits.segments - before);
+        if (len > out->path_max) out->path_max = len;
+    }
+    done[u] = 1;
+    return omp_get_wtime() - t;
+}
+
+/* The balance figures of units [0, done) and of the threads' busy seconds (busy[t] < 0: thread
+ * t took no part). */
+static void balance(const unit_t *u, uint64_t done, const double *busy, int threads, photon_map_t *map)
+{
+    for (uint64_t k = 0; k < done; k++) {
+        if (u[k].hits.segments > map->unit_segments_max) map->unit_segments_max = u[k].hits.segments;
+        if (u[k].path_max > map->path_segments_max) map->path_segments_max = u[k].path_max;
+    }
+    map->thread_busy_min = -1;
+    for (int t = 0; t < threads; t++) {
+        if (busy[t] < 0) continue;
+        if (busy[t] > map->thread_busy_max) map->thread_busy_max = busy[t];
+        if (map->thread_busy_min < 0 || busy[t] < map->thread_busy_min) map->thread_busy_min = busy[t];
+    }
+    if (map->thread_busy_min < 0) map->thread_busy_min = 0;
 }
 
 /* Copy the hits of units [0, done) of photons below offset + emitted into the map, in unit order. */
@@ -46,18 +73,23 @@ int photon_map_build(const scene_t *scene, const tracer_t *tr, const photon_map_
 {
     memset(map, 0, sizeof *map);
     const uint64_t units = (o->photons + o->task - 1) / o->task;
+    const int threads = o->threads > 0 ? o->threads : omp_get_max_threads();
     unit_t *u = calloc(units ? units : 1, sizeof *u);
     unsigned char *done = calloc(units ? units : 1, 1);
-    if (!u || !done) { free(u); free(done); snprintf(err, errlen, "out of memory"); return -1; }
-    const int threads = o->threads > 0 ? o->threads : omp_get_max_threads();
-    if (o->dynamic) {
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-        for (uint64_t k = 0; k < units; k++)
-            if (!(o->interrupt && *o->interrupt)) { trace_unit(scene, tr, o, k, units, &u[k]); done[k] = 1; }
-    } else {
-#pragma omp parallel for schedule(static) num_threads(threads)
-        for (uint64_t k = 0; k < units; k++)
-            if (!(o->interrupt && *o->interrupt)) { trace_unit(scene, tr, o, k, units, &u[k]); done[k] = 1; }
+    double *busy = malloc((size_t)threads * sizeof *busy);
+    if (!u || !done || !busy) { free(u); free(done); free(busy); snprintf(err, errlen, "out of memory"); return -1; }
+    for (int t = 0; t < threads; t++) busy[t] = -1;
+#pragma omp parallel num_threads(threads)
+    {
+        double mine = 0;
+        if (o->dynamic) {
+#pragma omp for schedule(dynamic, 1) nowait
+            for (uint64_t k = 0; k < units; k++) mine += trace_unit(scene, tr, o, k, units, &u[k], done);
+        } else {
+#pragma omp for schedule(static) nowait
+            for (uint64_t k = 0; k < units; k++) mine += trace_unit(scene, tr, o, k, units, &u[k], done);
+        }
+        busy[omp_get_thread_num()] = mine;
     }
     /* Interrupted: keep the longest prefix of finished units, cut to whole 1000s of photons. */
     uint64_t prefix = 0;
@@ -67,6 +99,8 @@ int photon_map_build(const scene_t *scene, const tracer_t *tr, const photon_map_
     int rc = failed ? -1 : prefix < units ? 1 : 0;
     map->emitted = rc == 1 ? prefix * o->task / 1000 * 1000 : o->photons;
     if (rc >= 0 && gather(u, prefix, o->offset, map)) rc = -1;
+    if (rc >= 0) balance(u, prefix, busy, threads, map);
+    free(busy);
     for (uint64_t k = 0; k < units; k++) photon_hits_free(&u[k].hits);
     free(u);
     free(done);

@@ -28,6 +28,12 @@ typedef struct {
     size_t n;
     uint64_t emitted;                /* photons emitted (the estimator's N) */
     unsigned long long segments;     /* ray segments traced */
+    /* The tracing's load balance (paper 001): the work of the longest task unit and photon
+     * path (segments; they repeat exactly), and the seconds the busiest and the least busy
+     * thread spent tracing (the schedule's balance; they vary from run to run). */
+    unsigned long long unit_segments_max;
+    unsigned path_segments_max;
+    double thread_busy_max, thread_busy_min;
 } photon_map_t;
 
 typedef struct {

@@ -44,6 +44,10 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     st->photons_emitted = map->emitted;
     st->photon_hits = map->n;
     st->photon_segments = map->segments;
+    st->pm.unit_segments_max = map->unit_segments_max;
+    st->pm.path_segments_max = map->path_segments_max;
+    st->pm.thread_busy_max = map->thread_busy_max;
+    st->pm.thread_busy_min = map->thread_busy_min;
     return rc;
 }
 

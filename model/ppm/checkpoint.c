@@ -45,6 +45,7 @@ static uint64_t scene_hash(uint64_t f, const scene_t *sc)
     if (sc->light_cdf) HASH_N(f, sc->light_cdf, (size_t)sc->num_lights);
     HASH(f, sc->max_depth);
     HASH(f, sc->epsilon);
+    if (sc->max_bounces) HASH(f, sc->max_bounces);
     return f;
 }
 

@@ -28,7 +28,9 @@ typedef struct {
     uint64_t i;
 } photon_ctx_t;
 
-/* Follow one photon segment; depth counts segments (the first hit has depth 1). */
+/* Follow one photon segment; depth counts segments (the first hit has depth 1). With
+ * --max-bounces W the path ends at its hit of depth W + 1: stored there if diffuse, not
+ * scattered again (paper 001's forced stop). */
 static int photon_segment(photon_ctx_t *c, vec3 o, vec3 d, int depth, vec3 flux)
 {
     hit_t h;
@@ -37,10 +39,13 @@ static int photon_segment(photon_ctx_t *c, vec3 o, vec3 d, int depth, vec3 flux)
     if (depth >= c->scene->max_depth || !tracer_intersect(c->tr, o, d, &h)) return 0;
     const int d3 = depth * 3;
     const material_t *m = &c->scene->materials[h.material];
+    const int last = c->scene->max_bounces > 0 && depth > c->scene->max_bounces;
+    if (last && m->kind != MAT_DIFFUSE) return 0;
     vec3 nl = v3_dot(h.n, d) < 0 ? h.n : v3_scale(h.n, -1.0);
     switch (m->kind) {
     case MAT_DIFFUSE: {
         if (record(c->out, h.x, h.n, flux, c->i)) return -1;
+        if (last) return 0;
         /* Russian roulette on the largest reflectance, then a cosine-weighted bounce. */
         double p = v3_max_comp(m->colour);
         if (!(halton(d3 + 1, (long long)c->i) < p)) return 0;

@@ -120,6 +120,7 @@ typedef struct {
     /* What the scene holds (the engine builds only what it needs). */
     unsigned long long scene_spheres, scene_triangles, scene_lights;
     int scene_mirror, scene_glass;
+    int max_bounces;         /* the photon paths' cap (scene_t's max_bounces; 0: none) */
     uint64_t image_hash;     /* FNV-1a over the pixels' double bits */
     uint64_t state_hash;     /* FNV-1a over the final hit-point state (r2, count, flux or PREU words;
                               * the photon-map estimator: each hit point's radiance) */

@@ -26,6 +26,7 @@ void render_stats_scene(render_stats_t *st, const scene_t *scene)
     st->scene_lights = (unsigned long long)scene->num_lights;
     st->scene_mirror = scene->has_mirror;
     st->scene_glass = scene->has_glass;
+    st->max_bounces = scene->max_bounces;
 }
 
 void render_result_free(render_result_t *res)

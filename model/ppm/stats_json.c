@@ -42,7 +42,8 @@ static const json_field_t pm_fields[] = {
     P(short_of_k, JF_U64), P(coherent_fraction, JF_REAL), P(sec_map, JF_REAL), P(sec_tree, JF_REAL),
     P(sec_cluster, JF_REAL), P(sec_search, JF_REAL), P(cpu_map, JF_REAL), P(cpu_tree, JF_REAL),
     P(cpu_cluster, JF_REAL), P(cpu_search, JF_REAL), P(cpu_estimate, JF_REAL), P(cpu_query, JF_REAL),
-    P(sec_query, JF_REAL),
+    P(sec_query, JF_REAL), P(unit_segments_max, JF_U64), P(path_segments_max, JF_U64),
+    P(thread_busy_max, JF_REAL), P(thread_busy_min, JF_REAL),
 };
 
 /* --knn-bench: each method's tree build, query seconds of every repetition, work and hash. */
@@ -109,6 +110,7 @@ json_t *stats_json(const char *scene, const render_options_t *opt, const render_
     }
     json_set_bool(o, "interrupted", interrupted);
     json_set_u64(o, "photon_offset", opt->photon_offset);
+    json_set_u64(o, "max_bounces", (uint64_t)st->max_bounces);
     json_object_set_new(o, "scene_contents", json_fields(st, contents, N(contents)));
     json_set_fields(o, st, counts, N(counts));
     json_set_real(o, "update_mcand_per_s", st->sec_update > 0 ? st->upd.candidates / st->sec_update / 1e6 : 0.0);

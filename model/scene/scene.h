@@ -81,6 +81,8 @@ typedef struct {
     mesh_t *meshes;        int num_meshes;
     light_t *lights;       int num_lights;
     int max_depth;         /* path length limit (default 20) */
+    int max_bounces;       /* photon paths stop at their hit after this many bounces (paper 001's
+                            * W: `pree render --max-bounces`); 0: max_depth alone */
     double epsilon;        /* ray offset and nearest sphere hit, scene units (default TRACER_EPSILON
                             * = 1e-4, smallppm's; scale it with the scene, `epsilon E`) */
     /* What the scene contains, so that the engine can skip what it does not need. */

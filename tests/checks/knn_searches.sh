@@ -14,7 +14,7 @@
 bench() {  # bench NAME SCENE W H PHOTONS K THREADS: the three searches, stats in $TMP/NAME.json
   local name=$1 scene=$2 w=$3 h=$4 n=$5 k=$6 t=$7
   run "$PREE" render "$ROOT/scenes/$scene" --width "$w" --height "$h" --photons "$n" --estimator pm --k "$k" \
-      --max-radius 4 --threads "$t" --knn-bench 1 --quiet --out "$TMP/$name.exr" --stats "$TMP/$name.json"
+      --max-radius 4 --threads "$t" --knn-bench 1 --quiet --out "$TMP/$name.ppm" --stats "$TMP/$name.json"
   local c n_ d
   c=$(json "$TMP/$name.json" pm.bench.clustered.state_hash)
   n_=$(json "$TMP/$name.json" pm.bench.naive.state_hash)
@@ -44,7 +44,7 @@ widest=scalar; has avx2 && widest=avx2; has avx512f && widest=avx512
 render() {  # render NAME ARGS...
   local name=$1; shift
   "$PREE" render "$ROOT/scenes/cornell3" --width 64 --height 48 --photons 20000 --estimator pm --k 50 --max-radius 4 \
-      --threads 2 --quiet --out "$TMP/$name.exr" --stats "$TMP/$name.json" "$@"
+      --threads 2 --quiet --out "$TMP/$name.ppm" --stats "$TMP/$name.json" "$@"
 }
 run render auto
 expect_eq "the default path is the widest the processor has" "$(json "$TMP/auto.json" pm.kernel)" "$widest"
@@ -52,7 +52,7 @@ for p in scalar avx2 avx512; do
   if lacks $p; then
     if render "k-$p" --knn-kernel $p 2>"$TMP/err"; then fail "--knn-kernel $p accepted without the processor's $p"; fi
     [ "$(wc -l <"$TMP/err")" -eq 1 ] || fail "--knn-kernel $p: not one error line: $(cat "$TMP/err")"
-    [ ! -e "$TMP/k-$p.exr" ] || fail "--knn-kernel $p: an image was written"
+    [ ! -e "$TMP/k-$p.ppm" ] || fail "--knn-kernel $p: an image was written"
     echo "ok: --knn-kernel $p refused: $(cat "$TMP/err")"
     continue
   fi

@@ -10,7 +10,7 @@
 render() {  # render NAME SCENE ARGS...: stats in $TMP/NAME.json
   local name=$1 scene=$2; shift 2
   run "$PREE" render "$ROOT/scenes/$scene" --width 64 --height 48 --photons 20000 --estimator pm \
-      --quiet --out "$TMP/$name.exr" --stats "$TMP/$name.json" "$@"
+      --quiet --out "$TMP/$name.ppm" --stats "$TMP/$name.json" "$@"
 }
 hashes() { echo "$(json "$TMP/$1.json" image_hash)/$(json "$TMP/$1.json" state_hash)"; }
 
