@@ -20,6 +20,6 @@ bench-count: build
 bench-convergence: build
 	@scripts/bench-convergence.sh $(BUILD)/pree $(BENCH_DIR)
 # The photon-map estimator against PPM (bias against convergence), the clustered search's speedup,
-# threads and task schedules (docs/photon_map.md).
+# threads and task schedules, the photon-path cap (docs/photon_map.md).
 bench-pm: build
 	@scripts/bench-pm.sh $(BUILD)/pree $(BENCH_DIR)

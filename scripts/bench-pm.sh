@@ -6,10 +6,11 @@
 # of its own (--photon-offset). Also the k-NN searches query against query (the clustered search
 # over the single-pass kd-tree search and over the oracle, k = 50 to 2000, 400k to 6.4M photons)
 # and the tracing/search/frame speedup for 1 and 2 threads with the dynamic and static task
-# schedules. CPU seconds (user + sys) where one thread runs: the machine is shared. Tables in
-# OUTDIR/pm_*.txt, the plots in OUTDIR/pm_bias.png, OUTDIR/pm_knn.png and OUTDIR/pm_threads.png.
+# schedules, and the photon-path cap's cost and bias (scripts/bench-pm-bounces.sh). CPU seconds
+# (user + sys) where one thread runs: the machine is shared. Tables in OUTDIR/pm_*.txt, the plots
+# in OUTDIR/pm_bias.png, OUTDIR/pm_knn.png and OUTDIR/pm_threads.png.
 # Usage: bench-pm.sh PREE OUTDIR [--quick]   (--quick: small sizes, for testing the script)
-# PM_SECTIONS="bias knn threads" (the default) picks the parts to run.
+# PM_SECTIONS="bias knn threads bounces" (the default) picks the parts to run.
 set -euo pipefail
 pree=$1; out=$2; quick=${3:-}
 mkdir -p "$out"
@@ -20,7 +21,7 @@ js() { python3 -c 'import json,sys; v=json.load(open(sys.argv[1]))
 for p in sys.argv[2].split("."): v=v[p]
 print(v)' "$1" "$2"; }
 
-sections=${PM_SECTIONS:-bias knn threads}
+sections=${PM_SECTIONS:-bias knn threads bounces}
 has() { [[ " $sections " == *" $1 "* ]]; }
 bias="$out/pm_bias.txt"
 if has bias; then
@@ -154,6 +155,8 @@ set xlabel "schedule / photons per task unit"
 plot "$out/pm_threads_speedup.dat" using 2:xtic(1) title "tracing", '' using 3 title "search", '' using 4 title "whole frame"
 GP
 fi
+
+if has bounces; then "$(dirname "$0")/bench-pm-bounces.sh" "$pree" "$out" $quick; fi
 
 [ -s "$bias" ] || exit 0   # the plot, from this run's or an earlier run's bias table
 for scene in cornell3 cornell-teapot; do

@@ -6,6 +6,7 @@
 #include <string.h>
 #include "photon_map.h"
 #include "photon_pass.h"
+#include "pm_estimate.h"
 
 typedef struct {
     photon_hits_t hits;
@@ -13,12 +14,12 @@ typedef struct {
     int failed;
 } unit_t;
 
-/* Trace unit u unless interrupted (done[u] set when traced): the seconds it took. */
+/* Trace unit u unless interrupted (done[u] set when traced): the thread's CPU seconds it took. */
 static double trace_unit(const scene_t *scene, const tracer_t *tr, const photon_map_opts_t *o, uint64_t u,
                          uint64_t units, unit_t *out, unsigned char *done)
 {
     if (o->interrupt && *o->interrupt) return 0;
-    const double t = omp_get_wtime();
+    const double t = pm_thread_cpu_now();
     uint64_t first = u * o->task, last = u + 1 == units ? o->photons : first + o->task;
     for (uint64_t k = first; k < last && !out->failed; k++) {
         const unsigned long long before = out->hits.segments;
@@ -27,11 +28,11 @@ static double trace_unit(const scene_t *scene, const tracer_t *tr, const photon_
         if (len > out->path_max) out->path_max = len;
     }
     done[u] = 1;
-    return omp_get_wtime() - t;
+    return pm_thread_cpu_now() - t;
 }
 
-/* The balance figures of units [0, done) and of the threads' busy seconds (busy[t] < 0: thread
- * t took no part). */
+/* The balance figures of units [0, done) and of the threads' busy CPU seconds (busy[t] < 0:
+ * thread t took no part). */
 static void balance(const unit_t *u, uint64_t done, const double *busy, int threads, photon_map_t *map)
 {
     for (uint64_t k = 0; k < done; k++) {

@@ -29,7 +29,7 @@ typedef struct {
     uint64_t emitted;                /* photons emitted (the estimator's N) */
     unsigned long long segments;     /* ray segments traced */
     /* The tracing's load balance (paper 001): the work of the longest task unit and photon
-     * path (segments; they repeat exactly), and the seconds the busiest and the least busy
+     * path (segments; they repeat exactly), and the CPU seconds the busiest and the least busy
      * thread spent tracing (the schedule's balance; they vary from run to run). */
     unsigned long long unit_segments_max;
     unsigned path_segments_max;

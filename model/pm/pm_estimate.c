@@ -8,12 +8,15 @@
 #include "fnv1a.h"
 #include "pm_search.h"
 
-double pm_cpu_now(void)
+static double cpu_clock(clockid_t id)
 {
     struct timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    clock_gettime(id, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
+
+double pm_cpu_now(void) { return cpu_clock(CLOCK_PROCESS_CPUTIME_ID); }
+double pm_thread_cpu_now(void) { return cpu_clock(CLOCK_THREAD_CPUTIME_ID); }
 
 /* The queries' share of the search seconds: the estimates' CPU time left out. */
 static void query_share(pm_stats_t *st)

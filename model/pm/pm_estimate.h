@@ -21,8 +21,9 @@ typedef struct {
     int bench_oracle_reps;  /* the oracle's repetitions in it (-1: bench_reps) */
 } pm_estimate_opts_t;
 
-/* CPU seconds of the whole process so far (every thread). */
+/* CPU seconds of the whole process so far (every thread), and of the calling thread. */
 double pm_cpu_now(void);
+double pm_thread_cpu_now(void);
 
 /* L[3 i .. 3 i + 2]: hit point i's radiance. 0, or -1 with err (out of memory, or a prefilter
  * path the processor lacks). */

@@ -55,7 +55,7 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
 {
     memset(res, 0, sizeof *res);
     render_stats_t *st = &res->stats;
-    const double t0 = omp_get_wtime();
+    const double t0 = omp_get_wtime(), cpu0 = render_cpu_seconds();
     if (opt->precision != PRECISION_DOUBLE) {
         snprintf(err, errlen, "the photon-map estimator runs in double precision only (--precision fp32 is the PREE's)");
         return -1;
@@ -100,6 +100,7 @@ int pm_render(const scene_t *scene, const render_options_t *opt, render_result_t
     free(L);
     photon_map_free(&map);
     st->sec_total = omp_get_wtime() - t0;
+    st->sec_cpu = render_cpu_seconds() - cpu0;
     st->peak_rss_kb = render_peak_rss_kb();
     return rc;
 }

@@ -3,7 +3,6 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 #include "knn_clustered.h"
 #include "knn_kdtree.h"
 #include "pm_search.h"
@@ -25,23 +24,15 @@ static void estimate(const hitpoints_t *h, size_t i, const photon_map_t *map, co
     L[3 * i + 2] = w.z * (f[2] * (1. / PREE_PI)) * s;
 }
 
-/* CPU seconds of the calling thread. */
-static double thread_cpu(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 /* The estimates of hit points idx[0..m) from their neighbours (point j's: c + j k, counts[j]);
  * returns the thread's CPU seconds they took, so that the searches' query time leaves them out. */
 static double estimate_block(const hitpoints_t *h, const uint32_t *idx, int m, const photon_map_t *map,
                              const photon_tree_t *tree, const knn_cand_t *c, const size_t *counts, size_t k,
                              double r2_short, double *L)
 {
-    const double t = thread_cpu();
+    const double t = pm_thread_cpu_now();
     for (int j = 0; j < m; j++) estimate(h, idx[j], map, tree, c + (size_t)j * k, counts[j], k, r2_short, L);
-    return thread_cpu() - t;
+    return pm_thread_cpu_now() - t;
 }
 
 /* The hit points one by one (the oracle, or the single-pass search on the photon tree), in

@@ -22,7 +22,7 @@ typedef struct {
 typedef struct {
     unsigned long long photons_stored;   /* diffuse photon hits in the map */
     /* The tracing's load balance (paper 001; photon_map.h): the longest task unit's and photon
-     * path's segments, the busiest and the least busy thread's seconds of tracing. */
+     * path's segments, the busiest and the least busy thread's CPU seconds of tracing. */
     unsigned long long unit_segments_max, path_segments_max;
     double thread_busy_max, thread_busy_min;
     unsigned long long k;                /* neighbours asked for */
