@@ -20,6 +20,7 @@ module pree_axi_fv #(
   parameter PhFifoAW = 1,
   parameter RingAW   = 2,
   parameter CountW   = 6,   // the wrapper's running counts: narrow, so that they wrap
+  parameter PhotonsPerCycle = 1,   // photon slots a beat (formal/axi_wide: 2, with RingAW 3)
   parameter StallMax = 3,   // fair back-pressure: the host takes a waiting result or response
   parameter Acct     = 0,   // 1: the candidate accounting's invariants (job formal/axi_acct)
   parameter CoverWrap = 0,  // 1: cover photons_done_o wrapping (job formal/axi_narrow: CountW 4)
@@ -32,7 +33,7 @@ module pree_axi_fv #(
   input wire [31:0] s_axil_wdata, input wire [3:0] s_axil_wstrb, input wire s_axil_wvalid,
   input wire s_axil_bready,
   input wire [11:0] s_axil_araddr, input wire s_axil_arvalid, input wire s_axil_rready,
-  input wire [255:0] s_axis_ph_tdata, input wire s_axis_ph_tlast, input wire s_axis_ph_tvalid,
+  input wire [256*PhotonsPerCycle-1:0] s_axis_ph_tdata, input wire s_axis_ph_tlast, input wire s_axis_ph_tvalid,
   input wire [32*NumPreu-1:0] s_axis_cand_tdata, input wire [4*NumPreu-1:0] s_axis_cand_tkeep,
   input wire s_axis_cand_tvalid,
   input wire [32+192+160-1:0] s_axis_hp_tdata, input wire s_axis_hp_tvalid,
@@ -40,6 +41,7 @@ module pree_axi_fv #(
 );
 
   localparam HpRecW = 32 + 192 + 160;
+  localparam P = PhotonsPerCycle;
   localparam [31:0] IDX_ROOM = (32'd1 << IdxAW) - NumPreu;
 
   wire s_axil_awready, s_axil_wready, s_axil_bvalid, s_axil_arready, s_axil_rvalid;
@@ -51,7 +53,8 @@ module pree_axi_fv #(
 
   pree_axi #(
     .NumPreu(NumPreu), .HpAW(HpAW), .HpBankW(HpBankW), .IdxAW(IdxAW), .PxAW(PxAW),
-    .PxBankW(PxBankW), .CntW(CntW), .PhFifoAW(PhFifoAW), .RingAW(RingAW), .CountW(CountW)
+    .PxBankW(PxBankW), .CntW(CntW), .PhFifoAW(PhFifoAW), .RingAW(RingAW), .CountW(CountW),
+    .PhotonsPerCycle(P)
   ) u_dut (
     .aclk(aclk), .aresetn(aresetn),
     .s_axil_awaddr(s_axil_awaddr), .s_axil_awvalid(s_axil_awvalid), .s_axil_awready(s_axil_awready),
@@ -86,7 +89,7 @@ module pree_axi_fv #(
     .f_aw_out_o(f_aw_out), .f_w_out_o(f_w_out), .f_ar_out_o(f_ar_out), .f_wwait_o(f_wwait),
     .f_rwait_o(f_rwait));
 
-  pree_faxis #(.DataW(256), .SrcIsDut(0)) f_ph (
+  pree_faxis #(.DataW(256*P), .SrcIsDut(0)) f_ph (
     .clk_i(aclk), .rst_ni(aresetn), .tvalid(s_axis_ph_tvalid), .tready(s_axis_ph_tready),
     .tdata(s_axis_ph_tdata), .tlast(s_axis_ph_tlast), .tkeep(1'b1), .tuser(1'b1), .f_stall_o());
   pree_faxis #(.DataW(32*NumPreu), .KeepW(4*NumPreu), .SrcIsDut(0)) f_cand (
@@ -112,17 +115,27 @@ module pree_axi_fv #(
   (* keep *) wire        f_t_cmd_done;
   (* keep *) wire [31:0] f_t_ci;                   // Live: a command's items issued
   (* keep *) wire        f_t_head_left;            // Live: the FIFO head has a photon lacking candidates
+  (* keep *) wire [P-1:0] f_t_gone;                // the head beat's slots given to the engine
+  (* keep *) wire        f_t_core_take;            // photons given to the engine in this cycle
+  (* keep *) wire [P*CntW-1:0]   f_t_give_n;       // their N^P, slot by slot (0: not given)
+  (* keep *) wire [P*CountW-1:0] f_t_head_end;     // the head beat's candidate ends
   // Acct only (axi_acct/taps_acct.ys, after memory_map): the wrapper's copy of photons_done_o,
-  // the ring of in-flight photons' candidate ends and the photon FIFO's ends.
+  // the ring of in-flight photons' candidate ends and the photon FIFO's ends and N^P (P slots an
+  // entry).
   (* keep *) wire [CountW-1:0] f_t_wdone;
-  (* keep *) wire [CountW*(1<<RingAW)-1:0]   f_t_ring;
-  (* keep *) wire [CountW*(1<<PhFifoAW)-1:0] f_t_phf_end;
+  (* keep *) wire [CountW*(1<<RingAW)-1:0]     f_t_ring;
+  (* keep *) wire [P*CountW*(1<<PhFifoAW)-1:0] f_t_phf_end;
+  (* keep *) wire [P*CntW*(1<<PhFifoAW)-1:0]   f_t_phf_n;
 
   // ---------------------------------------------------------------------------------------------
-  // The environment (the host's contract, docs/integration.md): a photon's N^P fits the index
+  // The environment (the host's contract, docs/integration.md): each slot's N^P fits the index
   // table.
-  always @* if (aresetn && s_axis_ph_tvalid)
-    assume ({{(32-CntW){1'b0}}, s_axis_ph_tdata[192 +: CntW]} <= IDX_ROOM);
+  always @* begin : n_fits
+    integer s;
+    for (s = 0; s < P; s = s + 1)
+      if (aresetn && s_axis_ph_tvalid)
+        assume ({{(32-CntW){1'b0}}, s_axis_ph_tdata[256*s + 192 +: CntW]} <= IDX_ROOM);
+  end
 
   // ---------------------------------------------------------------------------------------------
   // Invariants of the wrapper's state (they hold from reset; stated for induction).
@@ -137,56 +150,110 @@ module pree_axi_fv #(
     assert (f_phf_n <= (1 << PhFifoAW));
     assert (f_fly < (1 << RingAW));
   end
+  // A photon is passed on only after its candidates: every slot given (N^P > 0 to the engine)
+  // ends at or before the candidates written (distances modulo 2^CountW).
+  always @* begin : given_written
+    integer s;
+    reg [CountW-1:0] ahead;
+    for (s = 0; s < P; s = s + 1) begin
+      ahead = f_t_wr_cnt - f_t_head_end[CountW*s +: CountW];
+      if (aresetn && f_t_core_take && f_t_give_n[CntW*s +: CntW] != 0) assert (!ahead[CountW-1]);
+    end
+  end
 
   // ---------------------------------------------------------------------------------------------
-  // Acct: the candidate accounting's invariants through wrap-around (job axi_acct).
-  // Measured from the candidates retired (ret): the candidate ends of the photons in flight
-  // (ring, oldest first), then of the FIFO's (oldest first), rise to cum_in, the last photon's;
-  // every photon in flight has its candidates written; the written candidates not yet retired
-  // fit the table.
-  localparam RING = 1 << RingAW, PHF = 1 << PhFifoAW;
-  localparam [31:0] SPAN = IDX_ROOM * (RING + PHF);   // below 2^CountW
+  // Acct: the candidate accounting's invariants through wrap-around (jobs axi_acct and, at
+  // PhotonsPerCycle 2, axi_acct_wide). Measured from the candidates retired (ret): the candidate
+  // ends of the photons in flight (ring, oldest first), then of the FIFO's photons (oldest first;
+  // one a beat at PhotonsPerCycle 1; with several slots, a beat's slots with N^P > 0 in slot
+  // order, in the head beat those not yet given), rise, each by at most a table's room, to
+  // cum_in, the last photon's; every photon in flight has its candidates written; the written
+  // candidates not yet retired fit the table. With several slots besides: the ends rise strictly
+  // (N^P > 0), a FIFO photon's end is the one before it plus its own N^P (the end before the
+  // first is ret), and the beats' invariants below. (Kept to the first set at one slot: that
+  // proof is already the suite's slowest at k = 6.)
+  localparam RING = 1 << RingAW, PHF = 1 << PhFifoAW, NCH = RING + PHF * P;
+  localparam [31:0] SPAN = (P == 1) ? IDX_ROOM * (RING + PHF)            // below 2^CountW
+                                    : (32'd1 << IdxAW) + IDX_ROOM * PHF * P;
   // The photons whose candidates are not retired: from the wrapper's copy of photons_done_o
   // (w_done, which ret follows a cycle late) to the photons given.
   wire [CountW-1:0] f_unret = f_t_given - f_t_wdone;
 
   generate
     if (Acct != 0) begin : g_acct
-      reg [CountW-1:0] f_end [0:RING+PHF-1];   // the ends in order; f_n of them
-      reg [CountW-1:0] f_dist [0:RING+PHF-1];  // each end - ret, modulo 2^CountW
-      reg [3:0] f_n;
+      reg [CountW-1:0] f_end [0:NCH-1];    // the ends in order; f_n of them
+      reg [CountW-1:0] f_dist [0:NCH-1];   // each end - ret, modulo 2^CountW
+      reg [CntW-1:0]   f_np [0:NCH-1];     // a FIFO photon's N^P (0: a photon in flight)
+      reg [CountW-1:0] f_prev [0:NCH-1];   // the distance before each (0 before the first)
+      reg [4:0] f_n;
       wire [CountW-1:0] f_d_cum = f_t_cum_in - f_t_ret, f_d_wr = f_t_wr_cnt - f_t_ret;
       wire [CountW-1:0] f_lag = f_t_done - f_t_wdone;
       always @* begin : chain
-        integer i, k;
-        f_n = 4'd0;
-        for (i = 0; i < RING + PHF; i = i + 1) begin f_end[i] = 0; f_dist[i] = 0; end
+        integer i, k, e, sl;
+        reg [CntW-1:0] np;
+        f_n = 5'd0;
+        for (i = 0; i < NCH; i = i + 1) begin f_end[i] = 0; f_dist[i] = 0; f_np[i] = 0; end
         for (i = 0; i < RING; i = i + 1)
           if (i < f_unret) begin
             k = (f_t_wdone + i) % RING;
-            f_end[f_n] = f_t_ring[CountW*k +: CountW]; f_n = f_n + 4'd1;
+            f_end[f_n] = f_t_ring[CountW*k +: CountW]; f_n = f_n + 5'd1;
           end
-        for (i = 0; i < PHF; i = i + 1)
-          if (i < f_phf_n) begin
-            k = (f_t_phf_rp + i) % PHF;
-            f_end[f_n] = f_t_phf_end[CountW*k +: CountW]; f_n = f_n + 4'd1;
+        for (e = 0; e < PHF; e = e + 1)
+          if (e < f_phf_n) begin
+            k = (f_t_phf_rp + e) % PHF;
+            for (sl = 0; sl < P; sl = sl + 1) begin
+              np = f_t_phf_n[CntW*(k*P + sl) +: CntW];
+              if (P == 1 || (np != 0 && !(e == 0 && f_t_gone[sl]))) begin
+                f_end[f_n] = f_t_phf_end[CountW*(k*P + sl) +: CountW];
+                f_np[f_n] = np; f_n = f_n + 5'd1;
+              end
+            end
           end
-        for (i = 0; i < RING + PHF; i = i + 1) f_dist[i] = f_end[i] - f_t_ret;
+        for (i = 0; i < NCH; i = i + 1) f_dist[i] = f_end[i] - f_t_ret;
+        f_prev[0] = {CountW{1'b0}};
+        for (i = 1; i < NCH; i = i + 1) f_prev[i] = f_dist[i-1];
       end
       always @* if (aresetn && f_t_rst_n) begin : acct
         integer i;
         assert (f_d_cum <= SPAN);
-        assert (f_lag <= 1);
+        assert (f_lag <= P);
         assert (f_d_wr <= (32'd1 << IdxAW));
-        for (i = 0; i < RING + PHF; i = i + 1)
+        for (i = 0; i < NCH; i = i + 1)
           if (i < f_n) begin
             assert (f_dist[i] <= f_d_cum);
-            if (i > 0) assert (f_dist[i] >= f_dist[i-1] && f_dist[i] - f_dist[i-1] <= IDX_ROOM);
-            if (i == 0) assert (f_dist[i] <= IDX_ROOM);
+            assert ((P == 1 ? f_dist[i] >= f_prev[i] : f_dist[i] > f_prev[i]) &&
+                    f_dist[i] - f_prev[i] <= IDX_ROOM);
             if (i == f_n - 1) assert (f_end[i] == f_t_cum_in);
             if (i < f_unret) assert (f_dist[i] <= f_d_wr);
+            if (P > 1 && i >= f_unret) assert (f_dist[i] - f_prev[i] == f_np[i]);
           end
-        if (f_n == 4'd0) assert (f_d_cum == 0);
+        if (f_n == 5'd0) assert (f_d_cum == 0);
+      end
+      // The FIFO's beats: each holds a photon; the head beat's slots given are photons, a prefix
+      // of its photons in slot order, and not all of them (the beat leaves with its last).
+      always @* if (P > 1 && aresetn && f_t_rst_n) begin : beats
+        integer e, k, a, b;
+        reg any, todo;
+        if (f_phf_n == 0) assert (f_t_gone == 0);
+        for (e = 0; e < PHF; e = e + 1)
+          if (e < f_phf_n) begin
+            k = (f_t_phf_rp + e) % PHF;
+            any = 1'b0; todo = 1'b0;
+            for (a = 0; a < P; a = a + 1)
+              if (f_t_phf_n[CntW*(k*P + a) +: CntW] != 0) begin
+                any = 1'b1;
+                if (e == 0 && !f_t_gone[a]) todo = 1'b1;
+              end
+            assert (any);
+            if (e == 0) begin
+              assert (todo);
+              for (a = 0; a < P; a = a + 1) begin
+                if (f_t_gone[a]) assert (f_t_phf_n[CntW*(k*P + a) +: CntW] != 0);
+                for (b = a + 1; b < P; b = b + 1)
+                  if (f_t_gone[b] && f_t_phf_n[CntW*(k*P + a) +: CntW] != 0) assert (f_t_gone[a]);
+              end
+            end
+          end
       end
     end
   endgenerate
@@ -205,6 +272,22 @@ module pree_axi_fv #(
     cover (irq_o && f_t_irq[0]);                                 // a batch-done interrupt
     cover (f_t_state == 3'd5 && f_t_cmd_done);                   // a radiance pass ends
   end
+  reg [CountW-1:0] f_done_prev_q = {CountW{1'b0}}, f_given_prev_q = {CountW{1'b0}};
+  always @(posedge aclk) begin f_done_prev_q <= f_t_done; f_given_prev_q <= f_t_given; end
+
+  // The wide intake (PhotonsPerCycle 2): two photons given in one cycle; a beat split (slot 0
+  // given, slot 1 waiting for its candidates); a beat whose slot 0 is empty and slot 1 not taken.
+  generate
+    if (P > 1) begin : g_cover_wide
+      always @* if (aresetn && f_t_rst_n) begin
+        cover (f_t_done - f_done_prev_q == 2);                   // photons_done_o up by 2
+        cover (f_t_given - f_given_prev_q == 2);
+        cover (f_t_gone[0] && !f_t_gone[1]);
+        cover (s_axis_ph_tvalid && s_axis_ph_tready && s_axis_ph_tdata[192 +: CntW] == 0 &&
+               s_axis_ph_tdata[256 + 192 +: CntW] != 0);
+      end
+    end
+  endgenerate
 
   // ---------------------------------------------------------------------------------------------
   // Live: bounded response. While work is pending (a photon offered, a photon in the FIFO or in the

@@ -7,8 +7,12 @@
 // The engine's freedom (free inputs of the proof, constrained by assumptions):
 //   ph_ready_o     any value in update mode (0 in radiance mode); a waiting photon is taken
 //                  within TAKE_MAX cycles (fairness).
-//   photons_done_o counts photons taken and finished, in order, at most one a cycle; the oldest
-//                  photon in flight is finished within DONE_MAX cycles (fairness).
+//   photons_done_o counts photons taken (the slots of a handshake with N^P > 0, any of the
+//                  PhotonsPerCycle) and finished, in order, up to DONE_STEP a cycle (the engine's
+//                  read lanes each may carry a photon's last entry: up to NumPreu; the stub
+//                  allows min(NumPreu, PhotonsPerCycle), one at the paper's intake, where a
+//                  larger step costs the accounting proof more than it runs); the oldest photon
+//                  in flight is finished within DONE_MAX cycles (fairness).
 //   idle_o         honest: high exactly when no photon is in flight and no radiance pass runs;
 //                  a pass started by rad_start_i ends within RAD_MAX cycles.
 //   hp_rdata_o, px_rdata_o, cnt_o  any value.
@@ -73,11 +77,14 @@ module pree_top #(
 );
 
   localparam TAKE_MAX = 3, DONE_MAX = 4, RAD_MAX = 3;
+  localparam DONE_STEP = PhotonsPerCycle < NumPreu ? PhotonsPerCycle : NumPreu;
   localparam IDX_N = 1 << IdxAW;
-  localparam FLY_N = 8;                     // photons in flight the stub can hold
+  localparam FLY_N = 16;                    // photons in flight the stub can hold (above the
+                                            // wrapper's ring, which the harness checks)
 
   // Free choices of the engine.
-  (* anyseq *) wire f_ready, f_done, f_rad_end;
+  (* anyseq *) wire f_ready, f_rad_end;
+  (* anyseq *) wire [CountW-1:0] f_done_n;  // photons finished in this cycle
   (* anyseq *) wire [PxAW+191+StateW:0] f_hp_rdata;
   (* anyseq *) wire [95:0] f_px_rdata;
   (* anyseq *) wire [(7+NumPreu)*CtrW-1:0] f_cnt;
@@ -90,7 +97,14 @@ module pree_top #(
   reg         rad_q;
   wire [CountW-1:0] fly = taken_q - done_q;
   wire        take = ph_valid_i && ph_ready_o;
-  wire        done = f_done && fly != {CountW{1'b0}};
+  wire        done = f_done_n != {CountW{1'b0}};
+  reg  [CountW-1:0] take_n;                 // photons in the handshake: slots with N^P > 0
+  always @* begin : slots
+    integer s;
+    take_n = {CountW{1'b0}};
+    for (s = 0; s < PhotonsPerCycle; s = s + 1)
+      if (ph_n_i[s*CntW +: CntW] != {CntW{1'b0}}) take_n = take_n + 1'b1;
+  end
   assign ph_ready_o     = f_ready && !mode_i;
   assign photons_done_o = done_q;
   assign idle_o         = fly == {CountW{1'b0}} && !rad_q;
@@ -102,8 +116,8 @@ module pree_top #(
     if (!rst_ni) begin
       taken_q <= {CountW{1'b0}}; done_q <= {CountW{1'b0}}; rad_q <= 1'b0;
     end else begin
-      taken_q <= taken_q + take;
-      done_q  <= done_q + done;
+      taken_q <= take ? taken_q + take_n : taken_q;
+      done_q  <= done_q + f_done_n;
       rad_q   <= rad_start_i || (rad_q && !f_rad_end);
     end
 
@@ -117,6 +131,7 @@ module pree_top #(
   always @* begin
     assume (take_wait_q < TAKE_MAX && done_wait_q < DONE_MAX && rad_wait_q < RAD_MAX);
     assume (fly < FLY_N);
+    assume (f_done_n <= DONE_STEP && f_done_n <= fly);
   end
 
   // The wrapper's obligations on the engine's inputs.
