@@ -58,37 +58,67 @@ void knn_sort(knn_cand_t *c, size_t n)
     insertion(c, lo, hi);
 }
 
+/* a before b in (d2, photon) order for d2 >= 0 (not NaN): the bits of such doubles order as
+ * their values, so one branch-free integer comparison decides it. */
+static inline int before(const knn_cand_t *a, const knn_cand_t *b)
+{
+    uint64_t x, y;
+    memcpy(&x, &a->d2, sizeof x);
+    memcpy(&y, &b->d2, sizeof y);
+    return (x < y) | ((x == y) & (a->photon < b->photon));
+}
+
+/* Insertion sort of c[0..n) where each element lies close to its place (the buckets' order):
+ * an element already after its predecessor costs one comparison. */
+static void sort_nearly(knn_cand_t *c, size_t n)
+{
+    for (size_t i = 1; i < n; i++) {
+        if (!before(&c[i], &c[i - 1])) continue;
+        const knn_cand_t v = c[i];
+        size_t j = i;
+        do { c[j] = c[j - 1]; j--; } while (j > 0 && before(&v, &c[j - 1]));
+        c[j] = v;
+    }
+}
+
 size_t knn_select_buckets(const knn_cand_t *c, size_t n, size_t k, double max_d2, knn_buckets_t *b, knn_cand_t *out)
 {
-    const size_t got = n < k ? n : k;
+    const size_t got = n < k ? n : k, nb = 2 * n;
     if (got == 0) return 0;
     if (grow_array((void **)&b->sorted, &b->sorted_cap, n, sizeof *b->sorted) ||
-        grow_array((void **)&b->count, &b->count_cap, n + 1, sizeof *b->count))
+        grow_array((void **)&b->count, &b->count_cap, nb, sizeof *b->count))
         return (size_t)-1;
-    /* Bucket j holds d2 in [j, j + 1) * max_d2 / n: monotone in d2, so bucket order is d2 order
-     * and equal d2 share a bucket. */
-    const double scale = max_d2 > 0 ? (double)n / max_d2 : 0;
+    /* Bucket j holds d2 in [j, j + 1) * max_d2 / nb: monotone in d2, so bucket order is d2 order
+     * and equal d2 share a bucket. Twice as many buckets as candidates: few share one. */
+    const double scale = max_d2 > 0 ? (double)nb / max_d2 : 0;
     uint32_t *count = b->count;
-    memset(count, 0, (n + 1) * sizeof *count);
+    memset(count, 0, nb * sizeof *count);
+    for (size_t i = 0; i < n; i++) {
+        const size_t j = (size_t)(c[i].d2 * scale);
+        count[j < nb ? j : nb - 1]++;
+    }
+    /* Each bucket's start, up to the last one needed: the one that holds the got-th candidate. */
+    size_t last = 0, end = 0;                /* end: the candidates through the last bucket */
+    uint32_t most = 0;                       /* the most a bucket through it holds */
+    for (;; last++) {
+        const uint32_t size = count[last];
+        count[last] = (uint32_t)end;
+        end += size;
+        most = size > most ? size : most;
+        if (end >= got) break;
+    }
     for (size_t i = 0; i < n; i++) {
         size_t j = (size_t)(c[i].d2 * scale);
-        count[(j < n ? j : n - 1) + 1]++;
-    }
-    size_t last = 0;                         /* the bucket that holds the got-th candidate */
-    for (size_t j = 1; j <= n; j++) {
-        count[j] += count[j - 1];
-        if (count[j - 1] < got) last = j - 1;
-    }
-    for (size_t i = 0; i < n; i++) {   /* only the buckets through the last are needed */
-        size_t j = (size_t)(c[i].d2 * scale);
-        j = j < n ? j : n - 1;
+        j = j < nb ? j : nb - 1;
         if (j <= last) b->sorted[count[j]++] = c[i];
     }
-    /* count[j] is now bucket j's end: sort each bucket through the last one, copy the first got. */
-    for (size_t j = 0, lo = 0; j <= last; lo = count[j++]) {
-        if (count[j] - lo > 16) knn_sort(b->sorted + lo, count[j] - lo);
-        else if (count[j] - lo > 1) insertion(b->sorted, lo, count[j]);
-    }
+    /* count[j] is now bucket j's end. Buckets of more than 16 (equal or crowded d2) are
+     * quicksorted; then one insertion pass over all of them orders the small ones (each
+     * element moves within its bucket only). */
+    if (most > 16)
+        for (size_t j = 0, lo = 0; j <= last; lo = count[j++])
+            if (count[j] - lo > 16) knn_sort(b->sorted + lo, count[j] - lo);
+    sort_nearly(b->sorted, end);
     memcpy(out, b->sorted, got * sizeof *out);
     return got;
 }

@@ -4,10 +4,12 @@
  *
  * knn_select sorts every candidate (qsort): the oracle's selection and the unit tests' brute
  * force. knn_select_buckets is the fast searches' own, linear in the candidates: a counting sort
- * by d2 into as many buckets as candidates (photons on a surface are close to uniform in d2),
- * then a sort of the buckets up to the one holding the k-th only (knn_sort: quicksort,
- * insertion sort below 16). The order is a strict total order (photon indices differ), so every
- * route gives the same k in the same order. */
+ * by d2 into twice as many buckets as candidates (photons on a surface are close to uniform in
+ * d2, so few buckets hold more than one), of the buckets up to the one holding the k-th only;
+ * then one insertion pass over them, in which an element already after its predecessor costs
+ * one integer comparison (buckets of more than 16, from equal or crowded d2, are quicksorted
+ * first: knn_sort). The order is a strict total order (photon indices differ), so every route
+ * gives the same k in the same order. */
 #ifndef PREE_KNN_SELECT_H
 #define PREE_KNN_SELECT_H
 
