@@ -49,11 +49,12 @@ static size_t kernel_avx2(const photon_tree_t *t, const kd_range_t *r, size_t nr
             const __m256 dz = _mm256_sub_ps(qz, _mm256_maskload_ps(t->fz + i, live));
             const __m256 d2 = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(dx, dx), _mm256_mul_ps(dy, dy)),
                                             _mm256_mul_ps(dz, dz));
+            const __m256 near = _mm256_and_ps(_mm256_cmp_ps(d2, bound, _CMP_LE_OQ), _mm256_castsi256_ps(live));
+            if (_mm256_testz_ps(near, near)) continue;   /* none within the bound: no normals read */
             const __m256 dot = _mm256_add_ps(_mm256_add_ps(_mm256_mul_ps(nx, _mm256_maskload_ps(t->nx + i, live)),
                                                            _mm256_mul_ps(ny, _mm256_maskload_ps(t->ny + i, live))),
                                              _mm256_mul_ps(nz, _mm256_maskload_ps(t->nz + i, live)));
-            const __m256 ok = _mm256_and_ps(_mm256_cmp_ps(d2, bound, _CMP_LE_OQ), _mm256_cmp_ps(dot, cosv, _CMP_GT_OQ));
-            unsigned m = (unsigned)_mm256_movemask_ps(_mm256_and_ps(ok, _mm256_castsi256_ps(live)));
+            unsigned m = (unsigned)_mm256_movemask_ps(_mm256_and_ps(near, _mm256_cmp_ps(dot, cosv, _CMP_GT_OQ)));
             for (; m; m &= m - 1) out[c++] = (uint32_t)(i + (size_t)__builtin_ctz(m));
         }
     return c;
@@ -78,11 +79,12 @@ static size_t kernel_avx512(const photon_tree_t *t, const kd_range_t *r, size_t 
             const __m512 dz = _mm512_sub_ps(qz, _mm512_maskz_loadu_ps(live, t->fz + i));
             const __m512 d2 = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(dx, dx), _mm512_mul_ps(dy, dy)),
                                             _mm512_mul_ps(dz, dz));
-            const __m512 dot = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(nx, _mm512_maskz_loadu_ps(live, t->nx + i)),
-                                                           _mm512_mul_ps(ny, _mm512_maskz_loadu_ps(live, t->ny + i))),
-                                             _mm512_mul_ps(nz, _mm512_maskz_loadu_ps(live, t->nz + i)));
-            const __mmask16 m = _mm512_mask_cmp_ps_mask(_mm512_mask_cmp_ps_mask(live, d2, bound, _CMP_LE_OQ), dot,
-                                                        cosv, _CMP_GT_OQ);
+            const __mmask16 near = _mm512_mask_cmp_ps_mask(live, d2, bound, _CMP_LE_OQ);
+            if (!near) continue;   /* none within the bound: no normals read */
+            const __m512 dot = _mm512_add_ps(_mm512_add_ps(_mm512_mul_ps(nx, _mm512_maskz_loadu_ps(near, t->nx + i)),
+                                                           _mm512_mul_ps(ny, _mm512_maskz_loadu_ps(near, t->ny + i))),
+                                             _mm512_mul_ps(nz, _mm512_maskz_loadu_ps(near, t->nz + i)));
+            const __mmask16 m = _mm512_mask_cmp_ps_mask(near, dot, cosv, _CMP_GT_OQ);
             /* Compressed in a register and stored whole (the output has 16 entries of slack). */
             const __m512i pos = _mm512_add_epi32(_mm512_set1_epi32((int)i), iota);
             _mm512_storeu_si512((void *)(out + c), _mm512_maskz_compress_epi32(m, pos));
