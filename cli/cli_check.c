@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cli_check.c: `pree check SCENE [options]`: parse the scene, load its meshes, validate it
  * (values, camera rays for the image size) and report what a render would need (hit points,
- * memory, triangles, lights) without building the BVH or tracing a ray. Exit 0 when a render
- * could start, 1 when it could not (the one-line reason on stderr), 2 on a usage error. */
+ * memory, triangles, lights) without rendering: the hit points are estimated from the eye rays
+ * of a sample of the pixels (the BVH is built for them). Exit 0 when a render could start, 1
+ * when it could not (the one-line reason on stderr), 2 on a usage error. */
 #include <math.h>
 #include <stdio.h>
 #include "cli.h"
@@ -10,6 +11,40 @@
 #include "eye_pass.h"
 #include "mem_check.h"
 #include "scene.h"
+#include "tracer.h"
+
+/* The pixels a hit-point estimate traces at most (EYE_RAYS_MAX times as many rays at most). */
+#define CHECK_SAMPLE_PIXELS 4800
+
+typedef struct {
+    int stride;                 /* every stride-th pixel across and down (eye_pass.h) */
+    unsigned long long pixels;  /* the pixels traced */
+    unsigned long long hit_points;   /* their hit points */
+} hp_sample_t;
+
+/* The eye pass over a sample of the pixels (the smallest stride that traces at most
+ * CHECK_SAMPLE_PIXELS), the same rays as the render's for those pixels: 0, or -1 with err. */
+static int sample_hit_points(const scene_t *scene, const render_options_t *opt, hp_sample_t *hs, char *err,
+                             size_t errlen)
+{
+    const unsigned long long w = (unsigned long long)opt->width, h = (unsigned long long)opt->height;
+    int s = 1;
+    while ((w / s) * (h / s) > CHECK_SAMPLE_PIXELS) s++;
+    const unsigned long long nx = w > (unsigned long long)(s / 2) ? (w - s / 2 + s - 1) / s : 0;
+    const unsigned long long ny = h > (unsigned long long)(s / 2) ? (h - s / 2 + s - 1) / s : 0;
+    *hs = (hp_sample_t){s, nx * ny, 0};
+    tracer_t *tr = tracer_create(scene, NULL, err, errlen);
+    if (!tr) return -1;
+    const eye_pass_opts_t eo = {opt->width, opt->height, opt->eye_rays, 0, s};
+    hitpoints_t hp = {0};
+    double *emitted = NULL;
+    eye_stats_t es;
+    const int rc = eye_pass(scene, tr, &eo, &hp, &emitted, &es, NULL, err, errlen);
+    hs->hit_points = hp.n;
+    hitpoints_free(&hp);
+    tracer_destroy(tr);
+    return rc;
+}
 
 static void check_usage(FILE *f)
 {
@@ -20,7 +55,8 @@ static void check_usage(FILE *f)
         "(--photons, --grid, ...) are accepted and checked; see 'pree render --help'.\n");
 }
 
-static void report(const char *path, const scene_t *s, const render_options_t *opt, uint64_t mem)
+static void report(const char *path, const scene_t *s, const render_options_t *opt, uint64_t mem,
+                   const hp_sample_t *hs)
 {
     unsigned long long tris = 0, area = 0;
     for (int m = 0; m < s->num_meshes; m++) tris += (unsigned long long)s->meshes[m].num_triangles;
@@ -30,8 +66,9 @@ static void report(const char *path, const scene_t *s, const render_options_t *o
            s->num_materials, s->num_spheres, s->num_meshes, tris, s->num_lights);
     printf("point_lights %llu\narea_lights %llu\nmax_depth %d\nimage %dx%d\n", (unsigned long long)s->num_lights - area,
            area, s->max_depth, opt->width, opt->height);
-    printf("hit_points_estimate %llu (one an eye ray; mirrors and glass may add more)\n",
-           pix * (unsigned long long)(opt->eye_rays > 1 ? opt->eye_rays : 1));
+    const double per_pixel = hs->pixels ? (double)hs->hit_points / (double)hs->pixels : 0;
+    printf("hit_points_estimate %.0f (the eye rays of %llu of the %llu pixels traced, 1 in %d across and down: "
+           "%.4g hit points a pixel)\n", per_pixel * (double)pix, hs->pixels, pix, hs->stride, per_pixel);
     printf("memory_estimate_bytes %llu (%.2f GiB)\n", (unsigned long long)mem, (double)mem / (1u << 30));
     /* Each material as the engine takes it (an MTL material as the MTL rule classified it). */
     static const char *const kinds[] = {"diffuse", "mirror", "glass"};
@@ -108,12 +145,14 @@ int pree_cmd_check(int argc, char **argv)
     uint64_t mem = mem_estimate_start(tris, (uint64_t)opt.width * (uint64_t)opt.height,
                                       opt.eye_rays > 1 ? (uint64_t)opt.eye_rays : 1);
     int rc = 0;
+    hp_sample_t hs;
     if (eye_camera_check(&scene.camera, opt.width, opt.height, err, sizeof err) ||
-        mem_check(mem, opt.max_memory, MEM_START_WHAT, err, sizeof err)) {
+        mem_check(mem, opt.max_memory, MEM_START_WHAT, err, sizeof err) ||
+        sample_hit_points(&scene, &opt, &hs, err, sizeof err)) {
         fprintf(stderr, "pree check: %s: %s\n", scene_path, err);
         rc = 1;
     } else {
-        report(scene_path, &scene, &opt, mem);
+        report(scene_path, &scene, &opt, mem, &hs);
     }
     scene_free(&scene);
     return rc;

@@ -24,7 +24,7 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     eye_stats_t es;
     phase(opt, "eye pass");
     res->hp.with_object = 1;   /* the clusters group by object */
-    const eye_pass_opts_t eo = {opt->width, opt->height, opt->eye_rays, !opt->hide_lights};
+    const eye_pass_opts_t eo = {opt->width, opt->height, opt->eye_rays, !opt->hide_lights, 1};
     if (eye_pass(scene, tr, &eo, &res->hp, &res->emitted, &es, opt->interrupt, err, errlen)) return -1;
     st->sec_eye = omp_get_wtime() - t;
     st->hit_points = res->hp.n;

@@ -137,6 +137,7 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *eo
     camera_axes(cam, w, h, &dir, &cx, &cy);
     if (eye_camera_check(cam, w, h, err, errlen)) return -1;
     const size_t npix = (size_t)w * (size_t)h;
+    const int s = eo->stride;
     emitters_t em = {NULL, 0, 0};
     double *emitted = NULL;
     *emitted_out = NULL;
@@ -162,7 +163,8 @@ int eye_pass(const scene_t *scene, const tracer_t *tr, const eye_pass_opts_t *eo
                 if (stopped || stop_requested(stop)) { stopped = 1; continue; }
                 c.out = &rows[y - y0];
                 c.out->with_object = out->with_object;
-                for (int x = 0; x < w; x++) eye_pixel(&c, cam, dir, cx, cy, w, h, eo->rays, x, y);
+                if (s > 1 && y % s != s / 2) continue;
+                for (int x = s > 1 ? s / 2 : 0; x < w; x += s > 1 ? s : 1) eye_pixel(&c, cam, dir, cx, cy, w, h, eo->rays, x, y);
             }
 #pragma omp critical
             {

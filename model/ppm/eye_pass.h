@@ -36,6 +36,8 @@ typedef struct {
     int width, height;   /* the image */
     int rays;            /* eye rays a pixel, 1..EYE_RAYS_MAX (0 or 1: one, through the centre) */
     int see_lights;      /* 1: the emitted radiance the eye paths meet (*emitted) */
+    int stride;          /* 0 or 1: every pixel; s > 1: the pixels (x, y) with x mod s = y mod s = s / 2
+                          * only, a sample (pree check's hit-point estimate) */
 } eye_pass_opts_t;
 
 /* 0 when every eye ray of a width x height image starts within +-1e17 and has a direction

@@ -78,7 +78,7 @@ int render_setup_eye(render_session_t *s, const char **phase, char *err, size_t 
     st->sec_bvh = omp_get_wtime() - t;
     t = step_begin(phase, "eye pass", "eye");
     eye_stats_t es;
-    const eye_pass_opts_t eo = {opt->width, opt->height, opt->eye_rays, !opt->hide_lights};
+    const eye_pass_opts_t eo = {opt->width, opt->height, opt->eye_rays, !opt->hide_lights, 1};
     if (eye_pass(s->scene, s->tr, &eo, &res->hp, &res->emitted, &es, opt->interrupt, err, errlen)) return -1;
     if (opt->checkpoint || opt->resume) s->fingerprint = checkpoint_fingerprint(s->scene, opt, &res->hp);
     st->sec_eye = omp_get_wtime() - t;
