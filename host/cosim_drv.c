@@ -296,14 +296,18 @@ static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32
     return d->hung ? -1 : 0;
 }
 
+/* Without the scheduler: the photon's candidates reordered against bank conflicts, then sent. */
+static int send_direct(void *user, const preu_photon_t *ph, const uint32_t *hps, size_t n)
+{
+    cosim_drv_t *d = user;
+    cosim_reorder(&d->ro, d->cand, hps, n);
+    send(d, ph, n, 1, 0);
+    return d->hung ? -1 : 0;
+}
+
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
 {
-    const int r = cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, d->err, sizeof d->err);
-    if (r < 0) return -1;
-    if (r == 1) {
-        cosim_reorder(&d->ro, d->cand, hps, n);
-        send(d, ph, n, 1, 0);
-    }
+    if (cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, send_direct, d, d->err, sizeof d->err)) return -1;
     return d->hung ? -1 : 0;
 }
 

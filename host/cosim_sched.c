@@ -321,16 +321,17 @@ int cosim_sched_flush(cosim_sched_t *s)
 }
 
 int cosim_sched_offer(cosim_sched_t *s, int hung, size_t max_cand, const preu_photon_t *ph, const uint32_t *hps,
-                      size_t n, char *err, size_t errlen)
+                      size_t n, cosim_direct_fn direct, void *user, char *err, size_t errlen)
 {
-    if (n == 0) return 0;   /* nothing for the PREE to do: not sent */
-    if (n > max_cand) {
-        snprintf(err, errlen, "a photon with %zu candidates (at most %zu)", n, max_cand);
-        return -1;
-    }
     if (hung) return -1;
-    if (!s) return 1;
-    if (cosim_sched_add(s, ph, hps, (uint32_t)n) == 0) return 0;
-    snprintf(err, errlen, "photon scheduler: out of memory");
-    return -1;
+    for (size_t k = 0; k < n; k += max_cand) {   /* n 0: nothing for the PREE to do, not sent */
+        const size_t m = n - k < max_cand ? n - k : max_cand;
+        if (!s) {
+            if (direct(user, ph, hps + k, m)) return -1;
+        } else if (cosim_sched_add(s, ph, hps + k, (uint32_t)m)) {
+            snprintf(err, errlen, "photon scheduler: out of memory");
+            return -1;
+        }
+    }
+    return 0;
 }

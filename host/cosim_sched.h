@@ -83,12 +83,19 @@ cosim_sched_t *cosim_sched_new(const cosim_sched_opts_t *opt, cosim_sched_emit_f
 void cosim_sched_free(cosim_sched_t *s);
 int cosim_sched_add(cosim_sched_t *s, const preu_photon_t *ph, const uint32_t *hps, uint32_t n);
 
-/* A photon offered to a driver (cosim_drv.c, cosim_axi.c), with its n candidates: 1 when the
- * driver sends it itself (s NULL: no scheduler), 0 when the scheduler took it or it has none, -1
- * when it cannot be taken: more than max_cand candidates or no memory (err says why), or the
- * RTL hung before (hung; err already says why). */
+/* A driver's own way to send a photon with n <= max_cand candidates (no scheduler): 0, or -1
+ * when the RTL hung (the driver's error says why). */
+typedef int (*cosim_direct_fn)(void *user, const preu_photon_t *ph, const uint32_t *hps, size_t n);
+
+/* A photon offered to a driver (cosim_drv.c, cosim_axi.c), with its n candidates, to the
+ * scheduler s, or with s NULL to direct(user, ...). A photon with more than max_cand candidates
+ * (what the PREE's index table takes for one photon) goes as several photons of the same record,
+ * each with the next max_cand or fewer of them: they share no hit point, so each hit point's
+ * updates keep their photon order and the final state is the same bits. 0 when taken (or it has
+ * no candidates), -1 when not: no memory (err says why), or the RTL hung (hung, or direct's -1:
+ * the driver's error says why). */
 int cosim_sched_offer(cosim_sched_t *s, int hung, size_t max_cand, const preu_photon_t *ph, const uint32_t *hps,
-                      size_t n, char *err, size_t errlen);
+                      size_t n, cosim_direct_fn direct, void *user, char *err, size_t errlen);
 int cosim_sched_flush(cosim_sched_t *s);
 void cosim_sched_stats(const cosim_sched_t *s, cosim_sched_stats_t *st);
 
