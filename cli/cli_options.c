@@ -199,6 +199,7 @@ int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size
         opt->eye_rays = (int)v;
         return 0;
     case CLI_EXPOSURE: return cli_real(a, -30, 0, 30, &opt->exposure);
+    case CLI_RADIUS: return cli_real(a, 0, 1, 1e30, &opt->initial_radius);
     case CLI_QUIET: opt->progress = 0; return 0;
     default: return 1;
     }

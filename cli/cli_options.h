@@ -17,7 +17,7 @@ enum {
     CLI_HELP = 'h',
     CLI_WIDTH = 0x100, CLI_HEIGHT, CLI_PHOTONS, CLI_PREU, CLI_GRID, CLI_NO_SKIP, CLI_QUIET,
     CLI_DATAPATH, CLI_ALPHA, CLI_THREADS, CLI_PIPE_FAST, CLI_LAYOUT, CLI_HIDE_LIGHTS, CLI_EYE_RAYS,
-    CLI_EXPOSURE,
+    CLI_EXPOSURE, CLI_RADIUS,
     CLI_OWN = 0x200
 };
 
@@ -38,7 +38,8 @@ enum {
     {"layout", required_argument, NULL, CLI_LAYOUT},                                  \
     {"hide-lights", no_argument, NULL, CLI_HIDE_LIGHTS},                              \
     {"eye-rays", required_argument, NULL, CLI_EYE_RAYS},                              \
-    {"exposure", required_argument, NULL, CLI_EXPOSURE}
+    {"exposure", required_argument, NULL, CLI_EXPOSURE},                              \
+    {"radius", required_argument, NULL, CLI_RADIUS}
 
 typedef struct {
     int argc;
@@ -79,7 +80,7 @@ int cli_keyword(cli_args_t *a, const char *const *names, int n);
 /* Apply one of CLI_RENDER_LONGOPTS (not --help): --width/--height (at least min_size),
  * --photons, --preu, --grid, --no-skip, --quiet, --datapath paper|stable, --alpha A,
  * --threads T, --pipe-fast, --layout spatial|pixel, --hide-lights, --eye-rays N (1..EYE_RAYS_MAX),
- * --exposure EV (-30..30).
+ * --exposure EV (-30..30), --radius R (the initial radius, in (0, 1e30]).
  * Returns 1 when id is not one of them, 0 when it was taken, 2 on an error (printed). */
 int cli_render_option(cli_args_t *a, int id, render_options_t *opt, int min_size);
 /* 0 when path ends in .png, .ppm or .exr; else 2 with the error printed. */

@@ -92,6 +92,8 @@ static void render_usage(FILE *f)
         "  --eye-rays N           eye rays a pixel, 1..256 (default 1, through its centre): N > 1 rays\n"
         "                         at jittered points of the pixel, each of weight 1/N (anti-aliasing;\n"
         "                         N times the hit points)\n"
+        "  --radius R             every hit point's initial radius, in scene units (default: from the\n"
+        "                         hit points' bounds, as smallppm; a pbrt file's sppm \"radius\")\n"
         "  --exposure EV          scale the PNG and PPM outputs by 2^EV before the tone curve, EV in\n"
         "                         [-30, 30] (default 0); EXR outputs hold the linear radiance as it is\n"
         "  --hide-lights          the image without the area lights' own emitted radiance (the photon\n"
@@ -413,6 +415,7 @@ static int prepare_job(render_options_t *opt, render_job_t *j, scene_t *scene)
     if (scene->film_width && !given(j, "--width")) opt->width = scene->film_width;
     if (scene->film_height && !given(j, "--height")) opt->height = scene->film_height;
     if (scene->film_photons && !given(j, "--photons")) opt->photons = scene->film_photons;
+    if (scene->film_radius > 0 && !given(j, "--radius")) opt->initial_radius = scene->film_radius;
     if ((uint64_t)opt->width * (uint64_t)opt->height > 64ull * 1024 * 1024) {
         fprintf(stderr, "pree render: %dx%d is more than 64 Mpixels\n", opt->width, opt->height);
         return 2;

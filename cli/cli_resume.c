@@ -12,7 +12,7 @@
 static const char *const BIT_OPTIONS[] = {"--width", "--height", "--photon-offset", "--precision", "--datapath",
                                           "--alpha", "--grid", "--no-skip", "--preu", "--pipe-fast", "--layout",
                                           "--prees", "--light-sampling", "--hide-lights", "--eye-rays",
-                                          "--max-bounces"};
+                                          "--max-bounces", "--radius"};
 
 typedef struct { char *p; size_t left; int full; } buf_t;
 
@@ -76,6 +76,10 @@ int cli_resume_note(const render_options_t *o, const cli_resume_job_t *j, char *
     if (o->no_skip) add(&b, "--no-skip\n");
     if (o->pipe_fast) add(&b, "--pipe-fast\n");
     if (o->hide_lights) add(&b, "--hide-lights\n");
+    if (o->initial_radius > 0) {
+        shortest(o->initial_radius, alpha, sizeof alpha);
+        add(&b, "--radius %s\n", alpha);
+    }
     if (o->exposure != 0) {
         shortest(o->exposure, alpha, sizeof alpha);
         add(&b, "--exposure %s\n", alpha);

@@ -212,6 +212,7 @@ static int run_open(cosim_run_t *r, int argc, char **argv)
     char err[1024];
     if (scene_load(c->scene, &r->scene, err, sizeof err)) { fprintf(stderr, "pree cosim: %s\n", err); return 1; }
     r->have_scene = 1;
+    if (r->opt.initial_radius == 0) r->opt.initial_radius = r->scene.film_radius;   /* a pbrt file's sppm radius */
     r->dp = r->opt.datapath == DATAPATH_STABLE;
     /* The update rule's run-time constants, as the render derives them (model/ppm/render_setup.c). */
     r->alpha = preu_f32(render_alpha(&r->opt));

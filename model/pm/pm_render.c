@@ -31,7 +31,7 @@ static int trace(const scene_t *scene, const render_options_t *opt, tracer_t *tr
     st->eye_rays = es.rays;
     st->glass_splits = es.glass_splits;
     st->emitter_hits = es.emitter_hits;
-    st->r0 = res->hp.n ? grid_initial_radius(&res->hp, opt->width, opt->height) : 0;
+    st->r0 = opt->initial_radius > 0 ? opt->initial_radius : res->hp.n ? grid_initial_radius(&res->hp, opt->width, opt->height) : 0;
     t = omp_get_wtime();
     double c0 = pm_cpu_now();
     photon_map_opts_t mo = {render_emitted(opt->photons), opt->photon_offset,

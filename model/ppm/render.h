@@ -55,6 +55,8 @@ typedef struct {
     hp_layout_t layout;      /* its hit-point layout */
     int prees;               /* > 1: a board of this many such PREEs (model/ppm/radiance.h), which holds
                               * the spatial layout (layout is then not read) */
+    double initial_radius;   /* > 0: every hit point's radius before the first photon (--radius); 0: the
+                              * radius from the hit points' bounds (grid_initial_radius) */
     int eye_rays;            /* eye rays a pixel (eye_pass.h; 0 or 1: one, through the pixel's centre) */
     double exposure;         /* not read by the engine: its callers scale what they write as 8-bit
                               * images (PNG, PPM) by 2^exposure before the tone curve */

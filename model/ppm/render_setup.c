@@ -122,7 +122,7 @@ int render_setup_grid(render_session_t *s, const char **phase, char *err, size_t
     render_result_t *res = s->res;
     render_stats_t *st = &res->stats;
     const double t = step_begin(phase, "grid build", "grid");
-    st->r0 = grid_initial_radius(&res->hp, opt->width, opt->height);
+    st->r0 = opt->initial_radius > 0 ? opt->initial_radius : grid_initial_radius(&res->hp, opt->width, opt->height);
     for (size_t i = 0; i < res->hp.n; i++) {   /* fp32 holds positions to about |x| 2^-24 */
         const hp_hot_t *p = &res->hp.hot[i];
         const double m = fmax(fabs(p->px), fmax(fabs(p->py), fabs(p->pz)));

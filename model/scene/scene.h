@@ -90,6 +90,7 @@ typedef struct {
     /* A pbrt-v4 file's Film resolution and sppm photon count (0: none), the render's defaults. */
     int film_width, film_height;
     uint64_t film_photons;
+    double film_radius;    /* and sppm's initial radius "radius" (0: none: the hit points' bounds give it) */
     /* Photon emission: NULL, photon i from light i mod L (uniform: every light the same share);
      * else by power, the lights' cumulative shares of the total flux (scene_light_power). */
     double *light_cdf;

@@ -523,14 +523,16 @@ static int do_film(ctx_t *c, const pbrt_tok_t *at, const char *type, pbrt_params
 static int do_integrator(ctx_t *c, const pbrt_tok_t *at, const char *type, pbrt_params_t *ps)
 {
     long long depth, it, per;
+    double radius;
     if (strcmp(type, "sppm")) {
         for (int k = 0; k < ps->n; k++) ps->p[k].used = 1;
         note(c, 2, at, "PREE renders by progressive photon mapping whatever the integrator; its parameters are not used");
         return 0;
     }
-    if (has(ps, "radius"))
-        return pbrt_fail(&c->lx, at, "Integrator: sppm's \"radius\" is not supported (PREE sets the initial radius "
-                         "from the hit points' bounds)");
+    const int has_radius = has(ps, "radius") != NULL;
+    if (float_param(c, at, ps, "radius", 0, &radius)) return -1;
+    if (has_radius && !(radius > 0 && radius <= 1e30))
+        return pbrt_fail(&c->lx, at, "Integrator: sppm's radius %g is not in (0, 1e30]", radius);
     if (int_param(c, at, ps, "maxdepth", 5, &depth) || int_param(c, at, ps, "iterations", 64, &it) ||
         int_param(c, at, ps, "numiterations", it, &it) || int_param(c, at, ps, "photonsperiteration", -1, &per))
         return -1;
@@ -539,6 +541,7 @@ static int do_integrator(ctx_t *c, const pbrt_tok_t *at, const char *type, pbrt_
     if (it < 1 || it > 4294967295LL || per == 0 || per < -1 || per > 4294967295LL) return pbrt_fail(&c->lx, at, "Integrator: %lld iterations of %lld photons", it, per);
     if (unused(c, at, ps)) return -1;
     c->maxdepth = (int)depth;
+    c->s->film_radius = radius;   /* 0 when not given */
     c->iterations = it;
     c->per_iteration = per;
     return 0;

@@ -2,12 +2,14 @@
 # SPDX-License-Identifier: Apache-2.0
 # pbrt-v4 scene files (model/scene/scene_pbrt.c, docs/pbrt.md). scenes/pbrt/cornell3.pbrt renders
 # the image of its native twin (scenes/cornell3 as a pbrt file can state it: a look-at camera with
-# no near offset, no front wall, clear glass): the same fp32 image hash, and in double the same
+# no near offset, no front wall, clear glass; the file's sppm radius given as --radius): the same
+# fp32 image hash, and in double the same
 # binary32 EXR. scenes/pbrt/room.pbrt (a PLY mesh, a rotated triangle mesh, a conductor sphere, a
 # ReverseOrientation'd area light, sppm's photons and depth, Film's size) renders bit for bit as
-# its native twin, in double and fp32. Against scenes/cornell3 itself (front wall and near offset
-# differ) the SSIM stays above 0.8 at this size. Unsupported directives and parameters are one
-# line "FILE:LINE: ..." with nothing written; harmless ones a note each.
+# its native twin, in double and fp32. Against scenes/cornell3 itself at the same initial radius
+# (front wall and near offset differ) the SSIM stays above 0.8 at this size. Unsupported directives and parameters are one
+# line "FILE:LINE: ..." with nothing written; harmless ones a note each. pree cosim (4 PREUs)
+# takes cornell3.pbrt's radius as the render does (the same image, 32x24 / 4,000 photons).
 # cost: 10
 source "$(dirname "$0")/../lib/check.sh"
 cd "$TMP"
@@ -17,15 +19,21 @@ S=$ROOT/scenes
   grep -v 'front wall\|^camera\|^material glass' "$S/cornell3"; } > twin.scene
 R=(--width 80 --height 60 --photons 60000 --quiet)
 for p in double fp32; do
-  run "$PREE" render twin.scene "${R[@]}" --precision $p --out t-$p.exr --stats t-$p.json
+  run "$PREE" render twin.scene "${R[@]}" --radius 0.8323809424774448 --precision $p --out t-$p.exr --stats t-$p.json
   "$PREE" render "$S/pbrt/cornell3.pbrt" "${R[@]}" --precision $p --out q-$p.exr --stats q-$p.json 2>notes.txt \
     || fail "cornell3.pbrt ($p): $(cat notes.txt)"
   expect_eq "cornell3.pbrt = its native twin ($p): max |diff| in the EXR" \
     "$("$PREE" compare t-$p.exr q-$p.exr | awk '$1 == "max_abs" { print $2 }')" 0
 done
 expect_eq "cornell3.pbrt = its native twin: fp32 image hash" "$(json q-fp32.json image_hash)" "$(json t-fp32.json image_hash)"
+expect_eq "cornell3.pbrt: the initial radius is sppm's radius" "$(json q-fp32.json initial_radius)" 0.8323809424774448
+# pree cosim takes the file's radius too: its RTL image is the fp32 render's.
+run "$PREE" cosim "$S/pbrt/cornell3.pbrt" --width 32 --height 24 --photons 4000 --quiet --no-reference --out rtl.exr
+run "$PREE" render "$S/pbrt/cornell3.pbrt" --width 32 --height 24 --photons 4000 --quiet --precision fp32 --out fp32.exr
+expect_eq "cornell3.pbrt: RTL image = fp32 render (pixel SHA-1)" "$(iinfo --hash rtl.exr | sed -n 's/.*SHA-1: //p')" \
+  "$(iinfo --hash fp32.exr | sed -n 's/.*SHA-1: //p')"
 expect_eq "notes (Film, Sampler, PixelFilter), once each" "$(grep -c '^pree: note: .*cornell3.pbrt:1[678]: ' notes.txt)" 3
-run "$PREE" render "$S/cornell3" "${R[@]}" --out c.exr
+run "$PREE" render "$S/cornell3" "${R[@]}" --radius 0.8323809424774448 --out c.exr
 ssim=$("$PREE" compare c.exr q-double.exr | awk '$1 == "ssim" { print $2 }')
 awk -v s="$ssim" 'BEGIN { exit !(s > 0.8) }' || fail "cornell3.pbrt against scenes/cornell3: SSIM $ssim"
 echo "ok: cornell3.pbrt against scenes/cornell3 (no front wall, no near offset): SSIM $ssim"
@@ -71,7 +79,7 @@ bad "partial sphere" "${W}Shape \"sphere\" \"float zmax\" 0.5\n" "bad.pbrt:4: Sh
 bad "unknown parameter" "${W}Shape \"sphere\" \"float foo\" 3\n" "bad.pbrt:4: Shape: parameter \"float foo\" is not supported"
 bad "gaussian filter" "PixelFilter \"gaussian\"\n${W}" "bad.pbrt:1: PixelFilter: \"gaussian\" is not supported"
 bad "missing Include" "${W}Include \"none.pbrt\"\n" "bad.pbrt:4: Include: none.pbrt: No such file"
-bad "sppm radius" "Integrator \"sppm\" \"float radius\" 1\n${W}" "bad.pbrt:1: Integrator: sppm's \"radius\" is not supported"
+bad "sppm radius" "Integrator \"sppm\" \"float radius\" -1\n${W}" "bad.pbrt:1: Integrator: sppm's radius -1 is not in (0, 1e30]"
 bad "area light on a sphere" "${W}AreaLightSource \"diffuse\"\nShape \"sphere\"\n" "bad.pbrt:5: Shape: an area light on a sphere"
 bad "no light" "${W}Shape \"sphere\"\n" "bad.pbrt: the scene has no light"
 echo "pbrt_scene: ok"
