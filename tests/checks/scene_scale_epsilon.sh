@@ -7,7 +7,7 @@
 # level: quick
 . "$(dirname "$0")/../lib/check.sh"
 size=(--width 48 --height 36 --photons 20000 --quiet)
-hash() { "$PREE" render "$1" "${size[@]}" "${@:2}" --out "$TMP/img.exr" --stats "$TMP/s.json" || fail "render $*"; json "$TMP/s.json" image_hash; }
+hash() { "$PREE" render "$1" "${size[@]}" "${@:2}" --out "$TMP/img.ppm" --stats "$TMP/s.json" || fail "render $*"; json "$TMP/s.json" image_hash; }
 for s in "2^10" "2^-6"; do
   run python3 "$ROOT/scripts/scale-scene.py" "$ROOT/scenes/cornell3" "$s" "$TMP/scaled.scene" --epsilon
   for mode in "--precision double" "--precision fp32" "--precision fp32 --datapath stable"; do
