@@ -170,8 +170,8 @@ module pree_axi_fv #(
   // cum_in, the last photon's; every photon in flight has its candidates written; the written
   // candidates not yet retired fit the table. With several slots besides: the ends rise strictly
   // (N^P > 0), a FIFO photon's end is the one before it plus its own N^P (the end before the
-  // first is ret), and the beats' invariants below. (Kept to the first set at one slot: that
-  // proof is already the suite's slowest at k = 6.)
+  // first is ret), and the beats' invariants below. (At one slot the first set only: its
+  // proof, axi_acct, already takes minutes at k = 6.)
   localparam RING = 1 << RingAW, PHF = 1 << PhFifoAW, NCH = RING + PHF * P;
   localparam [31:0] SPAN = (P == 1) ? IDX_ROOM * (RING + PHF)            // below 2^CountW
                                     : (32'd1 << IdxAW) + IDX_ROOM * PHF * P;
