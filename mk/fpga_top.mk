@@ -9,14 +9,27 @@
 #   make fpga-pnr-top                       everything: $(FPGA_TOP_DIR)/pree_ulx3s.bit,
 #                                           $(FPGA_TOP_DIR)/report.md and the first seed's
 #                                           floorplan, $(FPGA_TOP_DIR)/floorplan.png
+#   FPGA_TOP_CONFIG=p2                      a named configuration (below; default p1, the one
+#                                           that routes), in $(BUILD)/fpga-top-<name>
 #   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 1)
-#   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters (default: the
-#                                           configuration of docs/fpga_board.md)
+#   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters in place of the named
+#                                           configuration's
 #   FPGA_TOP_DIR=build/fpga-top-x           another folder (one per configuration)
 
-FPGA_TOP_DIR    ?= $(BUILD)/fpga-top
+# The named configurations (docs/fpga_board.md): p1, one PREU with the paper's stages, 1,024 hit
+# points in 2 banks, 512 pixels in 2 banks, a 25 MHz core clock (PLL 25 MHz x 1 / 1, VCO 600
+# MHz); p2, two such PREUs, 4,096 hit points in 8 banks and as many pixels in 4, 100 MHz.
+FPGA_TOP_CONFIG_p1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=0 PllInDiv=1 PllFbDiv=1 PllOpDiv=24
+FPGA_TOP_CONFIG_p2 := NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
+FPGA_TOP_CONFIG ?= p1
+FPGA_TOP_DIR    ?= $(BUILD)/fpga-top-$(FPGA_TOP_CONFIG)
 FPGA_TOP_SEEDS  ?= 1
-FPGA_TOP_PARAMS ?= NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
+FPGA_TOP_PARAMS ?= $(FPGA_TOP_CONFIG_$(FPGA_TOP_CONFIG))
+ifneq ($(filter fpga-pnr-top $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
+ifeq ($(strip $(FPGA_TOP_PARAMS)),)
+$(error FPGA_TOP_CONFIG=$(FPGA_TOP_CONFIG): no such configuration (p1, p2; or set FPGA_TOP_PARAMS))
+endif
+endif
 FPGA_TOP_RUN     = PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_TOP_PARAMS="$(FPGA_TOP_PARAMS)" \
                    nice -n 10 scripts/fpga_pnr_top.sh
 FPGA_TOP_BOARD  := rtl/pree_reset_sync.v $(wildcard rtl/board/*.v)

