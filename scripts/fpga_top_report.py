@@ -7,9 +7,9 @@ Reads <dir>/pree_ulx3s.json (the netlist nextpnr placed), <dir>/pree_ulx3s.stat.
 cell counts), and per seed <dir>/seed<N>.report.json (nextpnr --report) and seed<N>.time (wall,
 user and system seconds). Prints three Markdown tables: Fmax per seed with the critical path
 (nextpnr's worst register-to-register path of the core clock: its start and end registers and
-their RTL source lines, its delay split into logic and routing, its logic levels and cells by type) and nextpnr's
-run time; the placed design's use of every resource of the part (nextpnr, first seed); Yosys's
-cell counts.
+their RTL source lines, its delay split into logic and routing, its cells by type, each CCU2C
+once) and nextpnr's run time; the placed design's use of every resource of the part (nextpnr,
+first seed); Yosys's cell counts.
 """
 import json
 import re
@@ -17,8 +17,11 @@ import sys
 
 
 def cell_types(netlist):
-    mods = json.load(open(netlist))["modules"]
-    return {name: c["type"] for name, c in mods["pree_ulx3s"]["cells"].items()}
+    """Each cell's type and its RTL source line (Yosys's src attribute, the first one)."""
+    cells = json.load(open(netlist))["modules"]["pree_ulx3s"]["cells"]
+    return ({name: c["type"] for name, c in cells.items()},
+            {name: re.sub(r"\.\d+-\d+\.\d+$", "", c.get("attributes", {}).get("src", "?").split("|")[0])
+             for name, c in cells.items()})
 
 
 def reg_name(cell):
@@ -26,32 +29,32 @@ def reg_name(cell):
     return re.sub(r"(_TRELLIS_FF|_MULT18X18D|_DP16KD).*$", "", cell)
 
 
-def src(entry):
-    s = entry.get("sources") or []
-    return re.sub(r"\.\d+-\d+\.\d+$", "", s[0]) if s else "?"
-
-
-def path_summary(path, types):
+def path_summary(path, types, srcs):
+    """The path's registers with their RTL lines, its delay, its cells by type: nextpnr splits
+    each CCU2C (two bits of a carry chain) into <name>$CCU2_COMB0/1, counted once here."""
     logic = sum(e["delay"] for e in path if e["type"] in ("logic", "clk-to-q", "setup"))
     route = sum(e["delay"] for e in path if e["type"] == "routing")
-    count = {}
+    cells = {}
     for e in path:
         if e["type"] == "logic":
-            t = types.get(e["from"]["cell"], "?")
-            count[t] = count.get(t, 0) + 1
-    routes = [e for e in path if e["type"] == "routing"]
-    start, end = reg_name(path[0]["from"]["cell"]), reg_name(path[-1]["to"]["cell"])
-    cells = ", ".join("%d %s" % (n, t) for t, n in sorted(count.items(), key=lambda x: -x[1]))
-    return "%s (%s) -> %s (%s): %.2f ns (%.2f logic, %.2f routing); %d logic levels: %s" % (
-        start, src(routes[0]) if routes else "?", end, src(routes[-1]) if routes else "?",
-        logic + route, logic, route, sum(count.values()), cells or "no logic cell")
+            name = e["from"]["cell"]
+            base = name.split("$CCU2_COMB")[0]
+            cells[base] = "CCU2C" if "$CCU2_COMB" in name else types.get(name, "?")
+    count = {}
+    for t in cells.values():
+        count[t] = count.get(t, 0) + 1
+    start, end = path[0]["from"]["cell"], path[-1]["to"]["cell"]
+    listed = ", ".join("%d %s" % (n, t) for t, n in sorted(count.items(), key=lambda x: -x[1]))
+    return "%s (%s) -> %s (%s): %.2f ns (%.2f logic, %.2f routing); cells: %s" % (
+        reg_name(start), srcs.get(start, "?"), reg_name(end), srcs.get(end, "?"),
+        logic + route, logic, route, listed or "none")
 
 
 def main():
     if len(sys.argv) < 3:
         raise SystemExit("usage: fpga_top_report.py <dir> <seed> [<seed> ...]")
     d, seeds = sys.argv[1], sys.argv[2:]
-    types = cell_types(d + "/pree_ulx3s.json")
+    types, srcs = cell_types(d + "/pree_ulx3s.json")
     print("| seed | Fmax (MHz) | target (MHz) | critical path (nextpnr, register to register) | nextpnr wall / CPU (s) |")
     print("|---|---|---|---|---|")
     first = None
@@ -63,7 +66,7 @@ def main():
         f = rep["fmax"][core[0]]
         paths = [p for p in rep["critical_paths"]
                  if not p["from"].startswith("<async>") and not p["to"].startswith("<async>")]
-        crit = path_summary(paths[0]["path"], types) if paths else "-"
+        crit = path_summary(paths[0]["path"], types, srcs) if paths else "-"
         print("| %s | %.1f | %g | %s | %.0f / %.0f |" % (s, f["achieved"], f["constraint"], crit,
                                                          wall, user + system))
     print()
