@@ -77,7 +77,7 @@ TOPIV_RUN_noaconf := p4_abank
 TOPIV_FILE_nobconf := rtl/pree_top_issue.v
 TOPIV_SED_nobconf := s/bcf\[l\] = 1'b1;/bcf[l] = 1'b0;/
 TOPIV_RUN_nobconf := p4_random
-TOPIV_SED_winrad  := s/WIN_RAD \/\*verilator public\*\/ = ST_ADD + 1;/WIN_RAD \/*verilator public*\/ = ST_ADD;/
+TOPIV_SED_winrad  := s/WIN_RAD \/\*verilator public\*\/ = LAT_ADD + 1;/WIN_RAD \/*verilator public*\/ = LAT_ADD;/
 TOPIV_RUN_winrad  := p4_dense
 
 TOPIV_VVPS    := $(TOPIV_CFGS:%=$(TOPIV_DIR)/top_tb_%.vvp)
