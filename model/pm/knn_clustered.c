@@ -16,26 +16,15 @@ static float prefilter_bound2(double b, double extent, const double q[3])
     return nextafterf((float)(wide * wide * (1 + 0x1p-20)), INFINITY);
 }
 
-/* Member q's candidates in the scope: the kernel's, rechecked in double within b2 and the
- * normal test, into s->cand. Returns their count. */
+/* Member q's candidates in the scope: those the kernel passes within b and the normal test, into
+ * s->hits. Returns their count. */
 static size_t member_candidates(const photon_tree_t *t, knn_kernel_fn kernel, const double q[3], const double n[3],
                                 double b, double cos_min, knn_scratch_t *s, size_t scope, knn_work_t *w)
 {
-    const float qf[3] = {(float)q[0], (float)q[1], (float)q[2]}, nf[3] = {(float)n[0], (float)n[1], (float)n[2]};
-    const size_t np = kernel(t, s->runs, s->runs_n, qf, nf, prefilter_bound2(b, t->extent, q),
-                             (float)(cos_min - 1e-4), s->pos);
-    const kdtree_t *kd = &t->kd;
-    const double b2 = b * b;
-    size_t nc = 0;
-    for (size_t j = 0; j < np; j++) {
-        const size_t i = s->pos[j];
-        const double dx = q[0] - kd->x[i], dy = q[1] - kd->y[i], dz = q[2] - kd->z[i];
-        const double d2 = dx * dx + dy * dy + dz * dz;
-        if (d2 > b2 || !(n[0] * t->nx[i] + n[1] * t->ny[i] + n[2] * t->nz[i] > cos_min)) continue;
-        s->cand[nc++] = (knn_cand_t){d2, kd->index[i], (uint32_t)i};
-    }
+    const knn_probe_t p = {{q[0], q[1], q[2]}, {n[0], n[1], n[2]}, b * b, cos_min,
+                           {(float)q[0], (float)q[1], (float)q[2]}, prefilter_bound2(b, t->extent, q)};
+    const size_t nc = kernel(t, s->runs, s->runs_n, &p, &s->hits, &w->distance_tests);
     w->kernel_tests += scope;
-    w->distance_tests += np;
     w->selection += nc;
     return nc;
 }
@@ -49,8 +38,8 @@ static int scope_search(const photon_tree_t *t, knn_kernel_fn kernel, const doub
     if (kdtree_runs(&t->kd, c, b + far, &s->runs, &s->runs_n, &s->runs_cap)) return -1;
     size_t scope = 0;
     for (size_t r = 0; r < s->runs_n; r++) scope += s->runs[r].hi - s->runs[r].lo;
-    if (grow_array((void **)&s->pos, &s->pos_cap, scope + 16, sizeof *s->pos) ||
-        grow_array((void **)&s->cand, &s->cand_cap, scope + 1, sizeof *s->cand))
+    if (grow_array((void **)&s->hits.pos, &s->pos_cap, scope + 16, sizeof *s->hits.pos) ||
+        grow_array((void **)&s->hits.d2, &s->d2_cap, scope + 16, sizeof *s->hits.d2))
         return -1;
     st->scope_photons += scope;
     for (int l = 0; l < m; l++) {
@@ -66,7 +55,7 @@ static int scope_search(const photon_tree_t *t, knn_kernel_fn kernel, const doub
             st->fallback++;
             counts[l] = knn_kdtree_query(t, q[l], n[l], cos_min, k, r0 * r0, o, &s->buckets, &st->work);
         } else {
-            counts[l] = knn_select_buckets(s->cand, nc, k, bl * bl, &s->buckets, o);
+            counts[l] = knn_select_arrays(s->hits.d2, s->hits.pos, t->kd.index, nc, k, bl * bl, &s->buckets, o);
         }
         if (counts[l] == (size_t)-1) return -1;
         s->lane_guess = counts[l] == k ? KNN_LANE_MARGIN * sqrt(o[k - 1].d2) : 0;
@@ -117,8 +106,8 @@ int knn_cluster(const photon_tree_t *t, knn_kernel_fn kernel, const hitpoints_t 
 void knn_scratch_free(knn_scratch_t *s)
 {
     free(s->runs);
-    free(s->pos);
-    free(s->cand);
+    free(s->hits.pos);
+    free(s->hits.d2);
     knn_buckets_free(&s->buckets);
     memset(s, 0, sizeof *s);
 }

@@ -9,11 +9,11 @@
  *    every member. Adaptive: a cluster whose members lie farther than KNN_SPREAD_MAX b from its
  *    centre (sparse shading points, where one shared scope would hold many photons no member
  *    needs) gives each member a scope of its own, the runs within b of it.
- * 3. Per member, the vector kernel (knn_kernel.h) streams through the runs and compresses the
- *    positions that pass the float prefilter within the member's own bound (the last member's
- *    k-th distance with a margin, at most b; b again when that holds fewer than k); each is
- *    rechecked in double (the oracle's expression order) against the bound and the normal
- *    test; a linear-time selection (knn_select_buckets) keeps the k nearest, sorted.
+ * 3. Per member, the vector kernel (knn_kernel.h) streams through the runs: the float prefilter
+ *    within the member's own bound (the last member's k-th distance with a margin, at most b; b
+ *    again when that holds fewer than k), then the exact double test (the oracle's expression
+ *    order) on what passes; a linear-time selection (knn_select_arrays) of its output keeps the
+ *    k nearest, sorted.
  * 4. A member with fewer than k within b < r0 is not certain: it alone is searched again with the
  *    single-pass search within r0.
  * Either way member j's result is the k nearest within r0 in (d2, photon) order: the oracle's. */
@@ -36,10 +36,8 @@
 typedef struct {
     kd_range_t *runs;    /* the cluster's scope as runs of tree positions */
     size_t runs_n, runs_cap;
-    uint32_t *pos;       /* the kernel's output */
-    size_t pos_cap;
-    knn_cand_t *cand;    /* one member's candidates */
-    size_t cand_cap;
+    knn_hits_t hits;     /* the kernel's output for one member */
+    size_t pos_cap, d2_cap;
     double guess;        /* the bound to try: the last cluster's k-th distance with a margin (0: r0) */
     double lane_guess;   /* a member's own bound to try: the last member's k-th distance with a
                           * margin (0: the cluster's) */

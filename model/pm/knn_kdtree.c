@@ -28,17 +28,14 @@ static void sift_up(knn_cand_t *h, size_t i)
     h[i] = v;
 }
 
-/* Tree position i against the query; the expression order is the oracle's (nanoflann's L2
- * metric, then the normal test), so both see the same bits. */
+/* Tree position i against the query: the oracle's exact test (photon_tree.h), so both see the
+ * same bits. */
 static inline void visit(walk_t *c, size_t i)
 {
-    const kdtree_t *kd = &c->t->kd;
     c->w->distance_tests++;
-    const double dx = c->q[0] - kd->x[i], dy = c->q[1] - kd->y[i], dz = c->q[2] - kd->z[i];
-    const double d2 = dx * dx + dy * dy + dz * dz;
-    if (d2 > c->bound) return;
-    if (!(c->n[0] * c->t->nx[i] + c->n[1] * c->t->ny[i] + c->n[2] * c->t->nz[i] > c->cos_min)) return;
-    const knn_cand_t v = {d2, kd->index[i], (uint32_t)i};
+    const double d2 = photon_d2(c->t, i, c->q);
+    if (d2 > c->bound || !photon_facing(c->t, i, c->n, c->cos_min)) return;
+    const knn_cand_t v = {d2, c->t->kd.index[i], (uint32_t)i};
     c->w->selection++;
     if (c->count < c->k) {
         c->heap[c->count] = v;

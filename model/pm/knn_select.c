@@ -81,45 +81,87 @@ static void sort_nearly(knn_cand_t *c, size_t n)
     }
 }
 
-size_t knn_select_buckets(const knn_cand_t *c, size_t n, size_t k, double max_d2, knn_buckets_t *b, knn_cand_t *out)
+/* The bucket plan shared by both selections. Bucket j of nb = 2n holds d2 in
+ * [j, j + 1) * max_d2 / nb: monotone in d2, so bucket order is d2 order and equal d2 share a
+ * bucket; twice as many buckets as candidates, so few share one. Candidate i's d2 is
+ * d2[i * stride]; its bucket goes to b->bucket, and b->count becomes each bucket's start up to
+ * the last one needed (the one that holds the got-th candidate; *end: the candidates through
+ * it), then the start of a discard region (bucket last + 1) for the rest. Returns last, or
+ * (size_t)-1 when out of memory; *crowded: some bucket holds more than 16. */
+static size_t plan(const double *d2, size_t stride, size_t n, size_t got, double max_d2, knn_buckets_t *b,
+                   size_t *end, int *crowded)
 {
-    const size_t got = n < k ? n : k, nb = 2 * n;
-    if (got == 0) return 0;
+    const size_t nb = 2 * n;
     if (grow_array((void **)&b->sorted, &b->sorted_cap, n, sizeof *b->sorted) ||
-        grow_array((void **)&b->count, &b->count_cap, nb, sizeof *b->count))
+        grow_array((void **)&b->count, &b->count_cap, nb + 1, sizeof *b->count) ||
+        grow_array((void **)&b->bucket, &b->bucket_cap, n, sizeof *b->bucket))
         return (size_t)-1;
-    /* Bucket j holds d2 in [j, j + 1) * max_d2 / nb: monotone in d2, so bucket order is d2 order
-     * and equal d2 share a bucket. Twice as many buckets as candidates: few share one. */
-    const double scale = max_d2 > 0 ? (double)nb / max_d2 : 0;
-    uint32_t *count = b->count;
+    const double scale = max_d2 > 0 ? (double)nb / max_d2 : 0, top = (double)(nb - 1);
+    uint32_t *count = b->count, *id = b->bucket, big = 0;
     memset(count, 0, nb * sizeof *count);
     for (size_t i = 0; i < n; i++) {
-        const size_t j = (size_t)(c[i].d2 * scale);
-        count[j < nb ? j : nb - 1]++;
+        const double v = d2[i * stride] * scale;
+        const uint32_t j = v < top ? (uint32_t)v : (uint32_t)top;
+        id[i] = j;
+        big |= ++count[j] > 16;
     }
-    /* Each bucket's start, up to the last one needed: the one that holds the got-th candidate. */
-    size_t last = 0, end = 0;                /* end: the candidates through the last bucket */
-    uint32_t most = 0;                       /* the most a bucket through it holds */
+    size_t last = 0, e = 0;
     for (;; last++) {
         const uint32_t size = count[last];
-        count[last] = (uint32_t)end;
-        end += size;
-        most = size > most ? size : most;
-        if (end >= got) break;
+        count[last] = (uint32_t)e;
+        e += size;
+        if (e >= got) break;
     }
-    for (size_t i = 0; i < n; i++) {
-        size_t j = (size_t)(c[i].d2 * scale);
-        j = j < nb ? j : nb - 1;
-        if (j <= last) b->sorted[count[j]++] = c[i];
-    }
-    /* count[j] is now bucket j's end. Buckets of more than 16 (equal or crowded d2) are
-     * quicksorted; then one insertion pass over all of them orders the small ones (each
-     * element moves within its bucket only). */
-    if (most > 16)
-        for (size_t j = 0, lo = 0; j <= last; lo = count[j++])
-            if (count[j] - lo > 16) knn_sort(b->sorted + lo, count[j] - lo);
+    count[last + 1] = (uint32_t)e;
+    *end = e;
+    *crowded = big != 0;
+    return last;
+}
+
+/* The bucket of candidate i in the plan: its own through last, else the discard region's. */
+static inline size_t slot(const knn_buckets_t *b, size_t i, size_t last)
+{
+    const size_t j = b->bucket[i];
+    return j <= last ? j : last + 1;
+}
+
+/* b->sorted[0..end), the candidates through the plan's last bucket, into (d2, photon) order
+ * (count[j] is bucket j's end now): buckets of more than 16 (equal or crowded d2) are quicksorted
+ * first; then one insertion pass over all of them orders the small ones (each element moves
+ * within its bucket only). The got first into out. */
+static void finish(knn_buckets_t *b, size_t last, size_t end, int crowded, size_t got, knn_cand_t *out)
+{
+    if (crowded)
+        for (size_t j = 0, lo = 0; j <= last; lo = b->count[j++])
+            if (b->count[j] - lo > 16) knn_sort(b->sorted + lo, b->count[j] - lo);
     sort_nearly(b->sorted, end);
     memcpy(out, b->sorted, got * sizeof *out);
+}
+
+size_t knn_select_buckets(const knn_cand_t *c, size_t n, size_t k, double max_d2, knn_buckets_t *b, knn_cand_t *out)
+{
+    const size_t got = n < k ? n : k;
+    if (got == 0) return 0;
+    size_t end;
+    int crowded;
+    const size_t last = plan(&c[0].d2, sizeof *c / sizeof(double), n, got, max_d2, b, &end, &crowded);
+    if (last == (size_t)-1) return (size_t)-1;
+    for (size_t i = 0; i < n; i++) b->sorted[b->count[slot(b, i, last)]++] = c[i];
+    finish(b, last, end, crowded, got, out);
+    return got;
+}
+
+size_t knn_select_arrays(const double *d2, const uint32_t *pos, const uint32_t *photon, size_t n, size_t k,
+                         double max_d2, knn_buckets_t *b, knn_cand_t *out)
+{
+    const size_t got = n < k ? n : k;
+    if (got == 0) return 0;
+    size_t end;
+    int crowded;
+    const size_t last = plan(d2, 1, n, got, max_d2, b, &end, &crowded);
+    if (last == (size_t)-1) return (size_t)-1;
+    for (size_t i = 0; i < n; i++) b->sorted[b->count[slot(b, i, last)]++] = (knn_cand_t){d2[i], photon[pos[i]], pos[i]};
+    finish(b, last, end, crowded, got, out);
     return got;
 }
 
@@ -127,5 +169,6 @@ void knn_buckets_free(knn_buckets_t *b)
 {
     free(b->sorted);
     free(b->count);
+    free(b->bucket);
     memset(b, 0, sizeof *b);
 }

@@ -19,6 +19,18 @@ typedef struct {
     double extent;               /* largest |coordinate| of any photon (the float error bound's scale) */
 } photon_tree_t;
 
+/* The exact test every search decides on, in the oracle's expression order (nanoflann's L2
+ * metric, then the normal test): photon i's squared distance to q, and whether its normal faces n. */
+static inline double photon_d2(const photon_tree_t *t, size_t i, const double q[3])
+{
+    const double dx = q[0] - t->kd.x[i], dy = q[1] - t->kd.y[i], dz = q[2] - t->kd.z[i];
+    return dx * dx + dy * dy + dz * dz;
+}
+static inline int photon_facing(const photon_tree_t *t, size_t i, const double n[3], double cos_min)
+{
+    return n[0] * t->nx[i] + n[1] * t->ny[i] + n[2] * t->nz[i] > cos_min;
+}
+
 /* 0, or -1 when out of memory. */
 int photon_tree_build(photon_tree_t *t, const photon_map_t *map);
 void photon_tree_free(photon_tree_t *t);

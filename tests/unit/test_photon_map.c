@@ -175,21 +175,34 @@ static void test_knn_random(void **state)
     free(m.p);
 }
 
-/* The bucket selection: the same k in the same order as a sort of every candidate. */
+/* The bucket selections (records and arrays): the same k in the same order as a sort of every
+ * candidate. */
 static void test_select_fast(void **state)
 {
     (void)state;
     rng_state = 31337;
     for (size_t n = 0; n < 600; n += 37)
         for (size_t k = 1; k < 700; k = k * 3 + 1) {
-            knn_cand_t *a = malloc((n + 1) * sizeof *a), *b = malloc((n + 1) * sizeof *b);
+            knn_cand_t *a = malloc((n + 1) * sizeof *a), *b = malloc((n + 1) * sizeof *b), *c = malloc((k + 1) * sizeof *c);
+            double *d2 = malloc((n + 1) * sizeof *d2);
+            uint32_t *pos = malloc((n + 1) * sizeof *pos), *photon = malloc((n + 1) * sizeof *photon);
             knn_buckets_t bk = {0};
-            for (size_t i = 0; i < n; i++) a[i] = b[i] = (knn_cand_t){floor(rnd() * 20), (uint32_t)(n - i), 0};
+            for (size_t i = 0; i < n; i++) {
+                a[i] = b[i] = (knn_cand_t){floor(rnd() * 20), (uint32_t)(n - i), (uint32_t)i};
+                d2[i] = a[i].d2;
+                pos[i] = (uint32_t)i;
+                photon[i] = a[i].photon;
+            }
+            size_t gc = knn_select_arrays(d2, pos, photon, n, k, 20, &bk, c);
             size_t ga = knn_select(a, n, k), gb = knn_select_buckets(b, n, k, 20, &bk, b);
             knn_buckets_free(&bk);
             assert_int_equal(ga, gb);
-            for (size_t i = 0; i < ga; i++) assert_true(a[i].d2 == b[i].d2 && a[i].photon == b[i].photon);
-            free(a); free(b);
+            assert_int_equal(ga, gc);
+            for (size_t i = 0; i < ga; i++) {
+                assert_true(a[i].d2 == b[i].d2 && a[i].photon == b[i].photon && a[i].pos == b[i].pos);
+                assert_true(a[i].d2 == c[i].d2 && a[i].photon == c[i].photon && a[i].pos == c[i].pos);
+            }
+            free(a); free(b); free(c); free(d2); free(pos); free(photon);
         }
 }
 
