@@ -116,23 +116,46 @@ static void emit(runs_t *c, size_t lo, size_t hi)
     (*c->out)[(*c->n)++] = (kd_range_t){(uint32_t)lo, (uint32_t)hi};
 }
 
-/* In order (left, split point, right), so the runs come out sorted. */
-static void walk_runs(runs_t *c, size_t lo, size_t hi)
+/* In order (left, split point, right), so the runs come out sorted; a subtree of KD_RUN_LEAF
+ * positions or fewer is taken whole, as a leaf is. off: q's offset from the node's cell (the box
+ * its splits bound) along each axis, 0 within its slab; each a coordinate difference rounded as
+ * a point's own offset from q is, so that the cell's squared distance (off . off, summed in the
+ * points' order) lies within r of q and no point inside the cell is nearer, in floating point
+ * too (Arya and Mount's incremental distance). The near child is walked; the far child, and the
+ * split point on the plane between the two, while the far child's cell reaches r. */
+static void walk_runs(runs_t *c, size_t lo, size_t hi, double off[3])
 {
-    if (hi - lo <= KD_LEAF) { if (hi > lo) emit(c, lo, hi); return; }
-    size_t mid = lo + (hi - lo) / 2;
+    if (hi - lo <= KD_RUN_LEAF) { if (hi > lo) emit(c, lo, hi); return; }
+    const size_t mid = lo + (hi - lo) / 2;
+    const int a = c->t->axis[mid];
     const double *axis_coord[3] = {c->t->x, c->t->y, c->t->z};
-    const double diff = c->q[c->t->axis[mid]] - axis_coord[c->t->axis[mid]][mid];
-    const int near = diff * diff <= c->r2;
-    if (diff <= 0 || near) walk_runs(c, lo, mid);
-    if (near) emit(c, mid, mid + 1);
-    if (diff > 0 || near) walk_runs(c, mid + 1, hi);
+    const double diff = c->q[a] - axis_coord[a][mid], keep = off[a];
+    off[a] = diff < 0 ? -diff : diff;                /* the far child's cell */
+    const int far = off[0] * off[0] + off[1] * off[1] + off[2] * off[2] <= c->r2;
+    if (diff <= 0) {
+        off[a] = keep;
+        walk_runs(c, lo, mid, off);
+        if (far) {
+            emit(c, mid, mid + 1);
+            off[a] = -diff;
+            walk_runs(c, mid + 1, hi, off);
+        }
+    } else {
+        if (far) {
+            walk_runs(c, lo, mid, off);
+            emit(c, mid, mid + 1);
+        }
+        off[a] = keep;
+        walk_runs(c, mid + 1, hi, off);
+    }
+    off[a] = keep;
 }
 
 int kdtree_runs(const kdtree_t *t, const double q[3], double r, kd_range_t **out, size_t *n, size_t *cap)
 {
     runs_t c = {t, {q[0], q[1], q[2]}, r * r, out, n, cap, 0};
+    double off[3] = {0, 0, 0};
     *n = 0;
-    walk_runs(&c, 0, t->n);
+    walk_runs(&c, 0, t->n, off);
     return c.failed ? -1 : 0;
 }

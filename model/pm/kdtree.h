@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #define KD_LEAF 8
+#define KD_RUN_LEAF 32   /* kdtree_runs takes subtrees of this many positions or fewer whole */
 
 typedef struct {
     size_t n;
@@ -29,10 +30,12 @@ void kdtree_free(kdtree_t *t);
 /* A run of tree positions [lo, hi). */
 typedef struct { uint32_t lo, hi; } kd_range_t;
 
-/* The tree positions the same walk visits around q with radius r, as runs in increasing order,
- * adjacent runs merged (*n of them in *out, *cap its capacity): whole leaves and the split
- * points within r of q's side, a superset of the points within r (d^2 <= r^2) that a vector
- * kernel streams through without a gather. 0, or -1 when out of memory. */
+/* The tree positions around q with radius r, as runs in increasing order, adjacent runs merged
+ * (*n of them in *out, *cap its capacity): the subtrees of up to KD_RUN_LEAF positions whose
+ * cells (the boxes the splits bound) reach within r of q, and the split points between two such
+ * cells; a superset of the points within r (d^2 <= r^2, in floating point too) that a vector
+ * kernel streams through without a gather (the larger subtrees cost a few more positions
+ * streamed and save the walk most of its nodes). 0, or -1 when out of memory. */
 int kdtree_runs(const kdtree_t *t, const double q[3], double r, kd_range_t **out, size_t *n, size_t *cap);
 
 #endif

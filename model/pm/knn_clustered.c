@@ -35,7 +35,9 @@ static int scope_search(const photon_tree_t *t, knn_kernel_fn kernel, const doub
                         int m, const double c[3], double far, double b, double r0, size_t k, double cos_min,
                         knn_scratch_t *s, knn_cand_t *out, size_t *counts, knn_cluster_stats_t *st)
 {
-    if (kdtree_runs(&t->kd, c, b + far, &s->runs, &s->runs_n, &s->runs_cap)) return -1;
+    /* b + far holds every photon within b of a member (the triangle inequality); widened by far
+     * more than the rounding of these sums, so that it does in floating point too. */
+    if (kdtree_runs(&t->kd, c, (b + far) * (1 + 0x1p-40), &s->runs, &s->runs_n, &s->runs_cap)) return -1;
     size_t scope = 0;
     for (size_t r = 0; r < s->runs_n; r++) scope += s->runs[r].hi - s->runs[r].lo;
     if (grow_array((void **)&s->hits.pos, &s->pos_cap, scope + 16, sizeof *s->hits.pos) ||
