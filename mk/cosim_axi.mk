@@ -7,6 +7,12 @@
 #                      for 4, 8, 16 PREUs (4: 20 CPU seconds), the whole design for
 #                      SYNTH_AXI_PREUS (default 4; the reduced flow, synth_axi.sh --fast) into the
 #                      table of docs/integration_resources.md (scripts/fpga_doc.py, markers synth-axi)
+#   make synth-axi-full  the whole pree_axi through synth_xilinx with the full ABC script, the fit
+#                      table's memory sizes, LUT levels (tb/axi/synth_axi_full.sh), into the table of
+#                      docs/integration_resources.md (markers synth-axi-full). SYNTH_AXI_FULL_RUNS:
+#                      <mode>_pf<PipeFast>_p<NumPreu>, mode hier (PREU, RAM banks and controllers
+#                      kept as modules) or flat; each run's files in $(AXI_DIR)/full-synth.
+#                      Outside `make test`: minutes of one core a run (the table's CPU column)
 #   make fit-table     the block RAM / URAM fit table of docs/integration_resources.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
 #                      pree_axi (d: p paper, s stable; n PREUs; f: PipeFast 1), built only when
@@ -36,12 +42,13 @@ AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x
 # the simulation slower). axi_prog FLAVOUR TAG: the program's path.
 axi_prog    = $(if $(1),$(AXI_DIR)/quick,$(BUILD))/pree-cosim-axi-$(2)
 SYNTH_AXI_PREUS ?= 4
+SYNTH_AXI_FULL_RUNS ?= hier_pf0_p4 hier_pf0_p8 hier_pf0_p16 hier_pf1_p4 hier_pf1_p8 hier_pf1_p16 hier_pf1_p1 flat_pf1_p1
 
 TEST_PREREQS  += $(AXI_REGRESSION_TAGS:%=$(BUILD)/pree-cosim-axi-%) $(foreach t,$(AXI_QUICK_TAGS),$(call axi_prog,q,$(t)))
 AXI_FULL_TAGS ?= p4 p8 p16 p4f p8f p16f s4 s4f
 LINT_TARGETS  += lint-axi
 
-.PHONY: lint-axi synth-axi fit-table sim-axi-wide sim-axi-full
+.PHONY: lint-axi synth-axi synth-axi-full fit-table sim-axi-wide sim-axi-full
 sim-axi-wide: $(BUILD)/pree-cosim-axi-p8 $(BUILD)/pree
 	@bash tb/axi/axi_cosim_wide.sh
 AXI_FULL_PROGS = $(foreach t,$(AXI_FULL_TAGS),$(if $(AXI_FULL_QUICK),$(AXI_DIR)/quick/pree-cosim-axi-$(t) $(COSIM_DIR)/quick/pree-cosim-$(t),$(BUILD)/pree-cosim-axi-$(t) $(BUILD)/pree-cosim-$(t)))
@@ -96,6 +103,17 @@ synth-axi: | $(DEPS_STAMP)
 	  cat $(foreach p,4 8 16,$(AXI_DIR)/synth/own_p$(p).md) $(foreach p,$(SYNTH_AXI_PREUS),$(AXI_DIR)/synth/fast_p$(p).md); } \
 	  > $(AXI_DIR)/synth/resources.md
 	python3 scripts/fpga_doc.py docs/integration_resources.md synth-axi $(AXI_DIR)/synth/resources.md
+
+# One run a file: <mode>_pf<PipeFast>_p<NumPreu>.md (tb/axi/synth_axi_full.sh), remade when the
+# RTL or the script changes.
+$(AXI_DIR)/full-synth/%.md: tb/axi/synth_axi_full.sh tb/cosim/synth_top_depth.py $(AXI_RTL) | $(DEPS_STAMP)
+	nice -n 10 tb/axi/synth_axi_full.sh $(if $(filter flat_%,$*),--flat) \
+	  $(patsubst pf%,%,$(word 2,$(subst _, ,$*))) $(patsubst p%,%,$(word 3,$(subst _, ,$*))) $(@D)
+synth-axi-full: $(SYNTH_AXI_FULL_RUNS:%=$(AXI_DIR)/full-synth/%.md)
+	@{ echo '| PREUs | PREU | synthesis | LUT | FF | CARRY4 | MUXF7/8 | DSP48E1 | RAMB36E1 | RAMB18E1 | LUTRAM | LUT levels within a PREU | LUT levels elsewhere | CPU s |'; \
+	  echo '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|'; \
+	  cat $^; } > $(AXI_DIR)/full-synth/resources.md
+	python3 scripts/fpga_doc.py docs/integration_resources.md synth-axi-full $(AXI_DIR)/full-synth/resources.md
 
 fit-table:
 	python3 scripts/pree_fit.py
