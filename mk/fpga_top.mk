@@ -18,8 +18,11 @@
 
 # The named configurations (docs/fpga_board.md): p1, one PREU with the paper's stages, 1,024 hit
 # points in 2 banks, 512 pixels in 2 banks, a 25 MHz core clock (PLL 25 MHz x 1 / 1, VCO 600
-# MHz); p2, two such PREUs, 4,096 hit points in 8 banks and as many pixels in 4, 100 MHz.
+# MHz); d1, p1's PREU with the deep stages (PipeFast 1) and p1's memories, 100 MHz (PLL 25 MHz
+# x 4 / 1, CLKOP divider 6); p2, two paper PREUs, 4,096 hit points in 8 banks and as many pixels
+# in 4, 100 MHz.
 FPGA_TOP_CONFIG_p1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=0 PllInDiv=1 PllFbDiv=1 PllOpDiv=24
+FPGA_TOP_CONFIG_d1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=1 PllInDiv=1 PllFbDiv=4 PllOpDiv=6
 FPGA_TOP_CONFIG_p2 := NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
 FPGA_TOP_CONFIG ?= p1
 FPGA_TOP_DIR    ?= $(BUILD)/fpga-top-$(FPGA_TOP_CONFIG)
@@ -27,7 +30,7 @@ FPGA_TOP_SEEDS  ?= 1
 FPGA_TOP_PARAMS ?= $(FPGA_TOP_CONFIG_$(FPGA_TOP_CONFIG))
 ifneq ($(filter fpga-pnr-top $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
 ifeq ($(strip $(FPGA_TOP_PARAMS)),)
-$(error FPGA_TOP_CONFIG=$(FPGA_TOP_CONFIG): no such configuration (p1, p2; or set FPGA_TOP_PARAMS))
+$(error FPGA_TOP_CONFIG=$(FPGA_TOP_CONFIG): no such configuration (p1, d1, p2; or set FPGA_TOP_PARAMS))
 endif
 endif
 FPGA_TOP_RUN     = PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_TOP_PARAMS="$(FPGA_TOP_PARAMS)" \
