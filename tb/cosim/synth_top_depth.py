@@ -16,17 +16,18 @@ to those on the other, as the two netlists were mapped (no logic optimised acros
 Every combinational cell is traversed from each input bit to each output bit (conservative for
 CARRY4: one level per CARRY4 of a chain). Endpoints are grouped by name with bit and generate
 indices removed (g_hp[3].u_state.raddr_i[5] -> g_hp[*].u_state.raddr_i). These are logic
-levels after mapping, not timing: no place and route is run.
+levels after mapping, not timing: no place and route is run. A synth_ecp5 netlist reads the same
+way: TRELLIS_FF a register, LUT4 a LUT level, CCU2C, PFUMX and L6MUX21 cells without one.
 """
 import json
 import re
 import sys
 from collections import defaultdict
 
-FF = re.compile(r"^FD[A-Z]*(_1)?$")
+FF = re.compile(r"^(FD[A-Z]*(_1)?|TRELLIS_FF)$")
 LUT = re.compile(r"^LUT[1-6]$")
 WIRE = {"IBUF", "OBUF", "BUFG", "INV", "BUF"}
-COMB = {"CARRY4", "MUXF7", "MUXF8"}
+COMB = {"CARRY4", "MUXF7", "MUXF8", "CCU2C", "PFUMX", "L6MUX21"}
 
 
 def weight(t):
