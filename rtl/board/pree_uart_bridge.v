@@ -8,8 +8,8 @@
 //   'R' (0x52)  2 bytes: address. Reply 'r' or 'e', then the 32 read data bits (4 bytes).
 //   'P' (0x50)  32 bytes: a photon beat of s_axis_ph (one 256-bit slot), TLAST low; 'L' (0x4C) the same
 //               with TLAST high. Reply 'a' once the stream has taken it.
-//   'C' (0x43)  4.5 NumPreu bytes: {tkeep (4 NumPreu bits), tdata (32 NumPreu bits)} of
-//               s_axis_cand. Reply 'a'.
+//   'C' (0x43)  4.5 NumPreu bytes rounded up: {tkeep (4 NumPreu bits), tdata (32 NumPreu bits)}
+//               of s_axis_cand, zero-padded at the top to whole bytes. Reply 'a'.
 //   'H' (0x48)  HpRecW / 8 bytes: a hit-point record for s_axis_hp. Reply 'a'.
 //   any other byte: reply '?' (the host has lost the framing).
 // Every command has exactly one reply; the host sends the next command only after it. Bytes that
@@ -72,7 +72,7 @@ module pree_uart_bridge #(
   localparam TW    = 8 + HpRecW;                        // the reply register: a byte + a beat
   localparam [7:0] OP_W = 8'h57, OP_R = 8'h52, OP_P = 8'h50, OP_L = 8'h4c, OP_C = 8'h43,
                    OP_H = 8'h48;
-  localparam [31:0] CAND_B = CandW / 8, HP_B = HpRecW / 8;
+  localparam [31:0] CAND_B = (CandW + 7) / 8, HP_B = HpRecW / 8;
   localparam [7:0] CAND_BYTES = CAND_B[7:0], HP_BYTES = HP_B[7:0];
   localparam [6:0] BEAT_BYTES = HP_B[6:0] + 7'd1;       // a stream beat with its byte
   localparam [1:0] S_CMD = 2'd0, S_DATA = 2'd1, S_EXEC = 2'd2, S_REPLY = 2'd3;
