@@ -19,6 +19,10 @@
 #include <stdint.h>
 #include "pree_drv.h"
 
+#ifdef __cplusplus
+extern "C" {
+#endif
+
 typedef struct cosim_rtl cosim_rtl_t;
 
 int pree_be_verilated_open(pree_backend_t *be, int preu, int datapath, double gap, uint64_t seed,
@@ -26,5 +30,9 @@ int pree_be_verilated_open(pree_backend_t *be, int preu, int datapath, double ga
 int pree_be_verilated_attach(pree_backend_t *be, cosim_rtl_t *rtl, int preu, int datapath, double gap,
                              uint64_t seed, uint32_t lead);
 uint64_t pree_be_verilated_cycles(const pree_backend_t *be);
+
+#ifdef __cplusplus
+}
+#endif
 
 #endif

@@ -18,10 +18,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cosim_axi_rtl.h"
-#include "pree_be_verilated.h"
 #include "pree_drv.h"
 
-#define MAX_CAND   2048u              /* candidates of one photon (the wrapper: 4096 - NumPreu) */
+#define MAX_CAND   2048u              /* candidates of one photon at most (else the build's 2^IdxAW - NumPreu) */
 #define HP_BLOCK   1024u              /* hit points read back at a time */
 #define CYCLES_MS  100000u            /* the back end's cycles a millisecond (a 100 MHz aclk) */
 
@@ -36,6 +35,7 @@ struct cosim_drv {
     uint32_t *cand;
     size_t ncand, cand_cap;
     uint32_t hp_loaded;                  /* hit points [0, hp_loaded) loaded: the wrapper reads no others */
+    uint32_t max_cand, idx_mask;         /* the build's: candidates a photon (a longer one is split), 2^IdxAW - 1 */
     pree_hit_point_t *blk;               /* hit points read back: [blk_base, blk_base + blk_n) */
     uint32_t blk_base, blk_n;
     cosim_sched_t *sched;
@@ -108,8 +108,9 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
         if (!d->sched) { free(d); return NULL; }
     }
     pree_backend_t be;
-    if (pree_be_verilated_attach(&be, rtl, opt->preu, opt->datapath, opt->gap, opt->seed,
-                                 opt->schedule ? COSIM_LEAD_ENTRIES(opt->preu) : 0)) {
+    char err[256];
+    if (cosim_axi_backend(&be, rtl, opt, err, sizeof err)) {
+        fprintf(stderr, "pree cosim: %s\n", err);
         cosim_sched_free(d->sched);
         free(d);
         return NULL;
@@ -123,6 +124,8 @@ cosim_drv_t *cosim_drv_new(cosim_rtl_t *rtl, const cosim_drv_opts_t *opt)
         fail(d, "pree_axi: CONFIG0 does not match the build");
         return d;
     }
+    d->max_cand = cfg->max_cand < MAX_CAND ? cfg->max_cand : MAX_CAND;
+    d->idx_mask = (1u << cfg->idx_aw) - 1u;
     const uint64_t limit = opt->wait_limit ? opt->wait_limit : 10000000u;
     pree_set_timeout(d->drv, (unsigned)(10 * limit / CYCLES_MS));
     const pree_constants_t k = {.alpha = cosim_rtl_in(rtl)->alpha, .kappa = cosim_rtl_in(rtl)->kappa};
@@ -176,7 +179,7 @@ static int emit(void *user, const preu_photon_t *ph, const uint32_t *hps, uint32
     (void)cycle;   /* the wrapper's latency is not the top's: no lag is tracked */
     cosim_drv_t *d = user;
     send(d, ph, hps, n, first);   /* a group goes in one beat */
-    *p = (uint32_t)(-(int64_t)d->cand_sent) & ((1u << COSIM_IDXAW) - 1);   /* pree_axi's p_k */
+    *p = (uint32_t)(-(int64_t)d->cand_sent) & d->idx_mask;   /* pree_axi's p_k */
     return d->hung ? -1 : 0;
 }
 
@@ -190,7 +193,7 @@ static int send_direct(void *user, const preu_photon_t *ph, const uint32_t *hps,
 
 int cosim_drv_photon(cosim_drv_t *d, const preu_photon_t *ph, const uint32_t *hps, size_t n)
 {
-    if (cosim_sched_offer(d->sched, d->hung, MAX_CAND, ph, hps, n, send_direct, d, d->err, sizeof d->err)) return -1;
+    if (cosim_sched_offer(d->sched, d->hung, d->max_cand, ph, hps, n, send_direct, d, d->err, sizeof d->err)) return -1;
     return d->hung ? -1 : 0;
 }
 

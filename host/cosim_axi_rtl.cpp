@@ -11,6 +11,7 @@
 #include <memory>
 
 #include AXI_MODEL_H
+#include "pree_be_verilated.h"
 #include "vharness.h"
 #include "vport.h"
 
@@ -150,5 +151,13 @@ void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.s
 int cosim_rtl_config(int, int *, int *) { return -1; }
 cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r) { return &r->ain; }
 const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r) { r->tick(); return &r->out; }
+int cosim_axi_backend(pree_backend_t *be, cosim_rtl_t *r, const cosim_drv_opts_t *opt, char *err, size_t errlen)
+{
+    if (!pree_be_verilated_attach(be, r, opt->preu, opt->datapath, opt->gap, opt->seed,
+                                  opt->schedule ? COSIM_LEAD_ENTRIES(opt->preu) : 0))
+        return 0;
+    std::snprintf(err, errlen, "out of memory");
+    return -1;
+}
 
 }  // extern "C"

@@ -11,12 +11,19 @@
  *                      are not read
  *   cosim_axi_tick(r)  apply the inputs, settle with the clock low, note every handshake
  *                      (valid and ready both high) and the data it carried, then one rising edge;
- *                      returns the notes of that edge */
+ *                      returns the notes of that edge
+ *   cosim_axi_backend(&be, r, opt, err, errlen)  the driver's back end on the model: the
+ *                      Verilated wrapper (drv/pree_be_verilated.h, with opt's gaps and the
+ *                      scheduler's lead); a board simulated behind its UART link
+ *                      (host/postroute_uart.cpp) supplies its own. 0, or -1 with err */
 #ifndef PREE_COSIM_AXI_RTL_H
 #define PREE_COSIM_AXI_RTL_H
 
+#include <stddef.h>
 #include <stdint.h>
+#include "cosim_drv.h"
 #include "cosim_rtl.h"
+#include "pree_drv.h"
 #include "preu_fp32.h"
 
 #ifdef __cplusplus
@@ -52,6 +59,7 @@ typedef struct {
 
 cosim_axi_in_t *cosim_axi_in(cosim_rtl_t *r);
 const cosim_axi_out_t *cosim_axi_tick(cosim_rtl_t *r);
+int cosim_axi_backend(pree_backend_t *be, cosim_rtl_t *r, const cosim_drv_opts_t *opt, char *err, size_t errlen);
 
 #ifdef __cplusplus
 }

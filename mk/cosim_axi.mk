@@ -69,7 +69,7 @@ $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a: $(
 	  -f rtl/pree.f >$$(@D).log 2>&1 || { tail -30 $$(@D).log; exit 1; }
 $(HOST_DIR)/cosim_axi_rtl$(3)_$(call cosim_tag,$(1),$(2)).o: host/cosim_axi_rtl.cpp $(call AXI_MDIR,$(1),$(2),$(3))/Vpree_axi_$(call cosim_tag,$(1),$(2))__ALL.a
 	@mkdir -p $$(@D)
-	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) -isystem $(call AXI_MDIR,$(1),$(2),$(3)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
+	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) -Idrv -isystem $(call AXI_MDIR,$(1),$(2),$(3)) -DAXI_MODEL=Vpree_axi_$(call cosim_tag,$(1),$(2)) \
 	  -DAXI_MODEL_H='"Vpree_axi_$(call cosim_tag,$(1),$(2)).h"' -DAXI_NP=$(1) -DAXI_DP=$(if $(findstring s,$(2)),1,0) \
 	  -DAXI_PF=$(if $(findstring f,$(2)),1,0) -DAXI_HPB=$(COSIM_HPB_$(1)) -DAXI_PPC=$(COSIM_PPC_$(1)) -c $$< -o $$@
 $(call axi_prog,$(3),$(call cosim_tag,$(1),$(2))): $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o $(filter-out %/cosim_drv.o,$(HOST_OBJS)) \

@@ -1,9 +1,11 @@
 # SPDX-License-Identifier: Apache-2.0
 # (After mk/cosim_axi.mk, whose model objects it links.) pree_drv, the C driver of pree_axi
-# (drv/pree_drv.h), and its two back ends: the Verilated wrapper (drv/pree_be_verilated.c, for
-# tests) and a board's UIO / /dev/mem mapping with Xilinx AXI DMA engines (drv/pree_be_uio.c).
+# (drv/pree_drv.h), and its back ends: the Verilated wrapper (drv/pree_be_verilated.c, for
+# tests), a board's UIO / /dev/mem mapping with Xilinx AXI DMA engines (drv/pree_be_uio.c), and
+# the UART link of the ULX3S board top (drv/pree_be_uart.c; mk/postroute.mk simulates it).
 #
-#   build/drv/libpree_drv.a   the driver and the board back end (for a board's program)
+#   build/drv/libpree_drv.a   the driver and the board back ends (for a board's program): UIO / AXI
+#                             DMA, and the UART link of pree_ulx3s (drv/pree_be_uart.c, a serial port)
 #   build/drv/pree_probe      board bring-up through it: the build's registers, and a hit-point
 #                             loopback through the DMA (drv/pree_probe.c; tests/checks/drv_board.sh)
 #   build/drv/pree_drv_test   the driver on the Verilated pree_axi of build/pree-cosim-axi-p4
@@ -29,7 +31,7 @@ $(DRV_DIR)/pree_be_verilated.o: drv/pree_be_verilated.c | $(DEPS_STAMP)
 $(DRV_DIR)/pree_drv_test.o: tb/drv/pree_drv_test.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
-$(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o
+$(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o $(DRV_DIR)/pree_be_uart.o $(DRV_DIR)/pree_uart_tty.o
 	$(call say,AR,$@)rm -f $@ && ar rcs $@ $^
 $(DRV_PROBE): $(DRV_DIR)/pree_probe.o $(DRV_LIB)
 	$(call say,LINK,$@)$(CC) $(LDFLAGS) $^ -o $@

