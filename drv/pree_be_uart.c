@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "pree_axi_regs.h"
+#include "pree_wqueue.h"
 
 #define OFF(r)      ((uint32_t)offsetof(pree_axi_regs_t, r))
 #define GET(v, r, f) (((v) & PREE_AXI_REGS__##r##__##f##_bm) >> PREE_AXI_REGS__##r##__##f##_bp)
@@ -16,16 +17,11 @@
 #define MAX_BYTES   160u    /* the longest command or beat: 1 + 128 (a beat of 4 photon slots) */
 
 typedef struct {
-    uint32_t *w;
-    size_t head, tail, cap;   /* words [head, tail) wait */
-} wq_t;
-
-typedef struct {
     pree_uart_chan_t ch;
     unsigned preu, hp_words, ph_words, cand_bytes;
     uint32_t irq_en;          /* the IRQ_EN last written */
-    wq_t q[3];                /* submitted: PREE_STREAM_HP, _PH (a beat, then its tlast), _CAND */
-    wq_t pend;                /* m_axis beats received before a receive() took them: flags, words */
+    pree_wq_t q[3];           /* submitted: PREE_STREAM_HP, _PH (a beat, then its tlast), _CAND */
+    pree_wq_t pend;           /* m_axis beats received before a receive() took them: flags, words */
     uint32_t *rx;             /* the armed m_axis buffer */
     size_t rx_n, rx_got;
     int rx_user, broken;
@@ -39,27 +35,9 @@ static int fail(ub_t *u, const char *msg)
     return -1;
 }
 
-static size_t avail(const wq_t *q) { return q->tail - q->head; }
-
-static int push(ub_t *u, wq_t *q, const uint32_t *w, size_t n)
+static int push(ub_t *u, pree_wq_t *q, const uint32_t *w, size_t n)
 {
-    if (q->head == q->tail) q->head = q->tail = 0;
-    if (q->tail + n > q->cap) {
-        memmove(q->w, q->w + q->head, avail(q) * sizeof *q->w);
-        q->tail -= q->head;
-        q->head = 0;
-        if (q->tail + n > q->cap) {
-            size_t cap = q->cap ? q->cap : 4096;
-            while (cap < q->tail + n) cap *= 2;
-            uint32_t *nw = realloc(q->w, cap * sizeof *nw);
-            if (!nw) return fail(u, "out of memory");
-            q->w = nw;
-            q->cap = cap;
-        }
-    }
-    memcpy(q->w + q->tail, w, n * sizeof *w);
-    q->tail += n;
-    return 0;
+    return pree_wq_push(q, w, n) ? fail(u, "out of memory") : 0;
 }
 
 /* nwords words as bytes, most significant first. */
@@ -179,17 +157,17 @@ static int send_cand(ub_t *u, const uint32_t *c, unsigned k)
 static int pump(ub_t *u)
 {
     uint8_t b[MAX_BYTES];
-    wq_t *hp = &u->q[PREE_STREAM_HP], *ph = &u->q[PREE_STREAM_PH], *cq = &u->q[PREE_STREAM_CAND];
-    while (!u->broken && avail(hp)) {
+    pree_wq_t *hp = &u->q[PREE_STREAM_HP], *ph = &u->q[PREE_STREAM_PH], *cq = &u->q[PREE_STREAM_CAND];
+    while (!u->broken && pree_wq_avail(hp)) {
         to_bytes(hp->w + hp->head, u->hp_words, b);
         if (stream_cmd(u, 'H', b, 4 * u->hp_words)) return -1;
         hp->head += u->hp_words;
     }
-    while (!u->broken && avail(ph)) {
+    while (!u->broken && pree_wq_avail(ph)) {
         const uint32_t *w = ph->w + ph->head;
         size_t need = 0;
         for (unsigned s = 0; s < u->ph_words / PREE_PH_SLOT_WORDS; s++) need += w[s * PREE_PH_SLOT_WORDS + 6];
-        if (avail(cq) < need) break;
+        if (pree_wq_avail(cq) < need) break;
         for (size_t k = 0; k < need; k += u->preu) {
             const unsigned m = need - k < u->preu ? (unsigned)(need - k) : u->preu;
             if (send_cand(u, cq->w + cq->head, m)) return -1;
@@ -234,7 +212,7 @@ static int receive_arm(void *ctx, uint32_t *words, size_t nbeats, unsigned beat_
     u->rx_n = nbeats;
     u->rx_got = 0;
     u->rx_user = user;
-    while (!u->broken && avail(&u->pend) && u->rx_got < u->rx_n) {   /* beats that came first */
+    while (!u->broken && pree_wq_avail(&u->pend) && u->rx_got < u->rx_n) {   /* beats that came first */
         uint32_t w[MAX_BYTES / 4 + 1];
         memcpy(w, u->pend.w + u->pend.head, (u->hp_words + 1) * sizeof *w);
         u->pend.head += u->hp_words + 1;
@@ -251,7 +229,7 @@ static int wait_for(void *ctx, int irq, unsigned timeout_ms)
     ub_t *u = ctx;
     const uint64_t deadline = u->ch.now_ms(u->ch.ctx) + timeout_ms;
     if (pump(u)) return -1;
-    if (avail(&u->q[PREE_STREAM_PH])) return fail(u, "photon beats wait for candidates that were never submitted");
+    if (pree_wq_avail(&u->q[PREE_STREAM_PH])) return fail(u, "photon beats wait for candidates that were never submitted");
     while (u->rx_got < u->rx_n) {
         uint8_t c;
         const long got = u->ch.recv(u->ch.ctx, &c, 1, deadline);
@@ -275,8 +253,8 @@ static void close_be(void *ctx)
 {
     ub_t *u = ctx;
     u->ch.close(u->ch.ctx);
-    for (int s = 0; s < 3; s++) free(u->q[s].w);
-    free(u->pend.w);
+    for (int s = 0; s < 3; s++) pree_wq_free(&u->q[s]);
+    pree_wq_free(&u->pend);
     free(u);
 }
 

@@ -15,14 +15,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "cosim_axi_rtl.h"
+#include "pree_wqueue.h"
 
 #define CYCLES_PER_MS 100000u   /* a 100 MHz aclk */
 #define LITE_LIMIT    100000u   /* cycles an AXI4-Lite transaction may take */
-
-typedef struct {
-    uint32_t *w;
-    size_t head, tail, cap;   /* words [head, tail) wait */
-} wqueue_t;
 
 typedef struct {
     cosim_rtl_t *rtl;
@@ -31,7 +27,7 @@ typedef struct {
     double gap;
     uint64_t rng, cycles;
     int own_rtl;              /* close frees the model */
-    wqueue_t q[3];            /* PREE_STREAM_HP, _PH, _CAND */
+    pree_wq_t q[3];           /* PREE_STREAM_HP, _PH, _CAND */
     uint32_t lead;            /* candidates the photon stream waits for (0: none) */
     int flowing;              /* a photon beat offered since the stream (re)started */
     uint64_t cand_taken, lead_from;   /* candidates taken; the lead counts from lead_from */
@@ -61,29 +57,9 @@ static int fail(vl_t *v, const char *msg)
     return -1;
 }
 
-static size_t avail(const wqueue_t *q) { return q->tail - q->head; }
-
-static int push(vl_t *v, wqueue_t *q, const uint32_t *w, size_t n)
+static int push(vl_t *v, pree_wq_t *q, const uint32_t *w, size_t n)
 {
-    if (q->head == q->tail) q->head = q->tail = 0;
-    if (q->tail + n > q->cap) {
-        if (q->head) {   /* compact */
-            memmove(q->w, q->w + q->head, avail(q) * sizeof *q->w);
-            q->tail -= q->head;
-            q->head = 0;
-        }
-        if (q->tail + n > q->cap) {
-            size_t cap = q->cap ? q->cap : 4096;
-            while (cap < q->tail + n) cap *= 2;
-            uint32_t *nw = realloc(q->w, cap * sizeof *nw);
-            if (!nw) return fail(v, "out of memory");
-            q->w = nw;
-            q->cap = cap;
-        }
-    }
-    memcpy(q->w + q->tail, w, n * sizeof *w);
-    q->tail += n;
-    return 0;
+    return pree_wq_push(q, w, n) ? fail(v, "out of memory") : 0;
 }
 
 /* One m_axis beat into the armed buffer, as the words of the stream's beat. */
@@ -111,15 +87,15 @@ static void receive(vl_t *v, const cosim_axi_out_t *o)
 static int led(vl_t *v)
 {
     if (v->flowing || !v->lead) return 1;
-    if (!avail(&v->q[PREE_STREAM_PH])) v->lead_from = v->cand_taken;   /* stopped: the lead counts from here */
-    return !avail(&v->q[PREE_STREAM_CAND]) || v->cand_taken - v->lead_from >= v->lead;
+    if (!pree_wq_avail(&v->q[PREE_STREAM_PH])) v->lead_from = v->cand_taken;   /* stopped: the lead counts from here */
+    return !pree_wq_avail(&v->q[PREE_STREAM_CAND]) || v->cand_taken - v->lead_from >= v->lead;
 }
 
 static void offer(vl_t *v)
 {
     cosim_axi_in_t *in = v->in;
-    wqueue_t *q = &v->q[PREE_STREAM_PH];
-    if (!in->ph_valid && led(v) && avail(q) && !gap(v)) {
+    pree_wq_t *q = &v->q[PREE_STREAM_PH];
+    if (!in->ph_valid && led(v) && pree_wq_avail(q) && !gap(v)) {
         for (int s = 0; s < v->ppc; s++) {
             const uint32_t *w = q->w + q->head + (size_t)s * PREE_PH_SLOT_WORDS;
             memcpy(in->ph[s].pos, w, sizeof in->ph[s].pos);
@@ -131,7 +107,7 @@ static void offer(vl_t *v)
         v->flowing = 1;
     }
     q = &v->q[PREE_STREAM_HP];
-    if (!in->hp_valid && avail(q) && !gap(v)) {
+    if (!in->hp_valid && pree_wq_avail(q) && !gap(v)) {
         const uint32_t *w = q->w + q->head;
         const int s = v->state_words;
         memset(&in->hp, 0, sizeof in->hp);
@@ -142,7 +118,7 @@ static void offer(vl_t *v)
         in->hp_valid = 1;
     }
     q = &v->q[PREE_STREAM_CAND];
-    const uint32_t np = (uint32_t)v->preu, n = (uint32_t)(avail(q) < np ? avail(q) : np);
+    const uint32_t np = (uint32_t)v->preu, n = (uint32_t)(pree_wq_avail(q) < np ? pree_wq_avail(q) : np);
     if (!in->cand_valid && n && !gap(v)) {
         const uint32_t k = v->gap > 0 ? 1 + (uint32_t)(next_rand(v) % n) : n;
         uint32_t keep = 0, placed = 0;
@@ -238,7 +214,7 @@ static int submit(void *ctx, int stream, const uint32_t *words, size_t n, unsign
             v->ph_last = nl;
             v->last_cap = cap;
         }
-        v->ph_last[v->nlast++] = v->ph_beats + (avail(&v->q[PREE_STREAM_PH]) + n) / want - 1;
+        v->ph_last[v->nlast++] = v->ph_beats + (pree_wq_avail(&v->q[PREE_STREAM_PH]) + n) / want - 1;
     }
     return push(v, &v->q[stream], words, n);
 }
@@ -261,7 +237,7 @@ static int receive_arm(void *ctx, uint32_t *words, size_t nbeats, unsigned beat_
 
 static int drained(const vl_t *v)
 {
-    return !avail(&v->q[0]) && !avail(&v->q[1]) && !avail(&v->q[2]) && v->rx_got == v->rx_n;
+    return !pree_wq_avail(&v->q[0]) && !pree_wq_avail(&v->q[1]) && !pree_wq_avail(&v->q[2]) && v->rx_got == v->rx_n;
 }
 
 static int wait_for(void *ctx, int irq, unsigned timeout_ms)
@@ -282,7 +258,7 @@ static void close_be(void *ctx)
 {
     vl_t *v = ctx;
     if (v->own_rtl) cosim_rtl_free(v->rtl);
-    for (int s = 0; s < 3; s++) free(v->q[s].w);
+    for (int s = 0; s < 3; s++) pree_wq_free(&v->q[s]);
     free(v->ph_last);
     free(v);
 }

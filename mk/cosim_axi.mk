@@ -34,7 +34,7 @@
 # The Verilated pree_axi models use the co-simulation's parameters and banks (mk/cosim.mk).
 
 AXI_DIR    := $(BUILD)/axi
-AXI_DRV_OBJS := $(BUILD)/drv/pree_drv.o $(BUILD)/drv/pree_be_verilated.o
+AXI_DRV_OBJS := $(BUILD)/drv/pree_drv.o $(BUILD)/drv/pree_be_verilated.o $(BUILD)/drv/pree_wqueue.o
 AXI_RTL    := $(shell grep -v '^//' rtl/pree.f)
 AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x$(COSIM_PXB_$(1))_w$(COSIM_PPC_$(1))
 # The quick builds (flavour q): the same models compiled with g++ -O0, for short co-simulations

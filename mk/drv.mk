@@ -17,7 +17,7 @@ DRV_TEST   := $(DRV_DIR)/pree_drv_test
 DRV_LIB    := $(DRV_DIR)/libpree_drv.a
 DRV_PROBE  := $(DRV_DIR)/pree_probe
 # The Verilated back end's model: pree_axi with 4 PREUs, the paper datapath (mk/cosim_axi.mk).
-DRV_VL_OBJS := $(DRV_DIR)/pree_be_verilated.o $(HOST_DIR)/cosim_axi_rtl_p4.o \
+DRV_VL_OBJS := $(DRV_DIR)/pree_be_verilated.o $(DRV_DIR)/pree_wqueue.o $(HOST_DIR)/cosim_axi_rtl_p4.o \
                $(call AXI_MDIR,4,p)/Vpree_axi_p4__ALL.a $(COSIM_VLIB)
 
 TEST_PREREQS += $(DRV_LIB) $(DRV_PROBE) $(DRV_TEST)
@@ -31,7 +31,8 @@ $(DRV_DIR)/pree_be_verilated.o: drv/pree_be_verilated.c | $(DEPS_STAMP)
 $(DRV_DIR)/pree_drv_test.o: tb/drv/pree_drv_test.c | $(DEPS_STAMP)
 	@mkdir -p $(@D)
 	$(call say,CC,$@)$(CC) $(DRV_CFLAGS) -Ihost -c $< -o $@
-$(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o $(DRV_DIR)/pree_be_uart.o $(DRV_DIR)/pree_uart_tty.o
+$(DRV_LIB): $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uio.o $(DRV_DIR)/pree_be_uart.o $(DRV_DIR)/pree_uart_tty.o \
+           $(DRV_DIR)/pree_wqueue.o
 	$(call say,AR,$@)rm -f $@ && ar rcs $@ $^
 $(DRV_PROBE): $(DRV_DIR)/pree_probe.o $(DRV_LIB)
 	$(call say,LINK,$@)$(CC) $(LDFLAGS) $^ -o $@

@@ -32,7 +32,7 @@ POSTROUTE_DIV     := 25
 POSTROUTE_VFLAGS  := --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast -Wno-fatal -Wno-lint \
                      -Wno-style --top-module pree_ulx3s
 POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o \
-                     $(filter-out %/cosim_drv.o,$(HOST_OBJS)) $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uart.o \
+                     $(filter-out %/cosim_drv.o,$(HOST_OBJS)) $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uart.o $(DRV_DIR)/pree_wqueue.o \
                      $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE)
 
 .PHONY: sim-postroute sim-postroute-synth sim-postroute-rtl
