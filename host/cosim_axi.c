@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 /* cosim_axi.c: the cosim_drv.h API through the AXI4 wrapper (rtl/pree_axi.v): the co-simulation
- * host speaks to pree_axi through its driver, pree_drv (drv/pree_drv.h), on the Verilated
- * wrapper (drv/pree_be_verilated.h, attached to the program's model, cosim_axi_rtl.h); linked
- * into build/pree-cosim-axi-<d><n> in place of cosim_drv.c. The driver's sequence is the one a
- * board's host runs: this file only turns the co-simulation's calls into the driver's.
+ * host speaks to pree_axi through its driver, pree_drv (drv/pree_drv.h), on the back end that the
+ * program's model provides (cosim_axi_backend, cosim_axi_rtl.h): the Verilated wrapper
+ * (drv/pree_be_verilated.h; build/pree-cosim-axi-<d><n>) or a simulated ULX3S behind its UART
+ * (drv/pree_be_uart.h, host/postroute_uart.cpp; build/postroute/pree-cosim-uart-*); linked in
+ * place of cosim_drv.c. The driver's sequence is the one a board's host runs: this file only
+ * turns the co-simulation's calls into the driver's.
  *
  * Photons go as beats of PhotonsPerCycle slots: with the scheduler (the default), one group of
  * its model's photons a beat (the group it took in one cycle), and the photon stream starts once
