@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
 // postroute_uart.cpp: a simulated ULX3S for the UART back end (drv/pree_be_uart.h): the Verilated
 // board top pree_ulx3s (the RTL, or the routed netlist of docs/fpga_board.md, "Post-route
-// simulation"; the make rule passes PR_MODEL, PR_MODEL_H, PR_NP, PR_DIV) behind a byte channel.
-// A UART model bit-bangs the host's bytes onto ftdi_txd (8N1, PR_DIV clock cycles a bit) and
-// decodes ftdi_rxd, sampling each bit in its middle; the channel's clock is the board's, 25 MHz.
+// simulation"; the make rule passes PR_MODEL, PR_MODEL_H, PR_NP, PR_PF, PR_DIV, PR_KHZ) behind a
+// byte channel. A UART model bit-bangs the host's bytes onto ftdi_txd (8N1, PR_DIV clock cycles a
+// bit) and decodes ftdi_rxd, sampling each bit in its middle. The simulation counts core clock
+// cycles (the PLL's model passes the clock pin's edges through); the channel's milliseconds are
+// those of the core clock, PR_KHZ kHz.
 // It also provides what pree cosim's AXI host (host/cosim_axi.c, cosim_axi_rtl.h) needs of its
 // model: the build's constants and cosim_axi_backend, the driver's back end on this board.
 #include <cstdio>
@@ -16,7 +18,7 @@
 #include "vharness.h"
 
 namespace {
-const uint64_t CYCLES_PER_MS = 25000;   // the 25 MHz board clock, passed through the PLL 1:1
+const uint64_t CYCLES_PER_MS = PR_KHZ;   // the core clock
 struct BoardPorts {
     static void clk(PR_MODEL &t, int v) { t.clk_25mhz = v; }
     static void rst(PR_MODEL &t, int v) { t.btn_pwr_n = v; }
@@ -100,9 +102,10 @@ extern "C" {
 
 cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst, char *err, size_t errlen)
 {
-    if (preu != PR_NP || datapath != 0 || pipefast != 0) {
+    if (preu != PR_NP || datapath != 0 || pipefast != PR_PF) {
         std::snprintf(err, errlen, "this program simulates the board top with %d PREU(s), the paper's datapath and "
-                      "stages (--preu %d)", PR_NP, PR_NP);
+                      "%s stages (--preu %d%s)", PR_NP, PR_PF ? "the deep" : "the paper's", PR_NP,
+                      PR_PF ? " --pipe-fast" : "");
         return nullptr;
     }
     cosim_rtl_t *r = new cosim_rtl(fst);
@@ -115,16 +118,16 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
 }
 void cosim_rtl_free(cosim_rtl_t *r)
 {
-    if (r) std::fprintf(stderr, "board: %llu clock cycles run (%llu ms at 25 MHz)\n", (unsigned long long)r->h.cycles(),
-                        (unsigned long long)r->now_ms());
+    if (r) std::fprintf(stderr, "board: %llu clock cycles run (%llu ms at %.3f MHz)\n", (unsigned long long)r->h.cycles(),
+                        (unsigned long long)r->now_ms(), PR_KHZ / 1000.0);
     delete r;
 }
 cosim_in_t *cosim_rtl_in(cosim_rtl_t *r) { return &r->in; }
 int cosim_rtl_hp_bank_w(cosim_rtl_t *) { return PR_HPB; }
-int cosim_rtl_update_window(cosim_rtl_t *) { return PREE_UPDATE_WINDOW(0, 0); }
-int cosim_rtl_reg_flow(cosim_rtl_t *) { return 0; }
+int cosim_rtl_update_window(cosim_rtl_t *) { return PREE_UPDATE_WINDOW(0, PR_PF); }
+int cosim_rtl_reg_flow(cosim_rtl_t *) { return PR_PF ? 1 : 0; }
 int cosim_rtl_ppc(cosim_rtl_t *) { return 1; }
-int cosim_rtl_radiance_depth(cosim_rtl_t *) { return PREE_RADIANCE_DEPTH(0); }
+int cosim_rtl_radiance_depth(cosim_rtl_t *) { return PREE_RADIANCE_DEPTH(PR_PF); }
 uint64_t cosim_rtl_cycle(cosim_rtl_t *r) { return r->h.trace_cycle(); }
 void cosim_rtl_trace_window(cosim_rtl_t *r, uint64_t from, uint64_t to) { r->h.set_trace_window(from, to); }
 int cosim_rtl_config(int, int *, int *) { return -1; }

