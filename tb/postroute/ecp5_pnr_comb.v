@@ -52,6 +52,14 @@ module TRELLIS_COMB #(
       $fatal(1, "TRELLIS_COMB model: CCU2_INJECT1, WREMUX, WCKMUX or OFXMUX not modelled");
   end
 
+  // The paths that nextpnr's SDF times (IOPATH), zero until $sdf_annotate sets them.
+  specify
+    (A => F) = 0; (B => F) = 0; (C => F) = 0; (D => F) = 0; (FCI => F) = 0; (WCK => F) = 0;
+    (A => FCO) = 0; (B => FCO) = 0; (C => FCO) = 0; (D => FCO) = 0; (FCI => FCO) = 0;
+    (A => OFX) = 0; (B => OFX) = 0; (C => OFX) = 0; (D => OFX) = 0; (M => OFX) = 0;
+    (F1 => OFX) = 0; (FXA => OFX) = 0; (FXB => OFX) = 0;
+  endspecify
+
   wire unused = &{1'b0, DI0, DI1};
 endmodule
 
