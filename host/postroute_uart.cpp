@@ -6,11 +6,18 @@
 // bit) and decodes ftdi_rxd, sampling each bit in its middle. The simulation counts core clock
 // cycles (the PLL's model passes the clock pin's edges through); the channel's milliseconds are
 // those of the core clock, PR_KHZ kHz.
+// PREE_POSTROUTE_RECORD=<prefix> records the link for the timing-annotated replay
+// (tb/postroute/postroute_replay_tb.v; docs/fpga_board.md, "Timing-annotated run"): <prefix>.txd
+// and <prefix>.rxd, a line "<cycle> <level>" at each change of ftdi_txd (set before that cycle's
+// rising edge) and of ftdi_rxd (after it), cycles counted from the first, reset included; and
+// <prefix>.bytes, "<cycle> tx|rx <hex>" for each byte as it starts (tx) or is decoded (rx).
 // It also provides what pree cosim's AXI host (host/cosim_axi.c, cosim_axi_rtl.h) needs of its
 // model: the build's constants and cosim_axi_backend, the driver's back end on this board.
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <string>
 
 #include "cosim_axi_rtl.h"
 #include "pree_be_uart.h"
@@ -35,6 +42,8 @@ struct cosim_rtl {
     int rx_bit = -1;               // the same for the byte being received
     unsigned rx_cnt = 0, rx_byte = 0;
     char err[128] = "";
+    FILE *rec_txd = nullptr, *rec_rxd = nullptr, *rec_bytes = nullptr;   // PREE_POSTROUTE_RECORD
+    int last_txd = 1, last_rxd = -1;
 
     explicit cosim_rtl(const char *fst) : h(0, nullptr, fst), top(&h.dut())
     {
@@ -42,9 +51,33 @@ struct cosim_rtl {
         top->ftdi_txd = 1;         // the line idles high
         h.reset(2, 64);            // the PLL locks after 16 edges, then the reset synchroniser
     }
+    ~cosim_rtl()
+    {
+        for (FILE *f : {rec_txd, rec_rxd, rec_bytes})
+            if (f) std::fclose(f);
+    }
+    // Opens the records (PREE_POSTROUTE_RECORD); false with err set when one cannot be written.
+    bool record(const char *prefix)
+    {
+        FILE **files[] = {&rec_txd, &rec_rxd, &rec_bytes};
+        const char *ext[] = {".txd", ".rxd", ".bytes"};
+        for (int i = 0; i < 3; i++) {
+            const std::string path = std::string(prefix) + ext[i];
+            if (!(*files[i] = std::fopen(path.c_str(), "w"))) {
+                std::snprintf(err, sizeof err, "PREE_POSTROUTE_RECORD: cannot write %s", path.c_str());
+                return false;
+            }
+        }
+        return true;
+    }
     void tick()
     {
-        if (tx_bit < 0 && !txq.empty()) { tx_bit = 0; tx_cnt = 0; }
+        const uint64_t cyc = h.cycles();   // this tick's rising edge
+        if (tx_bit < 0 && !txq.empty()) {
+            tx_bit = 0;
+            tx_cnt = 0;
+            if (rec_bytes) std::fprintf(rec_bytes, "%llu tx %02x\n", (unsigned long long)cyc, txq.front());
+        }
         if (tx_bit >= 0) {
             const unsigned b = txq.front();
             top->ftdi_txd = tx_bit == 0 ? 0 : tx_bit == 9 ? 1 : (b >> (tx_bit - 1)) & 1u;
@@ -55,8 +88,16 @@ struct cosim_rtl {
         } else {
             top->ftdi_txd = 1;
         }
+        if (rec_txd && top->ftdi_txd != last_txd) {
+            last_txd = top->ftdi_txd;
+            std::fprintf(rec_txd, "%llu %d\n", (unsigned long long)cyc, last_txd);
+        }
         h.tick();
         const unsigned line = top->ftdi_rxd;
+        if (rec_rxd && (int)line != last_rxd) {
+            last_rxd = (int)line;
+            std::fprintf(rec_rxd, "%llu %d\n", (unsigned long long)cyc, last_rxd);
+        }
         if (rx_bit < 0) {
             if (!line) { rx_bit = 0; rx_cnt = 0; rx_byte = 0; }
         } else if (++rx_cnt == (rx_bit == 0 ? PR_DIV / 2 : PR_DIV)) {   // the middle of each bit
@@ -66,6 +107,7 @@ struct cosim_rtl {
             if (rx_bit == 9) {
                 if (!line) std::snprintf(err, sizeof err, "ftdi_rxd: a byte without its stop bit");
                 rxq.push_back((uint8_t)rx_byte);
+                if (rec_bytes) std::fprintf(rec_bytes, "%llu rx %02x\n", (unsigned long long)cyc, rx_byte);
                 rx_bit = -1;
             } else if (rx_bit >= 0) {
                 rx_bit++;
@@ -111,6 +153,12 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
     cosim_rtl_t *r = new cosim_rtl(fst);
     if (const char *te = r->h.trace_error()) {
         std::snprintf(err, errlen, "%s", te);
+        delete r;
+        return nullptr;
+    }
+    const char *rec = std::getenv("PREE_POSTROUTE_RECORD");
+    if (rec && rec[0] && !r->record(rec)) {
+        std::snprintf(err, errlen, "%s", r->err);
         delete r;
         return nullptr;
     }
