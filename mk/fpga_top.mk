@@ -11,8 +11,8 @@
 #                                           floorplan, $(FPGA_TOP_DIR)/floorplan.png
 #   FPGA_TOP_CONFIG=p2                      a named configuration (below; default p1, the one
 #                                           that routes), in $(BUILD)/fpga-top-<name>
-#   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 2: p1's
-#                                           seed 1 does not converge, docs/fpga_board.md)
+#   FPGA_TOP_SEEDS="1 2 3"                  nextpnr's placer seeds, one run each (default 1); the
+#                                           first one's routed design makes the bitstream
 #   FPGA_TOP_PARAMS="NumPreu=2 PipeFast=1 ..."   pree_ulx3s's parameters in place of the named
 #                                           configuration's
 #   FPGA_TOP_DIR=build/fpga-top-x           another folder (one per configuration)
@@ -27,7 +27,7 @@ FPGA_TOP_CONFIG_d1 := NumPreu=1 HpAW=10 HpBankW=1 IdxAW=7 PxAW=9 PxBankW=1 CntW=
 FPGA_TOP_CONFIG_p2 := NumPreu=2 HpAW=12 HpBankW=3 IdxAW=12 PxAW=12 PxBankW=2 CntW=16 Datapath=0 PipeFast=0
 FPGA_TOP_CONFIG ?= p1
 FPGA_TOP_DIR    ?= $(BUILD)/fpga-top-$(FPGA_TOP_CONFIG)
-FPGA_TOP_SEEDS  ?= 2
+FPGA_TOP_SEEDS  ?= 1
 FPGA_TOP_PARAMS ?= $(FPGA_TOP_CONFIG_$(FPGA_TOP_CONFIG))
 ifneq ($(filter fpga-pnr-top $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
 ifeq ($(strip $(FPGA_TOP_PARAMS)),)
