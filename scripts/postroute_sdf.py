@@ -19,7 +19,9 @@ brackets, "$") and Yosys's renaming of "$" names do not give. So this script rew
     a data input's setup time (SETUPHOLD, SETUP, RECOVERY: the largest of its checks) is added
     to it, so that data arriving after (edge - setup) is sampled at the next edge, as the
     silicon would fail it; hold and width checks are dropped (counted);
-  - the delays are written in picoseconds (min:typ:max triples kept, TIMESCALE 1ps).
+  - the delays are written in picoseconds (min:typ:max triples kept, TIMESCALE 1ps);
+  - the cells go into submodules of 256 (instances g<K>, SDF instances g<K>/c<N>): Icarus looks
+    an SDF instance up by a linear search of its scope, minutes for 60,000 cells in one.
 The counts of each are printed. A cell, pin or triple the netlist does not have is an error.
 
 usage: postroute_sdf.py <sim.json> <routed.sdf> <out.json> <out.sdf>
@@ -34,6 +36,7 @@ TOKEN = re.compile(r'\(|\)|"[^"]*"|(?:\\.|[^\s()"\\])+')
 UNIT_PS = {"1ps": 1, "10ps": 10, "100ps": 100, "1ns": 1000, "10ns": 10000, "100ns": 100000}
 SETUP_CHECKS = ("SETUPHOLD", "SETUP", "RECOVERY")
 DELAY_CELL = "ROUTE_DELAY"
+GROUP = 256   # cells a submodule (group_cells)
 
 
 class SdfError(Exception):
@@ -160,6 +163,48 @@ def fmt(v):
     return "(%d:%d:%d)" % tuple(v)
 
 
+def group_cells(design, top, cells):
+    """Puts the cells into GROUP-cell submodules g<K> (modules pree_sdf_g<K>) of the top module:
+    Icarus finds each SDF instance by a linear search of its scope, which over 60,000 cells of
+    one scope takes minutes; two levels take a second. -> {cell: its group's instance name}"""
+    order = sorted(cells)
+    group = {c: f"g{i // GROUP}" for i, c in enumerate(order)}
+    driver, users = {}, {}
+    for c, cell in cells.items():
+        for port, bits in cell["connections"].items():
+            for b in bits:
+                if isinstance(b, int):
+                    if cell["port_directions"].get(port) == "output":
+                        driver[b] = group[c]
+                    else:
+                        users.setdefault(b, set()).add(group[c])
+    for port in top["ports"].values():
+        for b in port["bits"]:
+            if isinstance(b, int):
+                users.setdefault(b, set()).add("" if port["direction"] == "output" else None)
+    top_cells = {}
+    for k in range(0, len(order), GROUP):
+        g = group[order[k]]
+        members = {c: cells[c] for c in order[k:k + GROUP]}
+        bits = sorted({b for cell in members.values() for bits in cell["connections"].values()
+                       for b in bits if isinstance(b, int)})
+        ports = {}
+        for b in bits:
+            if driver.get(b) == g:
+                if users.get(b, set()) - {g}:
+                    ports[f"n{b}"] = {"direction": "output", "bits": [b]}
+            else:
+                ports[f"n{b}"] = {"direction": "input", "bits": [b]}
+        design["modules"][f"pree_sdf_{g}"] = {
+            "attributes": {}, "ports": ports, "cells": members,
+            "netnames": {f"n{b}": {"hide_name": 0, "bits": [b], "attributes": {}} for b in bits}}
+        top_cells[g] = {"hide_name": 0, "type": f"pree_sdf_{g}", "parameters": {}, "attributes": {},
+                        "port_directions": {p: v["direction"] for p, v in ports.items()},
+                        "connections": {p: v["bits"] for p, v in ports.items()}}
+    top["cells"] = top_cells
+    return group
+
+
 def main():
     if len(sys.argv) != 5:
         sys.exit("usage: postroute_sdf.py <sim.json> <routed.sdf> <out.json> <out.sdf>")
@@ -223,21 +268,15 @@ def main():
                     n["setup_cell"] += 1
                 cell_delay[(inst, pin)] = add(cell_delay.get((inst, pin), [0, 0, 0]), s)
 
-    # Rename the cells, put the delay cells in, write both.
+    # Rename the cells, put the delay cells in, group them, write both.
     names = {old: f"c{i}" for i, old in enumerate(sorted(cells))}
     next_bit = 1 + max(b for net in top["netnames"].values() for b in net["bits"] if isinstance(b, int))
     new_cells = {names[k]: v for k, v in cells.items()}
-    out = []
-    for inst, (ctype, _, _, _) in sorted(sdf_cells.items(), key=lambda kv: names.get(kv[0], "")):
+    entries = []   # (cell, CELLTYPE, its IOPATH lines)
+    for inst, (ctype, _, _, _) in sdf_cells.items():
         ps = paths.get(inst, [])
-        if not inst or not ps:
-            continue
-        out.append(f'  (CELL (CELLTYPE "{ctype}") (INSTANCE {names[inst]})\n    (DELAY (ABSOLUTE\n')
-        for e, i, o, r, f in ps:
-            src = f"({e} {i})" if e else i
-            out.append(f"      (IOPATH {src} {o} {fmt(r)} {fmt(f)})\n")
-            n["iopath"] += 1
-        out.append("    )))\n")
+        if inst and ps:
+            entries.append((names[inst], ctype, [f"({e} {i})" if e else i for e, i, _, _, _ in ps], ps))
     for k, ((inst, pin), d) in enumerate(sorted(cell_delay.items())):
         conn = cells[inst]["connections"][pin]
         if len(conn) != 1:
@@ -249,11 +288,17 @@ def main():
         cells[inst]["connections"][pin] = [next_bit]
         next_bit += 1
         if any(d):
-            out.append(f'  (CELL (CELLTYPE "{DELAY_CELL}") (INSTANCE {name})\n'
-                       f"    (DELAY (ABSOLUTE (IOPATH A Z {fmt(d)} {fmt(d)}))))\n")
+            entries.append((name, DELAY_CELL, ["A"], [(None, "A", "Z", d, d)]))
         n["wire_cell"] += 1
     n["setup_only_cells"] = n.pop("setup_cell")
-    top["cells"] = new_cells
+    group = group_cells(design, top, new_cells)
+    out = []
+    for name, ctype, srcs, ps in sorted(entries, key=lambda e: e[0]):
+        out.append(f'  (CELL (CELLTYPE "{ctype}") (INSTANCE {group[name]}/{name})\n    (DELAY (ABSOLUTE\n')
+        for src, (_, _, o, r, f) in zip(srcs, ps):
+            out.append(f"      (IOPATH {src} {o} {fmt(r)} {fmt(f)})\n")
+            n["iopath"] += 1
+        out.append("    )))\n")
 
     for path, write in ((dst_json, lambda f: json.dump(design, f)),
                         (dst_sdf, lambda f: f.write('(DELAYFILE\n  (SDFVERSION "3.0")\n  (DESIGN "top")\n'
