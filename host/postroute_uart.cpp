@@ -21,6 +21,9 @@
 
 #include "cosim_axi_rtl.h"
 #include "pree_be_uart.h"
+extern "C" {
+#include "pree_env.h"
+}
 #include PR_MODEL_H
 #include "vharness.h"
 
@@ -156,7 +159,7 @@ cosim_rtl_t *cosim_rtl_new(int preu, int datapath, int pipefast, const char *fst
         delete r;
         return nullptr;
     }
-    const char *rec = std::getenv("PREE_POSTROUTE_RECORD");
+    const char *rec = pree_env(PREE_ENV_POSTROUTE_RECORD);
     if (rec && rec[0] && !r->record(rec)) {
         std::snprintf(err, errlen, "%s", r->err);
         delete r;

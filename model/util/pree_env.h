@@ -17,6 +17,8 @@
  * Where a file is:
  *   PREE_OIIO_MODULE     the OpenImageIO module (libpree_oiio.so) to load instead of the one
  *                        beside the program (model/image/image.c, docs/compare.md)
+ *   PREE_POSTROUTE_RECORD PREFIX: the post-route programs record the UART link in PREFIX.txd,
+ *                        PREFIX.rxd and PREFIX.bytes (host/postroute_uart.cpp, docs/fpga_board.md)
  * Test hooks inject a fault at a named point, for the checks of interruption, kill and failure
  * reports:
  *   PREE_TEST_INTERRUPT  PHASE: SIGINT as the render reaches PHASE (render_test_interrupt)
@@ -35,6 +37,7 @@ typedef enum {
     PREE_ENV_NO_REFILTER,
     PREE_ENV_SCREEN_BLOCKS,
     PREE_ENV_OIIO_MODULE,
+    PREE_ENV_POSTROUTE_RECORD,
     PREE_ENV_TEST_INTERRUPT,
     PREE_ENV_TEST_KILL,
     PREE_ENV_TEST_CORRUPT_HP,
