@@ -43,9 +43,9 @@ POSTROUTE_PF      := $(call postroute_param,PipeFast,1)
 # cycles (the PLL's model gives CLKOP an edge for each input edge): a UART bit is the board top's
 # Div = (25 MHz x PllFbDiv / PllInDiv) / Baud cycles, 20 for p1's 20 MHz at 1 Mbit/s.
 POSTROUTE_GPARAMS := $(foreach p,$(FPGA_TOP_PARAMS),-G$(p))
-POSTROUTE_KHZ     := $(shell echo $$((25000 / $(call postroute_param,PllInDiv,1) * $(call postroute_param,PllFbDiv,4))))
-POSTROUTE_DIV     := $(shell echo $$((25000000 / $(call postroute_param,PllInDiv,1) * \
-                       $(call postroute_param,PllFbDiv,4) / $(call postroute_param,Baud,1000000))))
+POSTROUTE_HZ      := $(shell echo $$((25000000 / $(call postroute_param,PllInDiv,1) * $(call postroute_param,PllFbDiv,4))))
+POSTROUTE_KHZ     := $(shell echo $$(($(POSTROUTE_HZ) / 1000)))
+POSTROUTE_DIV     := $(shell echo $$(($(POSTROUTE_HZ) / $(call postroute_param,Baud,1000000))))
 POSTROUTE_VFLAGS  := --cc --build -j $(THREADS) -O3 --x-assign fast --x-initial fast -Wno-fatal -Wno-lint \
                      -Wno-style --top-module pree_ulx3s
 POSTROUTE_OBJS    := $(HOST_DIR)/cosim_main_axi.o $(COSIM_MAIN_OBJS) $(HOST_DIR)/cosim_axi.o \
