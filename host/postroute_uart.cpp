@@ -14,7 +14,6 @@
 // It also provides what pree cosim's AXI host (host/cosim_axi.c, cosim_axi_rtl.h) needs of its
 // model: the build's constants and cosim_axi_backend, the driver's back end on this board.
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <string>
