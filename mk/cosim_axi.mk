@@ -11,7 +11,9 @@
 #                      table's memory sizes, LUT levels (tb/axi/synth_axi_full.sh), into the table of
 #                      docs/integration_resources.md (markers synth-axi-full). SYNTH_AXI_FULL_RUNS:
 #                      <mode>_pf<PipeFast>_p<NumPreu>, mode hier (PREU, RAM banks and controllers
-#                      kept as modules) or flat; each run's files in $(AXI_DIR)/full-synth.
+#                      kept as modules), fine (pree_top's parts kept as well: the 16-PREU runs,
+#                      whose hier runs do not finish in an hour) or flat; each run's files in
+#                      $(AXI_DIR)/full-synth.
 #                      Outside `make test`: minutes of one core a run (the table's CPU column)
 #   make fit-table     the block RAM / URAM fit table of docs/integration_resources.md (scripts/pree_fit.py)
 #   build/pree-cosim-axi-<d><n>[f]  `pree cosim --axi [--pipe-fast]`: the co-simulation through
@@ -42,7 +44,7 @@ AXI_MDIR    = $(AXI_DIR)/vl$(3)_$(call cosim_tag,$(1),$(2))_h$(COSIM_HPB_$(1))_x
 # the simulation slower). axi_prog FLAVOUR TAG: the program's path.
 axi_prog    = $(if $(1),$(AXI_DIR)/quick,$(BUILD))/pree-cosim-axi-$(2)
 SYNTH_AXI_PREUS ?= 4
-SYNTH_AXI_FULL_RUNS ?= hier_pf0_p4 hier_pf0_p8 hier_pf0_p16 hier_pf1_p4 hier_pf1_p8 hier_pf1_p16 hier_pf1_p1 flat_pf1_p1
+SYNTH_AXI_FULL_RUNS ?= hier_pf0_p4 hier_pf0_p8 fine_pf0_p16 hier_pf1_p4 hier_pf1_p8 fine_pf1_p16 hier_pf1_p1 flat_pf1_p1
 
 TEST_PREREQS  += $(AXI_REGRESSION_TAGS:%=$(BUILD)/pree-cosim-axi-%) $(foreach t,$(AXI_QUICK_TAGS),$(call axi_prog,q,$(t)))
 AXI_FULL_TAGS ?= p4 p8 p16 p4f p8f p16f s4 s4f
@@ -107,7 +109,7 @@ synth-axi: | $(DEPS_STAMP)
 # One run a file: <mode>_pf<PipeFast>_p<NumPreu>.md (tb/axi/synth_axi_full.sh), remade when the
 # RTL or the script changes.
 $(AXI_DIR)/full-synth/%.md: tb/axi/synth_axi_full.sh tb/cosim/synth_top_depth.py $(AXI_RTL) | $(DEPS_STAMP)
-	nice -n 10 tb/axi/synth_axi_full.sh $(if $(filter flat_%,$*),--flat) \
+	nice -n 10 tb/axi/synth_axi_full.sh $(if $(filter flat_%,$*),--flat)$(if $(filter fine_%,$*),--fine) \
 	  $(patsubst pf%,%,$(word 2,$(subst _, ,$*))) $(patsubst p%,%,$(word 3,$(subst _, ,$*))) $(@D)
 synth-axi-full: $(SYNTH_AXI_FULL_RUNS:%=$(AXI_DIR)/full-synth/%.md)
 	@{ echo '| PREUs | PREU | synthesis | LUT | FF | CARRY4 | MUXF7/8 | DSP48E1 | RAMB36E1 | RAMB18E1 | LUTRAM | LUT levels within a PREU | LUT levels elsewhere | CPU s |'; \

@@ -13,17 +13,22 @@
 #     with the same parameters share one module, so ABC maps one PREU once whatever NumPreu is;
 #     the totals are stat -top's, each module's cells times its instances. No optimisation
 #     crosses a kept module's ports (constants, unused outputs, logic merged across them).
+#   --fine (tag "fine"): hierarchical, and pree_top's parts (the index and RAM bank groups, the
+#     offer, read, queue and issue stages, the two memory crossbars, the counters) and the AXI4-Lite
+#     slave stay modules as well, so that ABC maps each on its own: the reduced run for 16 PREUs,
+#     where ABC over the flattened rest of pree_axi (587,931 gates against 153,590 at 8 PREUs) runs
+#     past an hour. No optimisation crosses these parts' ports either.
 #   --flat (tag "flat"): the whole design flattened (synth_xilinx -flatten), ABC over all of it.
 # LUT levels (tb/cosim/synth_top_depth.py on pree_axi, the kept modules' netlists joined at their
 # ports): the most LUTs on any path between registers, RAM ports, DSP48E1 ports and the top's
 # ports, split by where the path runs: within a PREU (it starts and ends in u_preu.*), or not.
-# Usage: synth_axi_full.sh [--flat] PIPEFAST NUMPREU OUTDIR   (PIPEFAST 0: the paper's PREUs,
+# Usage: synth_axi_full.sh [--flat|--fine] PIPEFAST NUMPREU OUTDIR   (PIPEFAST 0: the paper's PREUs,
 # 1: the deep ones). Yosys: the `yosys` on PATH (make synth-axi-full: Debian's 0.23).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tag=hier
-[ "${1:-}" = --flat ] && { tag=flat; shift; }
-[ $# -eq 3 ] || { echo "usage: synth_axi_full.sh [--flat] PIPEFAST NUMPREU OUTDIR" >&2; exit 2; }
+case ${1:-} in --flat) tag=flat; shift ;; --fine) tag=fine; shift ;; esac
+[ $# -eq 3 ] || { echo "usage: synth_axi_full.sh [--flat|--fine] PIPEFAST NUMPREU OUTDIR" >&2; exit 2; }
 pf=$1; np=$2; out=$3
 case $pf in 0|1) ;; *) echo "synth_axi_full: PIPEFAST must be 0 or 1, not $pf" >&2; exit 2 ;; esac
 case $np in 1|2|4|8|16) ;; *) echo "synth_axi_full: NUMPREU must be 1, 2, 4, 8 or 16, not $np" >&2; exit 2 ;; esac
@@ -32,8 +37,9 @@ lg=$(awk -v n="$np" 'BEGIN { l = 0; while ((2 ^ l) < n) l++; print l }')
 pb=$((lg > 0 ? lg : 1))
 params="NumPreu $np PipeFast $pf HpAW 14 HpBankW $((lg + 1)) PxAW 14 PxBankW $pb IdxAW 12"
 kept="pree_preu pree_ram_sdp pree_aftso_hpuoc pree_adiso_rec"
+[ $tag = fine ] && kept="$kept pree_ram_banks pree_top_offer pree_top_read pree_top_queue pree_top_issue pree_top_hpmem pree_top_pxmem pree_counters pree_axil_slave"
 base="$out/${tag}_pf${pf}_p$np"
-if [ $tag = hier ]; then
+if [ $tag != flat ]; then
   prep="setattr -mod -set keep_hierarchy 1 $(printf '*%s ' $kept); flatten; setattr -mod -unset keep_hierarchy *"
   synth="synth_xilinx -family xc7 -top pree_axi"
 else
