@@ -23,14 +23,15 @@
 # Outside `make test`: the routed design takes a place-and-route run (mk/fpga_top.mk) and its
 # model about ten minutes to build.
 
-POSTROUTE_DIR     := $(BUILD)/postroute
+POSTROUTE_DIR     := $(FPGA_TOP_DIR)/postroute
 # cornell3 16x12, one batch of 1000 photons, initial radius 6: 1,070 photon beats with 1,605
 # candidates, 344 hit points, 192 pixels; the UART's bytes take 10 x Div core cycles each (Div below),
 # the time the board spends on the frame.
 POSTROUTE_PHOTONS ?= 1000
 POSTROUTE_RADIUS  ?= 6
 POSTROUTE_OPTS    ?= scenes/cornell3 --width 16 --height 12 --photons $(POSTROUTE_PHOTONS) \
-                     $(if $(POSTROUTE_RADIUS),--radius $(POSTROUTE_RADIUS)) --preu 1 --no-reference
+                     $(if $(POSTROUTE_RADIUS),--radius $(POSTROUTE_RADIUS)) --preu $(POSTROUTE_NP) \
+                     $(if $(filter 1,$(POSTROUTE_PF)),--pipe-fast) --no-reference
 POSTROUTE_ROUTED  := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json
 POSTROUTE_CELLS   := $(filter-out %_tb.v,$(wildcard tb/postroute/*.v)) tb/fpga/MULT18X18D.v
 POSTROUTE_SYNTH_CELLS := tb/postroute/ecp5_pnr_dp16kd.v tb/postroute/ecp5_pnr_clock_io.v tb/fpga/MULT18X18D.v
@@ -123,8 +124,9 @@ $(foreach m,routed synth rtl,$(eval $(call POSTROUTE_PROG,$(m))))
 # on p1 and fails at 7.5 and 5 ns.
 POSTROUTE_SDF_DIR    := $(POSTROUTE_DIR)/sdf
 # The window: the host's first two register reads ('R' and a 2-byte address out, 'r' and 4 data
-# bytes back: 1,592 cycles each), 3,300 cycles of the 18.4 M of the default frame.
-POSTROUTE_SDF_CYCLES ?= 3300
+# bytes back: about 80 UART bit times each), 165 bit times (3,300 cycles of p1's 18.4 M, 6,600 of
+# d1's).
+POSTROUTE_SDF_CYCLES ?= $(shell echo $$((165 * $(POSTROUTE_DIV))))
 POSTROUTE_SDF_SHORT  ?= 5000
 POSTROUTE_SEED       := $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST)
 sim-postroute-sdf: $(POSTROUTE_SDF_DIR)/replay.vvp $(POSTROUTE_SDF_DIR)/record.txd
