@@ -12,7 +12,7 @@
 #                      docs/integration_resources.md (markers synth-axi-full). SYNTH_AXI_FULL_RUNS:
 #                      <mode>_pf<PipeFast>_p<NumPreu>, mode hier (PREU, RAM banks and controllers
 #                      kept as modules), fine (pree_top's parts kept as well: the 16-PREU runs,
-#                      whose hier runs do not finish in an hour) or flat; each run's files in
+#                      ABC's calls smaller) or flat; each run's files in
 #                      $(AXI_DIR)/full-synth.
 #                      Outside `make test`: minutes of one core a run (the table's CPU column)
 #   make fit-table     the block RAM / URAM fit table of docs/integration_resources.md (scripts/pree_fit.py)

@@ -16,8 +16,9 @@
 #   --fine (tag "fine"): hierarchical, and pree_top's parts (the index and RAM bank groups, the
 #     offer, read, queue and issue stages, the two memory crossbars, the counters) and the AXI4-Lite
 #     slave stay modules as well, so that ABC maps each on its own: the reduced run for 16 PREUs,
-#     where ABC over the flattened rest of pree_axi (587,931 gates against 153,590 at 8 PREUs) runs
-#     past an hour. No optimisation crosses these parts' ports either.
+#     where ABC over the flattened rest of pree_axi is 587,931 gates (153,590 at 8 PREUs; the
+#     hierarchical 16-PREU run was never carried to its end). No optimisation crosses these parts'
+#     ports either.
 #   --flat (tag "flat"): the whole design flattened (synth_xilinx -flatten), ABC over all of it.
 # LUT levels (tb/cosim/synth_top_depth.py on pree_axi, the kept modules' netlists joined at their
 # ports): the most LUTs on any path between registers, RAM ports, DSP48E1 ports and the top's
