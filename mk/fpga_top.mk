@@ -35,24 +35,24 @@ FPGA_TOP_DIR    ?= $(BUILD)/fpga-top-$(FPGA_TOP_CONFIG)
 FPGA_TOP_SEEDS  ?= 1
 FPGA_TOP_PARAMS ?= $(FPGA_TOP_CONFIG_$(FPGA_TOP_CONFIG))
 FPGA_PNR_OPTS   ?= $(or $(FPGA_TOP_PNR_$(FPGA_TOP_CONFIG)),$(FPGA_TOP_PNR_HEAP))
-ifneq ($(filter fpga-pnr-top sim-postroute% $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
-ifeq ($(strip $(FPGA_TOP_PARAMS)),)
-$(error FPGA_TOP_CONFIG=$(FPGA_TOP_CONFIG): no such configuration (d1, p1, p2; or set FPGA_TOP_PARAMS))
-endif
-endif
 FPGA_TOP_RUN     = PATH=$(abspath $(FPGA_VENV))/bin:$$PATH FPGA_TOP_PARAMS="$(FPGA_TOP_PARAMS)" \
                    FPGA_PNR_OPTS="$(FPGA_PNR_OPTS)" \
                    nice -n 10 scripts/fpga_pnr_top.sh
 FPGA_TOP_BOARD  := rtl/pree_reset_sync.v $(wildcard rtl/board/*.v)
 FPGA_TOP_FIRST   = $(firstword $(FPGA_TOP_SEEDS))
 
-# The parameters are an input: a change rebuilds everything; nextpnr's options, the routes.
+# The parameters are an input: a change rebuilds everything; nextpnr's options, the routes. Each
+# is kept in a file rewritten only when it changes (fpga_top_keep TEXT,FILE), for the goals that
+# build or simulate a configuration.
 FPGA_TOP_PFILE  := $(FPGA_TOP_DIR)/params.txt
 FPGA_TOP_OFILE  := $(FPGA_TOP_DIR)/pnr-opts.txt
+fpga_top_keep    = { echo '$(1)' | cmp -s - $(2) || echo '$(1)' > $(2); }
 ifneq ($(filter fpga-pnr-top sim-postroute% $(FPGA_TOP_DIR)/%,$(MAKECMDGOALS)),)
-$(shell mkdir -p $(FPGA_TOP_DIR) && { echo '$(FPGA_TOP_PARAMS)' | cmp -s - $(FPGA_TOP_PFILE) || \
-        echo '$(FPGA_TOP_PARAMS)' > $(FPGA_TOP_PFILE); } && { echo '$(FPGA_PNR_OPTS)' | cmp -s - $(FPGA_TOP_OFILE) || \
-        echo '$(FPGA_PNR_OPTS)' > $(FPGA_TOP_OFILE); })
+ifeq ($(strip $(FPGA_TOP_PARAMS)),)
+$(error FPGA_TOP_CONFIG=$(FPGA_TOP_CONFIG): no such configuration (d1, p1, p2; or set FPGA_TOP_PARAMS))
+endif
+$(shell mkdir -p $(FPGA_TOP_DIR) && $(call fpga_top_keep,$(FPGA_TOP_PARAMS),$(FPGA_TOP_PFILE)) && \
+        $(call fpga_top_keep,$(FPGA_PNR_OPTS),$(FPGA_TOP_OFILE)))
 endif
 
 .PHONY: fpga-pnr-top
