@@ -88,9 +88,14 @@ module MULT18X18D (
   assign {P35, P34, P33, P32, P31, P30, P29, P28, P27, P26, P25, P24, P23, P22, P21, P20, P19,
           P18, P17, P16, P15, P14, P13, P12, P11, P10, P9, P8, P7, P6, P5, P4, P3, P2, P1, P0} = p;
 
-  // The product's delays of nextpnr's SDF (IOPATH Ai Pj, Bi Pj), zero until $sdf_annotate sets
-  // them (the post-route timing-annotated run, docs/fpga_board.md).
+  // The product's delays of nextpnr's SDF, zero until $sdf_annotate sets them (the post-route
+  // timing-annotated run, docs/fpga_board.md): clock to product (IOPATH CLK0 Pj) where an input
+  // or the output is registered, input to product (IOPATH Ai Pj, Bi Pj) where none is. Icarus
+  // takes an output's delay from the path of the input that changed last: CLK0 at a registered
+  // product's edge, the A or B input of a combinational one.
   specify   // one source a statement: Icarus 11 matches only the first source of a list
+    (CLK0 *> P0, P1, P2, P3, P4, P5, P6, P7, P8, P9, P10, P11, P12, P13, P14, P15, P16, P17,
+             P18, P19, P20, P21, P22, P23, P24, P25, P26, P27, P28, P29, P30, P31, P32, P33, P34, P35) = 0;
     (A0 *> P0, P1, P2, P3, P4, P5, P6, P7, P8, P9, P10, P11, P12, P13, P14, P15, P16, P17,
            P18, P19, P20, P21, P22, P23, P24, P25, P26, P27, P28, P29, P30, P31, P32, P33, P34, P35) = 0;
     (A1 *> P0, P1, P2, P3, P4, P5, P6, P7, P8, P9, P10, P11, P12, P13, P14, P15, P16, P17,

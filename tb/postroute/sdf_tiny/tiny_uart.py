@@ -7,8 +7,8 @@ tb/postroute/postroute_replay_tb.v ("<cycle> <level>" at each change).
   tiny_uart.py txd <file>     writes the ftdi_txd record: BYTES, 8N1 at 25 cycles a bit, from
                               cycle 100, one every 650 cycles; prints the cycles it needs
   tiny_uart.py check <file>   decodes an ftdi_rxd record and compares its bytes with the design's
-                              replies (sum += {b, b} * {b, ~b}; reply sum[23:16] ^ b); exit 1 if
-                              they differ
+                              replies (sum += {b, b} * {b, ~b}; reply sum[23:16] ^ sum[15:8] ^
+                              b: sdf_tiny's two sums are equal); exit 1 if they differ
 """
 import sys
 
@@ -32,7 +32,7 @@ def replies():
     s, out = 0, []
     for b in BYTES:
         s = (s + ((b << 8) | b) * ((b << 8) | (~b & 0xFF))) & 0xFFFFFFFF
-        out.append(((s >> 16) & 0xFF) ^ b)
+        out.append(((s >> 16) ^ (s >> 8) ^ b) & 0xFF)
     return out
 
 
