@@ -56,7 +56,7 @@ $(shell mkdir -p $(FPGA_TOP_DIR) && $(call fpga_top_keep,$(FPGA_TOP_PARAMS),$(FP
 endif
 
 .PHONY: fpga-pnr-top
-fpga-pnr-top: $(FPGA_TOP_DIR)/pree_ulx3s.bit $(FPGA_TOP_DIR)/report.md $(FPGA_TOP_DIR)/floorplan.png
+fpga-pnr-top: $(FPGA_TOP_DIR)/report.md $(FPGA_TOP_DIR)/pree_ulx3s.bit $(FPGA_TOP_DIR)/floorplan.png
 	@cat $(FPGA_TOP_DIR)/report.md
 
 $(FPGA_TOP_DIR)/pree_axi.json: $(shell grep -v '^//' rtl/pree.f) $(wildcard rtl/*.vh) rtl/pree.f \
@@ -66,8 +66,12 @@ $(FPGA_TOP_DIR)/pree_axi.json: $(shell grep -v '^//' rtl/pree.f) $(wildcard rtl/
 $(FPGA_TOP_DIR)/pree_ulx3s.json: $(FPGA_TOP_DIR)/pree_axi.json $(FPGA_TOP_BOARD)
 	$(FPGA_TOP_RUN) board $(FPGA_TOP_DIR)
 
-$(FPGA_TOP_DIR)/seed%.config: $(FPGA_TOP_DIR)/pree_ulx3s.json constraints/pree_ulx3s.lpf $(FPGA_TOP_OFILE)
+# Each seed's run ends in seed<N>.result, routed or not (the report's rows); the bitstream and the
+# floorplan need the first seed routed.
+$(FPGA_TOP_DIR)/seed%.result: $(FPGA_TOP_DIR)/pree_ulx3s.json constraints/pree_ulx3s.lpf $(FPGA_TOP_OFILE)
 	$(FPGA_TOP_RUN) pnr $(FPGA_TOP_DIR) $*
+$(FPGA_TOP_DIR)/seed%.config: $(FPGA_TOP_DIR)/seed%.result
+	@test -f $@ || { echo "fpga-pnr-top: seed $*: $$(cat $<) (log $(@D)/seed$*.log)" >&2; exit 1; }
 
 $(FPGA_TOP_DIR)/pree_ulx3s.bit: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config
 	$(FPGA_TOP_RUN) pack $(FPGA_TOP_DIR) $(FPGA_TOP_FIRST)
@@ -75,5 +79,5 @@ $(FPGA_TOP_DIR)/pree_ulx3s.bit: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config
 $(FPGA_TOP_DIR)/floorplan.png: $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).config scripts/fpga_floorplan.py
 	python3 scripts/fpga_floorplan.py $(FPGA_TOP_DIR)/seed$(FPGA_TOP_FIRST).routed.json $@
 
-$(FPGA_TOP_DIR)/report.md: $(foreach s,$(FPGA_TOP_SEEDS),$(FPGA_TOP_DIR)/seed$(s).config) scripts/fpga_top_report.py
+$(FPGA_TOP_DIR)/report.md: $(foreach s,$(FPGA_TOP_SEEDS),$(FPGA_TOP_DIR)/seed$(s).result) scripts/fpga_top_report.py
 	python3 scripts/fpga_top_report.py $(FPGA_TOP_DIR) $(FPGA_TOP_SEEDS) > $@.tmp && mv $@.tmp $@

@@ -4,12 +4,14 @@
 
 Usage: fpga_top_report.py <dir> <seed> [<seed> ...]
 Reads <dir>/pree_ulx3s.json (the netlist nextpnr placed), <dir>/pree_ulx3s.stat.txt (Yosys's
-cell counts), and per seed <dir>/seed<N>.report.json (nextpnr --report) and seed<N>.time (wall,
-user and system seconds). Prints three Markdown tables: Fmax per seed with the critical path
-(nextpnr's worst register-to-register path of the core clock: its start and end registers and
-their RTL source lines, its delay split into logic and routing, its cells by type, each CCU2C
-once) and nextpnr's run time; the placed design's use of every resource of the part (nextpnr,
-first seed); Yosys's cell counts.
+cell counts), and per seed <dir>/seed<N>.result ("routed" or "not routed: <why>"),
+seed<N>.log (nextpnr's), seed<N>.time (wall, user and system seconds) and, if routed,
+seed<N>.report.json (nextpnr --report). Prints three Markdown tables: per seed the core clock's
+Fmax estimated after placement and reached after routing, the critical path (nextpnr's worst
+register-to-register path of the core clock: its start and end registers and their RTL source
+lines, its delay split into logic and routing, its cells by type, each CCU2C once) or, for a seed
+that did not route, why and how far the router came, and nextpnr's run time; the placed design's
+use of every resource of the part (nextpnr, the first routed seed); Yosys's cell counts.
 """
 import json
 import re
@@ -50,32 +52,64 @@ def path_summary(path, types, srcs):
         logic + route, logic, route, listed or "none")
 
 
+def placed_fmax(log):
+    """The core clock's Fmax that nextpnr estimates after placement (its first report), or None."""
+    m = re.search(r"Max frequency for clock '[^']*clk'[^:]*: ([\d.]+) MHz", log)
+    return float(m.group(1)) if m else None
+
+
+def router_progress(log):
+    """How far the router came: router2's best pass (fewest overused wires) and its last one;
+    router1's arcs still to route at its last progress line."""
+    iters = [(int(i), int(o)) for i, o in re.findall(r"iter=(\d+) wires=\d+ overused=(\d+)", log)]
+    if not iters:
+        r1 = re.findall(r"^Info:\s+(\d+) \|\s+\d+\s+\d+ \|\s+-?\d+\s+-?\d+ \|\s+(\d+)\|", log, re.M)
+        if r1:
+            return "router1: %d arcs left to route after %d iterations" % (int(r1[-1][1]), int(r1[-1][0]))
+        return "the router did not start"
+    best = min(iters, key=lambda x: (x[1], x[0]))
+    return "router2: %d overused wires at best (pass %d), %d at pass %d" % (
+        best[1], best[0], iters[-1][1], iters[-1][0])
+
+
 def main():
     if len(sys.argv) < 3:
         raise SystemExit("usage: fpga_top_report.py <dir> <seed> [<seed> ...]")
     d, seeds = sys.argv[1], sys.argv[2:]
     types, srcs = cell_types(d + "/pree_ulx3s.json")
-    print("| seed | Fmax (MHz) | target (MHz) | critical path (nextpnr, register to register) | nextpnr wall / CPU (s) |")
-    print("|---|---|---|---|---|")
+    print("| seed | after placement (MHz) | Fmax after routing (MHz) | target (MHz) | "
+          "critical path (nextpnr, register to register) | nextpnr wall / CPU (s) |")
+    print("|---|---|---|---|---|---|")
     first = None
     for s in seeds:
-        rep = json.load(open("%s/seed%s.report.json" % (d, s)))
+        base = "%s/seed%s" % (d, s)
+        result = open(base + ".result").read().strip()
+        log = open(base + ".log", errors="replace").read()
+        placed = placed_fmax(log)
+        wall, user, system = (float(x) for x in open(base + ".time").read().split()[-3:])
+        if result != "routed":
+            print("| %s | %s | %s | - | %s; %s | %.0f / %.0f |" % (
+                s, "%.2f" % placed if placed else "-", result.split(":")[0], result.split(": ", 1)[-1],
+                router_progress(log), wall, user + system))
+            continue
+        rep = json.load(open(base + ".report.json"))
         first = first or rep
-        wall, user, system = (float(x) for x in open("%s/seed%s.time" % (d, s)).read().split()[-3:])
         core = [k for k in rep["fmax"] if "clk" in k and "25mhz" not in k] or list(rep["fmax"])
         f = rep["fmax"][core[0]]
         paths = [p for p in rep["critical_paths"]
                  if not p["from"].startswith("<async>") and not p["to"].startswith("<async>")]
         crit = path_summary(paths[0]["path"], types, srcs) if paths else "-"
-        print("| %s | %.1f | %g | %s | %.0f / %.0f |" % (s, f["achieved"], f["constraint"], crit,
-                                                         wall, user + system))
-    print()
-    print("| resource (nextpnr) | used | available | use |")
-    print("|---|---|---|---|")
-    for bel, u in sorted(first["utilization"].items()):
-        if u["available"]:
-            print("| %s | %d | %d | %.1f%% |" % (bel, u["used"], u["available"],
-                                                100.0 * u["used"] / u["available"]))
+        print("| %s | %s | **%.2f** | %g | %s | %.0f / %.0f |" % (
+            s, "%.2f" % placed if placed else "-", f["achieved"], f["constraint"], crit, wall,
+            user + system))
+    if first is not None:
+        print()
+        print("| resource (nextpnr) | used | available | use |")
+        print("|---|---|---|---|")
+        for bel, u in sorted(first["utilization"].items()):
+            if u["available"]:
+                print("| %s | %d | %d | %.1f%% |" % (bel, u["used"], u["available"],
+                                                    100.0 * u["used"] / u["available"]))
     print()
     print("| cell (Yosys) | count |")
     print("|---|---|")

@@ -12,8 +12,9 @@
 # one in reach) or unchanged, the overrun flag; the bridge as it was before whole candidate bytes
 # (36 NumPreu / 8 bytes rounded down, a sed of the RTL) must fail the one-PREU bench; the
 # floorplan script (scripts/fpga_floorplan.py) draws a three-cell placed design and refuses an
-# unplaced one.
-# cost: 40 (its seconds in a serial run; the runner starts costly checks first)
+# unplaced one; the report (scripts/fpga_top_report.py) of one routed and one unrouted seed has
+# a row for each, the unrouted one with why and router2's best and last pass.
+# cost: 15 (its seconds in a serial run; the runner starts costly checks first)
 source "$(dirname "$0")/../lib/check.sh"
 cd "$ROOT"
 lpf=constraints/pree_ulx3s.lpf
@@ -102,3 +103,37 @@ fi
 [ ! -e "$TMP/none.png" ] && [ ! -e "$TMP/none.png.tmp" ] || fail "fpga_floorplan.py left a picture behind"
 grep -q "no placed cell" "$TMP/err.txt" || fail "fpga_floorplan.py: no one-line error: $(cat "$TMP/err.txt")"
 echo "ok: unplaced design refused: $(cat "$TMP/err.txt")"
+# The report of a routed seed (1) and one stopped while routing (2), on made-up nextpnr output.
+rep=$TMP/report && mkdir -p "$rep"
+cat > "$rep/pree_ulx3s.json" <<'JSON'
+{"modules": {"pree_ulx3s": {"cells": {
+  "q_TRELLIS_FF_Q": {"type": "TRELLIS_FF", "attributes": {"src": "rtl/pree_preu.v:140.3-150.6"}},
+  "l_LUT4_Z": {"type": "LUT4", "attributes": {"src": "rtl/pree_top.v:20.10-20.30"}},
+  "d_TRELLIS_FF_Q": {"type": "TRELLIS_FF", "attributes": {"src": "rtl/pree_axi.v:456.3-456.40"}}}}}}
+JSON
+printf '   Number of cells: 3\n     LUT4    1\n     TRELLIS_FF    2\n' > "$rep/pree_ulx3s.stat.txt"
+cat > "$rep/seed1.report.json" <<'JSON'
+{"fmax": {"$glbnet$clk": {"achieved": 44.89, "constraint": 40.0}},
+ "critical_paths": [{"from": "posedge $glbnet$clk", "to": "posedge $glbnet$clk", "path": [
+   {"type": "clk-to-q", "delay": 0.5, "from": {"cell": "q_TRELLIS_FF_Q"}, "to": {"cell": "q_TRELLIS_FF_Q"}},
+   {"type": "routing", "delay": 2.0, "from": {"cell": "q_TRELLIS_FF_Q"}, "to": {"cell": "l_LUT4_Z"}},
+   {"type": "logic", "delay": 0.25, "from": {"cell": "l_LUT4_Z"}, "to": {"cell": "l_LUT4_Z"}},
+   {"type": "routing", "delay": 1.0, "from": {"cell": "l_LUT4_Z"}, "to": {"cell": "d_TRELLIS_FF_Q"}},
+   {"type": "setup", "delay": 0.25, "from": {"cell": "d_TRELLIS_FF_Q"}, "to": {"cell": "d_TRELLIS_FF_Q"}}]}],
+ "utilization": {"TRELLIS_FF": {"used": 2, "available": 83640}, "TRELLIS_COMB": {"used": 1, "available": 83640}}}
+JSON
+echo routed > "$rep/seed1.result"
+printf "Info: Max frequency for clock '\$glbnet\$clk': 44.31 MHz (PASS at 40.00 MHz)\n" > "$rep/seed1.log"
+echo "657.1 640.0 10.0" > "$rep/seed1.time"
+echo "not routed: stopped after 1800 s (FPGA_PNR_TIMEOUT)" > "$rep/seed2.result"
+{ printf "Info: Max frequency for clock '\$glbnet\$clk': 38.76 MHz (FAIL at 40.00 MHz)\n"
+  for i in 1 2 3 4; do echo "Info:     iter=$i wires=700000 overused=$(( (i - 3) * (i - 3) * 100 + 5 )) overuse=1 archfail=NA"; done
+} > "$rep/seed2.log"
+printf 'Command exited with non-zero status 124\n1800.2 1790.0 5.0\n' > "$rep/seed2.time"
+run python3 scripts/fpga_top_report.py "$rep" 1 2 > "$rep/report.md"
+grep -qF '| 1 | 44.31 | **44.89** | 40 | q (rtl/pree_preu.v:140) -> d (rtl/pree_axi.v:456): 4.00 ns (1.00 logic, 3.00 routing); cells: 1 LUT4 | 657 / 650 |' "$rep/report.md" ||
+  fail "fpga_top_report.py: the routed seed's row: $(grep '^| 1 ' "$rep/report.md")"
+grep -qF '| 2 | 38.76 | not routed | - | stopped after 1800 s (FPGA_PNR_TIMEOUT); router2: 5 overused wires at best (pass 3), 105 at pass 4 | 1800 / 1795 |' "$rep/report.md" ||
+  fail "fpga_top_report.py: the unrouted seed's row: $(grep '^| 2 ' "$rep/report.md")"
+grep -qF '| TRELLIS_FF | 2 | 83640 | 0.0% |' "$rep/report.md" || fail "fpga_top_report.py: no resource table"
+echo "ok: report rows for a routed and an unrouted seed"
