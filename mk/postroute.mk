@@ -118,11 +118,10 @@ $(foreach m,routed synth rtl,$(eval $(call POSTROUTE_PROG,$(m))))
 # The timing-annotated run: the link's record from the board top's RTL program on POSTROUTE_OPTS
 # (PREE_POSTROUTE_RECORD), the routed netlist with its delay cells and the SDF that Icarus applies
 # (scripts/postroute_sdf.py), the replay bench compiled with the cell models (-Tmax: the SDF's
-# maximum delays, those of nextpnr's Fmax). PERIOD_PS (postroute_sdf_run.sh) sets the judged
-# annotated run's period (default the core clock's target, the clock the bitstream runs at; a
-# run at nextpnr's critical path follows, reported but not judged); POSTROUTE_SDF_SHORT the
-# control's, which must fail: the window's logic (the UART, the bridge, the register reads) still
-# works at 10 ns on p1 and fails at 7.5 and 5 ns.
+# maximum delays, those of nextpnr's Fmax). PERIOD_PS (postroute_sdf_run.sh) sets the first
+# annotated run's period (default the critical path); POSTROUTE_SDF_SHORT the control's, which
+# must fail: the window's logic (the UART, the bridge, the register reads) still works at 10 ns
+# on p1 and fails at 7.5 and 5 ns.
 POSTROUTE_SDF_DIR    := $(POSTROUTE_DIR)/sdf
 # The window: the host's first two register reads ('R' and a 2-byte address out, 'r' and 4 data
 # bytes back: about 80 UART bit times each), 165 bit times (3,300 cycles of p1's 18.4 M, 6,600 of
