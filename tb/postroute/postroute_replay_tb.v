@@ -9,8 +9,12 @@
 // The records are those of host/postroute_uart.cpp (PREE_POSTROUTE_RECORD): one line
 // "<cycle> <level>" each time a level changes, ftdi_txd set before that cycle's rising edge
 // (idle high before the first line), ftdi_rxd seen after it (compared from the record's first
-// line on). Cycle n's rising edge is at (n + 1/2) x the period; btn_pwr_n is low for cycles 0
-// and 1 (the harness's reset), then high.
+// line on). Cycle n's rising edge is at settle + (n + 1/2) x the period; btn_pwr_n is low for
+// cycles 0 and 1 (the harness's reset), then high. Before cycle 0 the clock stays low for the
+// settle time: in silicon every LUT and wire holds its value when configuration ends, while in
+// simulation each net starts x and takes its path's delays to settle, and a first edge before
+// that stores x in registers without reset (on d1, at 23.8 ns and a first edge at 11.9 ns, the
+// hit-point queue's payload from cycle 0, and the first reply never came).
 // Plusargs:
 //   +txd=FILE      the ftdi_txd record (required)
 //   +rxd=FILE      the expected ftdi_rxd record: the first differing cycle is a FAIL
@@ -18,6 +22,7 @@
 //   +cycles=N      cycles to run (required)
 //   +period=PS     the clock period in picoseconds (default 40000)
 //   +sdf=FILE      $sdf_annotate this SDF (scripts/postroute_sdf.py's) on the netlist
+//   +settle=PS     the time before cycle 0, the clock low (default 1000000: 1 us)
 // Prints "PASS: ..." or "FAIL: ..." with the first differing cycle.
 `default_nettype none
 
@@ -29,7 +34,7 @@ module postroute_replay_tb;
   pree_ulx3s dut (.clk_25mhz(clk), .btn_pwr_n(btn), .ftdi_txd(txd), .ftdi_rxd(rxd), .led(led));
 
   reg [8*512-1:0] txd_file, rxd_file, out_file, sdf_file;
-  integer     fd_txd, fd_rxd, fd_out, period, cycles, n, rc;
+  integer     fd_txd, fd_rxd, fd_out, period, settle, cycles, n, rc;
   integer     next_txd_cyc, next_txd_lvl, next_rxd_cyc, next_rxd_lvl, want_rxd, last_rxd;
   integer     compared, txd_changes, rxd_changes;
   reg         compare;
@@ -50,6 +55,7 @@ module postroute_replay_tb;
       $finish;
     end
     if (!$value$plusargs("period=%d", period)) period = 40000;
+    if (!$value$plusargs("settle=%d", settle)) settle = 1000000;
     compare = $value$plusargs("rxd=%s", rxd_file);
     fd_txd = $fopen(txd_file, "r");
     if (fd_txd == 0) begin
@@ -75,6 +81,7 @@ module postroute_replay_tb;
     compared = 0;
     txd_changes = 0;
     rxd_changes = 0;
+    #(settle);
     for (n = 0; n < cycles; n = n + 1) begin
       // Cycle n: the clock falls, the inputs of this cycle, the rising edge at half the period.
       clk = 1'b0;
